@@ -1,0 +1,61 @@
+# pgsym: set-up, book, tests, benchmarks. `make book` and `make test` are the two commands a new machine needs.
+SHELL := /bin/bash
+.DEFAULT_GOAL := help
+PYTHON ?= python3
+VENV := .venv
+BIN := $(VENV)/bin
+INSTALLED := $(VENV)/.installed
+MATHJAX := _mathjax/_static/mathjax/tex-chtml.js
+BOOK_INDEX := _build/html/index.html
+
+.PHONY: help venv mathjax system-deps book test lint lab bench clean
+
+help:  ## list the targets
+	@grep -E '^[a-z-]+:.*## ' $(MAKEFILE_LIST) | sed -E 's/:.*## /\t/' | expand -t 14
+
+$(INSTALLED): requirements.txt pyproject.toml
+	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
+	$(BIN)/python -m pip install --quiet -r requirements.txt
+	$(BIN)/python -m pip install --quiet --no-deps --editable .
+	touch $@
+
+venv: $(INSTALLED)  ## create .venv with pinned dependencies and pgsym installed (editable)
+
+# MathJax comes from npm so math renders with no network; Sphinx serves it from _static/mathjax.
+$(MATHJAX): package.json package-lock.json
+	@command -v npm >/dev/null || { echo "npm is missing: install Node.js and npm (Debian: apt-get install nodejs npm)"; exit 1; }
+	npm ci --no-audit --no-fund --loglevel=error
+	rm -rf _mathjax && mkdir -p _mathjax/_static
+	cp -r node_modules/mathjax/es5 _mathjax/_static/mathjax
+	touch $@
+
+mathjax: $(MATHJAX)  ## fetch MathJax 3 from npm
+
+system-deps:  ## install Debian's chromium for the browser test (when root), or say how
+	@if ! command -v chromium >/dev/null; then \
+	  if [ "$$(id -u)" = 0 ] && command -v apt-get >/dev/null; then \
+	    echo "installing Debian's chromium for the browser test"; \
+	    apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq chromium >/dev/null; \
+	  else \
+	    echo "The browser test needs Debian's Chromium at /usr/bin/chromium: run 'sudo apt-get install chromium'"; exit 1; \
+	  fi; \
+	fi
+
+book: $(INSTALLED) $(MATHJAX)  ## build the book with -W (warnings are errors) and print the path of index.html
+	$(BIN)/jupyter-book build . -W -n --keep-going
+	@echo "Book: $(CURDIR)/$(BOOK_INDEX)"
+
+lint: $(INSTALLED)  ## ruff
+	$(BIN)/ruff check .
+
+test: book system-deps lint  ## everything: lint, unit/property/doctests, strict nbval, CLI, the built book in a real browser
+	$(BIN)/python -m pytest
+
+lab: $(INSTALLED)  ## open the chapters in JupyterLab from the same venv
+	$(BIN)/jupyter lab book/
+
+bench: $(INSTALLED)  ## run every benchmark in bench/ (one JSON line per case)
+	@for b in bench/bench_*.py; do [ -e "$$b" ] || continue; $(BIN)/python "$$b" || exit 1; done
+
+clean:  ## remove the build, MathJax copy and caches (keeps .venv)
+	rm -rf _build _mathjax node_modules .pytest_cache .hypothesis

@@ -1,0 +1,64 @@
+"""pgsym: exact projective geometry on SymPy.
+
+>>> from pgsym import Point, Line, join, meet
+>>> x = meet(join(Point(0, 0), Point(2, 2)), Line(1, 0, -1))
+>>> x                      # the raw cross product
+Point(-2, -2, -2)
+>>> x == Point(1, 1), x.canonical(), x.dehomogenize()
+(True, Point(1, 1, 1), (1, 1))
+"""
+
+from .errors import (
+    CoincidentLinesError,
+    CoincidentPointsError,
+    DegenerateConfigurationError,
+    DimensionError,
+    IdealPointError,
+    InvalidCoordinatesError,
+    NonNumericError,
+    ObjectTypeError,
+    PgsymError,
+    ZeroVectorError,
+)
+from .homogeneous import HomogeneousVector
+from .projective_plane import (
+    Line,
+    Point,
+    collinear,
+    concurrent,
+    cross,
+    dual,
+    ideal_point,
+    incident,
+    join,
+    line_at_infinity,
+    meet,
+)
+
+__version__ = "0.1.0"
+
+__all__ = [
+    "CoincidentLinesError",
+    "CoincidentPointsError",
+    "DegenerateConfigurationError",
+    "DimensionError",
+    "HomogeneousVector",
+    "IdealPointError",
+    "InvalidCoordinatesError",
+    "Line",
+    "NonNumericError",
+    "ObjectTypeError",
+    "PgsymError",
+    "Point",
+    "ZeroVectorError",
+    "__version__",
+    "collinear",
+    "concurrent",
+    "cross",
+    "dual",
+    "ideal_point",
+    "incident",
+    "join",
+    "line_at_infinity",
+    "meet",
+]

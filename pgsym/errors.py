@@ -1,0 +1,69 @@
+"""The error hierarchy of pgsym.
+
+Every error a user can provoke with bad input is a :class:`PgsymError`. The
+concrete classes also derive from the built-in exception a Python user would
+expect (``ValueError`` for bad values, ``TypeError`` for bad types), so both
+``except PgsymError`` and ``except ValueError`` work.
+
+>>> from pgsym import Point, join
+>>> try:
+...     join(Point(1, 2), Point(2, 4, 2))
+... except PgsymError as err:
+...     print(type(err).__name__)
+CoincidentPointsError
+"""
+
+from __future__ import annotations
+
+__all__ = [
+    "CoincidentLinesError",
+    "CoincidentPointsError",
+    "DegenerateConfigurationError",
+    "DimensionError",
+    "IdealPointError",
+    "InvalidCoordinatesError",
+    "NonNumericError",
+    "ObjectTypeError",
+    "PgsymError",
+    "ZeroVectorError",
+]
+
+
+class PgsymError(Exception):
+    """Base class of every error raised by pgsym for bad input."""
+
+
+class InvalidCoordinatesError(PgsymError, ValueError):
+    """Coordinates that cannot describe a projective object."""
+
+
+class NonNumericError(InvalidCoordinatesError, TypeError):
+    """A coordinate is not a number or a SymPy expression (e.g. a string or None)."""
+
+
+class DimensionError(InvalidCoordinatesError):
+    """The wrong number of coordinates for the object asked for."""
+
+
+class ZeroVectorError(InvalidCoordinatesError):
+    """All homogeneous coordinates are zero: the zero vector is no projective object."""
+
+
+class ObjectTypeError(PgsymError, TypeError):
+    """An operation received the wrong kind of geometric object (e.g. a line where a point belongs)."""
+
+
+class DegenerateConfigurationError(PgsymError, ValueError):
+    """The input is a special case for which the construction is undefined."""
+
+
+class CoincidentPointsError(DegenerateConfigurationError):
+    """Two points that were meant to be distinct are the same projective point."""
+
+
+class CoincidentLinesError(DegenerateConfigurationError):
+    """Two lines that were meant to be distinct are the same projective line."""
+
+
+class IdealPointError(DegenerateConfigurationError):
+    """An ideal point (last coordinate zero) has no inhomogeneous coordinates."""
