@@ -20,7 +20,7 @@ from .errors import (
     PgsymError,
     ZeroVectorError,
 )
-from .homogeneous import HomogeneousVector
+from .homogeneous import HomogeneousVector, is_zero
 from .projective_plane import (
     Line,
     Point,
@@ -43,6 +43,7 @@ __all__ = [
     "DegenerateConfigurationError",
     "DimensionError",
     "HomogeneousVector",
+    "is_zero",
     "IdealPointError",
     "InvalidCoordinatesError",
     "Line",

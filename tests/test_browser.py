@@ -14,6 +14,7 @@ from pathlib import Path
 import pytest
 import yaml
 from playwright.sync_api import Browser, Page, sync_playwright
+from playwright.sync_api import TimeoutError as PlaywrightTimeout
 
 ROOT = Path(__file__).resolve().parents[1]
 HTML = ROOT / "_build" / "html"
@@ -81,7 +82,12 @@ def open_page(browser: Browser, url: str) -> tuple[Page, PageProblems]:
     problems = PageProblems(page)
     page.goto(url, wait_until="load")
     # MathJax typesets asynchronously; wait until its startup promise has settled.
-    page.wait_for_function("() => window.MathJax && window.MathJax.startup && window.MathJax.startup.promise")
+    try:
+        page.wait_for_function(
+            "() => window.MathJax && window.MathJax.startup && window.MathJax.startup.promise", timeout=15000
+        )
+    except PlaywrightTimeout:
+        raise AssertionError(f"MathJax never started on {url}; " + "; ".join(problems.items)) from None
     page.evaluate("() => window.MathJax.startup.promise")
     page.wait_for_load_state("networkidle")
     return page, problems
