@@ -18,13 +18,22 @@ from __future__ import annotations
 __all__ = [
     "CoincidentLinesError",
     "CoincidentPointsError",
+    "CollinearPointsError",
+    "DecompositionError",
     "DegenerateConfigurationError",
+    "DegenerateConicError",
+    "DependentPlanesError",
     "DimensionError",
     "IdealPointError",
+    "ImageError",
     "InvalidCoordinatesError",
     "NonNumericError",
+    "NotOnKleinQuadricError",
     "ObjectTypeError",
     "PgsymError",
+    "SingularTransformationError",
+    "UndefinedCrossRatioError",
+    "UnparsableAnswerError",
     "ZeroVectorError",
 ]
 
@@ -67,3 +76,39 @@ class CoincidentLinesError(DegenerateConfigurationError):
 
 class IdealPointError(DegenerateConfigurationError):
     """An ideal point (last coordinate zero) has no inhomogeneous coordinates."""
+
+
+class CollinearPointsError(DegenerateConfigurationError):
+    """Points that must span a plane (or fix a homography) lie on one line."""
+
+
+class DependentPlanesError(DegenerateConfigurationError):
+    """Planes that must meet in a single point share a line (or are parallel or equal)."""
+
+
+class SingularTransformationError(DegenerateConfigurationError):
+    """A transformation matrix is singular (determinant zero) where an invertible one is required."""
+
+
+class DegenerateConicError(DegenerateConfigurationError):
+    """A conic or quadric is degenerate (rank-deficient) where a non-degenerate one is required."""
+
+
+class UndefinedCrossRatioError(DegenerateConfigurationError):
+    """The cross-ratio of the given points is undefined (e.g. three of them coincide)."""
+
+
+class NotOnKleinQuadricError(InvalidCoordinatesError):
+    """Six Plücker coordinates that violate the Klein constraint describe no line."""
+
+
+class DecompositionError(DegenerateConfigurationError):
+    """A matrix has no decomposition of the requested form."""
+
+
+class ImageError(PgsymError, ValueError):
+    """An image cannot be read, or has the wrong shape or type for the operation."""
+
+
+class UnparsableAnswerError(PgsymError, ValueError):
+    """A typed answer cannot be read as the expected kind of value."""
