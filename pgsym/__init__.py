@@ -21,15 +21,20 @@ from .errors import (
     ImageError,
     InvalidCoordinatesError,
     NonNumericError,
+    NotAPencilError,
     NotOnKleinQuadricError,
+    NotOnQuadricError,
+    NotSkewSymmetricError,
     ObjectTypeError,
     PgsymError,
     SingularTransformationError,
     UndefinedCrossRatioError,
     UnparsableAnswerError,
+    ZeroCoordinateError,
     ZeroVectorError,
 )
 from .homogeneous import HomogeneousVector, is_zero
+from .linalg import nullspace_exact, nullspace_svd, rank_exact
 from .projective_plane import (
     Line,
     Point,
@@ -43,6 +48,8 @@ from .projective_plane import (
     line_at_infinity,
     meet,
 )
+from .quadrics import Quadric
+from .space import Plane, Point3, coplanar, plane_at_infinity, plane_through, point_on_planes
 
 __version__ = "0.1.0"
 
@@ -61,17 +68,25 @@ __all__ = [
     "InvalidCoordinatesError",
     "Line",
     "NonNumericError",
+    "NotAPencilError",
     "NotOnKleinQuadricError",
+    "NotOnQuadricError",
+    "NotSkewSymmetricError",
     "ObjectTypeError",
     "PgsymError",
+    "Plane",
     "Point",
+    "Point3",
+    "Quadric",
     "SingularTransformationError",
     "UndefinedCrossRatioError",
     "UnparsableAnswerError",
+    "ZeroCoordinateError",
     "ZeroVectorError",
     "__version__",
     "collinear",
     "concurrent",
+    "coplanar",
     "cross",
     "dual",
     "ideal_point",
@@ -80,4 +95,10 @@ __all__ = [
     "join",
     "line_at_infinity",
     "meet",
+    "nullspace_exact",
+    "nullspace_svd",
+    "plane_at_infinity",
+    "plane_through",
+    "point_on_planes",
+    "rank_exact",
 ]

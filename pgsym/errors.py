@@ -112,3 +112,19 @@ class ImageError(PgsymError, ValueError):
 
 class UnparsableAnswerError(PgsymError, ValueError):
     """A typed answer cannot be read as the expected kind of value."""
+
+
+class ZeroCoordinateError(DegenerateConfigurationError):
+    """The coordinate chosen to be fixed to 1 is zero in every solution (method #2 cannot be used)."""
+
+
+class NotOnQuadricError(DegenerateConfigurationError):
+    """A point that must lie on a quadric (e.g. to have a tangent plane there) does not."""
+
+
+class NotSkewSymmetricError(InvalidCoordinatesError):
+    """A matrix offered as a (dual) Plücker matrix is not skew-symmetric (``Lᵀ ≠ −L``)."""
+
+
+class NotAPencilError(DegenerateConfigurationError):
+    """Planes that were meant to contain one common line (a pencil of planes) do not."""

@@ -78,7 +78,7 @@ def is_zero(expr: Expr) -> bool:
     """Exact test that an expression vanishes identically.
 
     Rational numbers are compared directly; expressions with symbols are brought
-    to one fraction and the numerator expanded, a decision procedure for
+    to one fraction and its numerator expanded, a decision procedure for
     rational functions (no ``simplify`` heuristics).
 
     >>> a = sympy.Symbol("a")
@@ -87,7 +87,9 @@ def is_zero(expr: Expr) -> bool:
     """
     if expr.is_Rational:
         return bool(expr == 0)
-    return sympy.expand(sympy.cancel(sympy.together(expr))) == 0
+    # a fraction vanishes iff its numerator expands to zero; no gcd (cancel) needed
+    numerator, _ = sympy.fraction(sympy.together(expr))
+    return sympy.expand(numerator) == 0
 
 
 class _ReprPrinter(StrPrinter):
