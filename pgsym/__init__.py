@@ -8,6 +8,7 @@ Point(-2, -2, -2)
 (True, Point(1, 1, 1), (1, 1))
 """
 
+from .conics import Conic, DualConic, circular_points, conic_through, dual_conic_at_infinity
 from .errors import (
     CoincidentLinesError,
     CoincidentPointsError,
@@ -22,6 +23,7 @@ from .errors import (
     InvalidCoordinatesError,
     NonNumericError,
     NotAPencilError,
+    NotOnConicError,
     NotOnKleinQuadricError,
     NotOnQuadricError,
     NotSkewSymmetricError,
@@ -35,6 +37,8 @@ from .errors import (
 )
 from .homogeneous import HomogeneousVector, is_zero
 from .linalg import nullspace_exact, nullspace_svd, rank_exact
+from .plucker import Line3, cross_ratio_planes, klein_form, reciprocal_product
+from .projective_line import Point1, ProjectiveMap1, bracket, cross_ratio, cross_ratio_lines, harmonic_conjugate
 from .projective_plane import (
     Line,
     Point,
@@ -57,18 +61,22 @@ __all__ = [
     "CoincidentLinesError",
     "CoincidentPointsError",
     "CollinearPointsError",
+    "Conic",
     "DecompositionError",
     "DegenerateConfigurationError",
     "DegenerateConicError",
     "DependentPlanesError",
     "DimensionError",
+    "DualConic",
     "HomogeneousVector",
     "IdealPointError",
     "ImageError",
     "InvalidCoordinatesError",
     "Line",
+    "Line3",
     "NonNumericError",
     "NotAPencilError",
+    "NotOnConicError",
     "NotOnKleinQuadricError",
     "NotOnQuadricError",
     "NotSkewSymmetricError",
@@ -76,7 +84,9 @@ __all__ = [
     "PgsymError",
     "Plane",
     "Point",
+    "Point1",
     "Point3",
+    "ProjectiveMap1",
     "Quadric",
     "SingularTransformationError",
     "UndefinedCrossRatioError",
@@ -84,15 +94,24 @@ __all__ = [
     "ZeroCoordinateError",
     "ZeroVectorError",
     "__version__",
+    "bracket",
+    "circular_points",
     "collinear",
     "concurrent",
+    "conic_through",
     "coplanar",
     "cross",
+    "cross_ratio",
+    "cross_ratio_lines",
+    "cross_ratio_planes",
     "dual",
+    "dual_conic_at_infinity",
+    "harmonic_conjugate",
     "ideal_point",
     "incident",
     "is_zero",
     "join",
+    "klein_form",
     "line_at_infinity",
     "meet",
     "nullspace_exact",
@@ -101,4 +120,5 @@ __all__ = [
     "plane_through",
     "point_on_planes",
     "rank_exact",
+    "reciprocal_product",
 ]

@@ -28,12 +28,17 @@ __all__ = [
     "ImageError",
     "InvalidCoordinatesError",
     "NonNumericError",
+    "NotAPencilError",
+    "NotOnConicError",
     "NotOnKleinQuadricError",
+    "NotOnQuadricError",
+    "NotSkewSymmetricError",
     "ObjectTypeError",
     "PgsymError",
     "SingularTransformationError",
     "UndefinedCrossRatioError",
     "UnparsableAnswerError",
+    "ZeroCoordinateError",
     "ZeroVectorError",
 ]
 
@@ -128,3 +133,7 @@ class NotSkewSymmetricError(InvalidCoordinatesError):
 
 class NotAPencilError(DegenerateConfigurationError):
     """Planes that were meant to contain one common line (a pencil of planes) do not."""
+
+
+class NotOnConicError(DegenerateConfigurationError):
+    """A point that must lie on a conic (e.g. for a tangent line) does not."""

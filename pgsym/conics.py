@@ -1,0 +1,579 @@
+"""Conics and dual conics of the projective plane, exactly.
+
+A conic is the set of points with ``xᵀ C x = 0`` for a symmetric 3×3 matrix C,
+defined up to a nonzero scale: 6 distinct entries minus the scale leaves 5
+degrees of freedom, so five points in general position fix a conic. In
+inhomogeneous coordinates ``xᵀ C x = 0`` is ``a x² + b xy + c y² + d x + e y + f = 0`` with
+
+    C = [[a, b/2, d/2], [b/2, c, e/2], [d/2, e/2, f]].
+
+The tangent line at a point x of the conic is ``l = C x``; for any point x the
+line ``C x`` is its polar. The lines tangent to a non-degenerate conic C form the
+dual conic ``C* = adj C``: ``l`` is tangent exactly when ``lᵀ C* l = 0``.
+
+>>> from pgsym.conics import Conic
+>>> from pgsym.projective_plane import Point
+>>> unit = Conic.from_coefficients(1, 0, 1, 0, 0, -1)       # x² + y² - 1 = 0
+>>> unit.contains(Point(0, 1)), unit.tangent_at(Point(0, 1))
+(True, Line(0, 1, -1))
+>>> unit.dual().contains_line(unit.tangent_at(Point(1, 0)))
+True
+"""
+
+from __future__ import annotations
+
+import itertools
+from collections.abc import Sequence
+from typing import Any
+
+import sympy
+from sympy import Expr, I, ImmutableMatrix, Integer, Matrix, Rational
+
+from .errors import (
+    CoincidentPointsError,
+    CollinearPointsError,
+    DegenerateConfigurationError,
+    DegenerateConicError,
+    DimensionError,
+    InvalidCoordinatesError,
+    NotOnConicError,
+    ObjectTypeError,
+    ZeroVectorError,
+)
+from .homogeneous import HomogeneousVector, Scalar, _format_entry, is_zero, to_exact
+from .projective_plane import Line, Point, collinear, cross
+
+__all__ = [
+    "Conic",
+    "DualConic",
+    "NotOnConicError",
+    "circular_points",
+    "conic_through",
+    "dual_conic_at_infinity",
+]
+
+
+def _expand(m: Matrix) -> ImmutableMatrix:
+    return ImmutableMatrix(m.applyfunc(sympy.expand))
+
+
+def _adjugate(m: Matrix) -> ImmutableMatrix:
+    """The adjugate (transposed cofactor matrix) of a 3×3 matrix, expanded."""
+    return _expand(Matrix(m).adjugate(method="bareiss"))
+
+
+def _rank3(m: Matrix) -> int:
+    """The exact rank of a nonzero 3×3 matrix (identically, for symbolic entries)."""
+    if not is_zero(sympy.expand(Matrix(m).det(method="bareiss"))):
+        return 3
+    if any(not is_zero(e) for e in _adjugate(m)):
+        return 2
+    return 1
+
+
+def _two_points_on(line: Line) -> tuple[Point, Point]:
+    """Two distinct points of a line, chosen exactly among l × e1, l × e2, l × e3."""
+    candidates = []
+    for e in ((1, 0, 0), (0, 1, 0), (0, 0, 1)):
+        coords = cross(line.coords, e)
+        if not all(is_zero(c) for c in coords):
+            candidates.append(Point._from_exact(coords))
+    p = candidates[0]
+    q = next(c for c in candidates[1:] if not c == p)
+    return p, q
+
+
+def _conjugate_normalised(u: list[Expr], v: list[Expr], disc: Expr) -> tuple[Expr, ...]:
+    """The point with coordinates ``u_i + v_i √disc`` (rational u, v, disc not a rational square),
+    scaled so that its last nonzero coordinate is 1.
+
+    Dividing by ``u_k + v_k √disc`` is done by multiplying with the conjugate: the
+    denominator ``u_k² - v_k² disc`` is a nonzero rational because √disc is irrational.
+    """
+    root = sympy.sqrt(disc)
+    k = max(i for i in range(3) if u[i] != 0 or v[i] != 0)
+    norm = u[k] ** 2 - v[k] ** 2 * disc
+    return tuple(
+        sympy.expand((u[i] * u[k] - v[i] * v[k] * disc + (v[i] * u[k] - u[i] * v[k]) * root) / norm) for i in range(3)
+    )
+
+
+def _form(m: Matrix, u: Sequence[Expr], v: Sequence[Expr]) -> Expr:
+    """The bilinear form ``uᵀ M v``, expanded."""
+    return sympy.expand(sum((u[i] * m[i, j] * v[j] for i in range(3) for j in range(3)), Integer(0)))
+
+
+class _Entries(HomogeneousVector):
+    """The six coefficients of a quadratic form as one homogeneous vector (for the canonical form)."""
+
+    size = 6
+    _kind = "conic"
+    __slots__ = ()
+
+
+def _monomial_coefficients(m: Matrix) -> tuple[Expr, ...]:
+    """(a, b, c, d, e, f) of the quadratic form a x1² + b x1x2 + c x2² + d x1x3 + e x2x3 + f x3²."""
+    return (m[0, 0], 2 * m[0, 1], m[1, 1], 2 * m[0, 2], 2 * m[1, 2], m[2, 2])
+
+
+def _symmetric_matrix(v: Sequence[Expr]) -> ImmutableMatrix:
+    a, b, c, d, e, f = v
+    h = Rational(1, 2)
+    return ImmutableMatrix([[a, b * h, d * h], [b * h, c, e * h], [d * h, e * h, f]])
+
+
+class _SymmetricForm:
+    """Shared machinery of conics and dual conics: a symmetric 3×3 matrix up to scale."""
+
+    __slots__ = ("_matrix",)
+    _kind = "conic"
+
+    def __init__(self, matrix: Any) -> None:
+        self._matrix = self._check(matrix)
+
+    @classmethod
+    def _check(cls, matrix: Any) -> ImmutableMatrix:
+        try:
+            rows = [list(row) for row in (matrix.tolist() if hasattr(matrix, "tolist") else matrix)]
+        except TypeError as err:
+            raise DimensionError(f"a {cls._kind} needs a symmetric 3×3 matrix, got {matrix!r}") from err
+        if len(rows) != 3 or any(len(r) != 3 for r in rows):
+            raise DimensionError(f"a {cls._kind} needs a symmetric 3×3 matrix (three rows of three), got {matrix!r}")
+        m = ImmutableMatrix([[to_exact(e) for e in r] for r in rows])
+        if any(not is_zero(m[i, j] - m[j, i]) for i in range(3) for j in range(i + 1, 3)):
+            raise InvalidCoordinatesError(
+                f"the matrix of a {cls._kind} must be symmetric, got {m.tolist()}; "
+                "use (M + M.T)/2, which describes the same quadratic form"
+            )
+        if all(is_zero(e) for e in m):
+            raise ZeroVectorError(f"the zero matrix is not a {cls._kind}: at least one entry must be nonzero")
+        return m
+
+    @classmethod
+    def _from_exact(cls, m: ImmutableMatrix) -> Any:
+        obj = cls.__new__(cls)
+        obj._matrix = cls._check(m)
+        return obj
+
+    @property
+    def matrix(self) -> ImmutableMatrix:
+        """The symmetric 3×3 matrix (one representative of the scale class)."""
+        return self._matrix
+
+    @property
+    def rank(self) -> int:
+        """The exact rank: 3 non-degenerate, 2 a pair of distinct lines (points), 1 a double line (point)."""
+        return _rank3(self._matrix)
+
+    @property
+    def is_degenerate(self) -> bool:
+        """True when the matrix is singular (rank 1 or 2)."""
+        return is_zero(self.determinant)
+
+    @property
+    def determinant(self) -> Expr:
+        """The determinant of the stored representative (its sign and size depend on the scale)."""
+        return sympy.expand(Matrix(self._matrix).det(method="bareiss"))
+
+    def __eq__(self, other: object) -> bool:
+        if type(self) is not type(other):
+            return NotImplemented
+        assert isinstance(other, _SymmetricForm)
+        u, v = list(self._matrix), list(other._matrix)
+        return all(is_zero(u[i] * v[j] - u[j] * v[i]) for i in range(9) for j in range(i + 1, 9))
+
+    def __hash__(self) -> int:
+        return hash((type(self).__name__, 3))
+
+    def canonical(self) -> Any:
+        """The representative whose quadratic form has coprime integer (or polynomial) coefficients.
+
+        The six coefficients ``(a, b, c, d, e, f)`` of ``a x² + b xy + c y² + d x + e y + f``
+        (for a dual conic, of the same form in the line coordinates) are made a
+        primitive integer vector with first nonzero entry positive.
+
+        >>> Conic([[2, 1, 0], [1, 4, 0], [0, 0, -6]]).canonical()
+        Conic.from_coefficients(1, 1, 2, 0, 0, -3)
+        >>> Conic([[-1, 0, 0], [0, -1, 0], [0, 0, Rational(1, 2)]]).canonical()
+        Conic.from_coefficients(2, 0, 2, 0, 0, -1)
+        """
+        coefficients = _Entries._from_exact(_monomial_coefficients(self._matrix)).canonical().coords
+        return type(self)._from_exact(_symmetric_matrix(coefficients))
+
+    def subs(self, *args: Any, **kwargs: Any) -> Any:
+        """Substitute values for symbols, as :meth:`sympy.Expr.subs` does."""
+        return type(self)._from_exact(ImmutableMatrix(self._matrix.subs(*args, **kwargs)))
+
+    def latex(self) -> str:
+        """LaTeX of the matrix (without math delimiters)."""
+        return sympy.latex(Matrix(self._matrix), mat_delim="[")
+
+
+class Conic(_SymmetricForm):
+    """A conic ``xᵀ C x = 0`` of the projective plane, from a symmetric 3×3 matrix C.
+
+    Equality is up to a nonzero scale; ``repr`` is the :meth:`from_coefficients`
+    call that rebuilds the conic. In Jupyter a conic renders as its matrix and its
+    equation in inhomogeneous coordinates.
+
+    >>> C = Conic([[1, 0, 0], [0, 1, 0], [0, 0, -4]])     # the circle x² + y² = 4
+    >>> C
+    Conic.from_coefficients(1, 0, 1, 0, 0, -4)
+    >>> C == Conic.from_coefficients(-2, 0, -2, 0, 0, 8), C.contains(Point(2, 0))
+    (True, True)
+    """
+
+    __slots__ = ()
+    _kind = "conic"
+
+    @classmethod
+    def from_coefficients(cls, a: Scalar, b: Scalar, c: Scalar, d: Scalar, e: Scalar, f: Scalar) -> Conic:
+        """The conic ``a x² + b xy + c y² + d x + e y + f = 0``.
+
+        >>> Conic.from_coefficients(0, 2, 0, 0, 0, -2).matrix.tolist()     # xy = 1
+        [[0, 1, 0], [1, 0, 0], [0, 0, -2]]
+        """
+        return cls(_symmetric_matrix([to_exact(v) for v in (a, b, c, d, e, f)]))
+
+    @classmethod
+    def circle(cls, cx: Scalar, cy: Scalar, r: Scalar) -> Conic:
+        """The circle with centre ``(cx, cy)`` and radius ``r``: ``(x - cx)² + (y - cy)² = r²``.
+
+        >>> Conic.circle(1, 2, 3)
+        Conic.from_coefficients(1, 0, 1, -2, -4, -4)
+        """
+        cx, cy, r = (to_exact(v) for v in (cx, cy, r))
+        return cls.from_coefficients(1, 0, 1, -2 * cx, -2 * cy, sympy.expand(cx**2 + cy**2 - r**2))
+
+    @property
+    def coefficients(self) -> tuple[Expr, Expr, Expr, Expr, Expr, Expr]:
+        """``(a, b, c, d, e, f)`` of ``a x² + b xy + c y² + d x + e y + f = 0``.
+
+        >>> Conic([[1, 2, 3], [2, 4, 5], [3, 5, 6]]).coefficients
+        (1, 4, 4, 6, 10, 6)
+        """
+        return _monomial_coefficients(self._matrix)  # type: ignore[return-value]
+
+    def equation(self, x: Expr | None = None, y: Expr | None = None) -> Expr:
+        """The left-hand side ``a x² + b xy + c y² + d x + e y + f`` as a polynomial in x and y.
+
+        >>> Conic.circle(0, 0, 1).equation()
+        x**2 + y**2 - 1
+        """
+        x = sympy.Symbol("x") if x is None else x
+        y = sympy.Symbol("y") if y is None else y
+        a, b, c, d, e, f = self.coefficients
+        return sympy.expand(a * x**2 + b * x * y + c * y**2 + d * x + e * y + f)
+
+    def __repr__(self) -> str:
+        return f"Conic.from_coefficients({', '.join(_format_entry(c) for c in self.coefficients)})"
+
+    def _repr_latex_(self) -> str:
+        eq = sympy.latex(sympy.Eq(self.equation(), 0))
+        return f"$C = {self.latex()}, \\quad {eq}$"
+
+    def value(self, point: Point) -> Expr:
+        """The quadratic form ``xᵀ C x`` at a point, expanded (zero exactly on the conic).
+
+        >>> Conic.circle(0, 0, 1).value(Point(2, 0))
+        3
+        """
+        _require_point(point, "Conic.value")
+        return _form(self._matrix, point.coords, point.coords)
+
+    def contains(self, point: Point) -> bool:
+        """True when the point lies on the conic: ``xᵀ C x = 0`` identically.
+
+        >>> Conic.circle(0, 0, 5).contains(Point(3, 4)), Conic.circle(0, 0, 5).contains(Point(3, 3))
+        (True, False)
+        """
+        return is_zero(self.value(point))
+
+    def polar(self, point: Point) -> Line:
+        """The polar line ``l = C x`` of any point x.
+
+        For a point on the conic it is the tangent there; for a point outside a
+        real conic it is the line through the two points of contact of the tangents
+        from x. Raises :class:`DegenerateConicError` when ``C x = 0``, i.e. x is a
+        singular point of a degenerate conic (the vertex of a line pair, or any
+        point of a double line), where no polar exists.
+
+        >>> Conic.circle(0, 0, 1).polar(Point(2, 0))     # the line x = 1/2
+        Line(2, 0, -1)
+        """
+        _require_point(point, "Conic.polar")
+        coords = tuple(sympy.expand(e) for e in self._matrix * point.vector)
+        if all(is_zero(c) for c in coords):
+            raise DegenerateConicError(
+                f"{point!r} is a singular point of the degenerate conic {self!r} (C x = 0), so it has no polar line"
+            )
+        return Line._from_exact(coords)
+
+    def tangent_at(self, point: Point) -> Line:
+        """The tangent line ``l = C x`` at a point x of the conic.
+
+        Raises :class:`NotOnConicError` when x is not on the conic (use
+        :meth:`polar` for any point) and :class:`DegenerateConicError` at a singular
+        point of a degenerate conic.
+
+        >>> Conic.from_coefficients(1, 0, 0, 0, -1, 0).tangent_at(Point(2, 4))   # y = x² at x = 2
+        Line(2, S(-1)/2, -2)
+        """
+        _require_point(point, "Conic.tangent_at")
+        if not self.contains(point):
+            raise NotOnConicError(
+                f"{point!r} is not on the conic {self!r} (xᵀ C x = {self.value(point)}), so it has no tangent "
+                "there; use polar() for the polar line of an arbitrary point"
+            )
+        return self.polar(point)
+
+    def pole(self, line: Line) -> Point:
+        """The pole of a line: the point x with polar l, ``x = adj(C) l`` (C non-degenerate).
+
+        >>> Conic.circle(0, 0, 1).pole(Line(2, 0, -1)) == Point(2, 0)
+        True
+        """
+        _require_line(line, "Conic.pole")
+        self._require_nondegenerate("the pole of a line")
+        return Point._from_exact(tuple(sympy.expand(e) for e in _adjugate(self._matrix) * line.vector))
+
+    def _require_nondegenerate(self, what: str) -> None:
+        if self.is_degenerate:
+            raise DegenerateConicError(
+                f"{what} needs a non-degenerate conic, but {self!r} is degenerate (rank {self.rank}): "
+                + ("a pair of lines" if self.rank == 2 else "a double line")
+            )
+
+    def dual(self) -> DualConic:
+        """The dual conic ``C* = adj C`` of the lines tangent to C (C non-degenerate).
+
+        For a non-degenerate C, ``adj C = det(C) C⁻¹`` and a line is tangent exactly
+        when ``lᵀ C* l = 0``. A degenerate conic raises :class:`DegenerateConicError`:
+        for a line pair adj C has rank 1 (it is the vertex counted twice, which every
+        line through the vertex "touches"), and for a double line adj C = 0, so the
+        tangent lines no longer form a conic.
+
+        >>> Conic.circle(0, 0, 1).dual()
+        DualConic([[-1, 0, 0], [0, -1, 0], [0, 0, 1]])
+        """
+        self._require_nondegenerate("the dual conic of tangent lines")
+        return DualConic._from_exact(_adjugate(self._matrix))
+
+    def restricted_form(self, line: Line) -> tuple[Expr, Expr, Expr]:
+        """The quadratic form on a line: ``(A, B, C')`` with ``Q(s p + t q) = A s² + 2B st + C' t²``.
+
+        Here p and q are the two points of the line that :meth:`intersections` uses
+        (chosen exactly among ``l × e1, l × e2, l × e3``). The line is tangent
+        exactly when the discriminant ``B² - A C'`` vanishes.
+
+        >>> Conic.circle(0, 0, 1).restricted_form(Line(0, 1, -1))    # the tangent y = 1
+        (0, 0, 1)
+        """
+        _require_line(line, "Conic.restricted_form")
+        p, q = _two_points_on(line)
+        m = self._matrix
+        return _form(m, p.coords, p.coords), _form(m, p.coords, q.coords), _form(m, q.coords, q.coords)
+
+    def discriminant(self, line: Line) -> Expr:
+        """``B² - A C'`` of :meth:`restricted_form`: zero when the line meets the conic in a double point.
+
+        Its sign (for real lines) tells how many real points the line shares with
+        the conic: positive two, zero one double point, negative none. It is
+        ``-(lᵀ adj(C) l)`` times a nonzero square, so it vanishes exactly when l is
+        on the dual conic.
+
+        >>> Conic.circle(0, 0, 1).discriminant(Line(0, 1, 0)) > 0   # y = 0 cuts the unit circle twice
+        True
+        """
+        a, b, c = self.restricted_form(line)
+        return sympy.expand(b**2 - a * c)
+
+    def is_tangent(self, line: Line) -> bool:
+        """True when the line meets the conic in a double point (discriminant zero).
+
+        For a degenerate conic this includes every line through a singular point,
+        and a line contained in the conic (where every point is a double point).
+
+        >>> C = Conic.circle(0, 0, 1)
+        >>> C.is_tangent(Line(1, 0, -1)), C.is_tangent(Line(1, 0, 0))
+        (True, False)
+        """
+        return is_zero(self.discriminant(line))
+
+    def intersections(self, line: Line) -> tuple[Point, Point]:
+        """The two points (exact, possibly irrational or complex) where a line meets the conic.
+
+        A tangent line gives the same point twice. Raises :class:`DegenerateConicError`
+        when the line is contained in a degenerate conic (every point is common).
+
+        >>> C = Conic.circle(0, 0, 1)
+        >>> sorted(p.dehomogenize() for p in C.intersections(Line(0, 1, 0)))
+        [(-1, 0), (1, 0)]
+        """
+        _require_line(line, "Conic.intersections")
+        p, q = _two_points_on(line)
+        a, b, c = self.restricted_form(line)
+        if is_zero(a) and is_zero(b) and is_zero(c):
+            raise DegenerateConicError(f"the line {line!r} lies entirely on the degenerate conic {self!r}")
+        if is_zero(a):
+            pairs = [(Integer(1), Integer(0)), (c, -2 * b)]
+            coords = [[sympy.expand(s * pi + t * qi) for pi, qi in zip(p, q, strict=True)] for s, t in pairs]
+            return Point._from_exact(tuple(coords[0])), Point._from_exact(tuple(coords[1]))
+        # the points (-B ± √disc) p + A q, i.e. coordinates u_i ± v_i √disc
+        disc = sympy.expand(b**2 - a * c)
+        u = [sympy.expand(-b * pi + a * qi) for pi, qi in zip(p, q, strict=True)]
+        v = list(p.coords)
+        root = sympy.sqrt(disc)
+        if not root.is_Rational and all(e.is_Rational for e in (*u, *v, disc)):
+            both = [_conjugate_normalised(u, [sign * vi for vi in v], disc) for sign in (1, -1)]
+        else:
+            both = [tuple(sympy.expand(ui + sign * root * vi) for ui, vi in zip(u, v, strict=True)) for sign in (1, -1)]
+        return Point._from_exact(both[0]), Point._from_exact(both[1])
+
+
+class DualConic(_SymmetricForm):
+    """A dual (line) conic: the lines l with ``lᵀ C* l = 0``, from a symmetric 3×3 matrix C*.
+
+    Degenerate dual conics are allowed: the dual conic at infinity ``diag(1, 1, 0)``
+    has rank 2. ``repr`` gives the matrix as nested lists.
+
+    >>> Cs = DualConic([[1, 0, 0], [0, 1, 0], [0, 0, -1]])      # tangents of the unit circle
+    >>> Cs.contains_line(Line(1, 0, -1)), Cs.contains_line(Line(1, 0, 0))
+    (True, False)
+    """
+
+    __slots__ = ()
+    _kind = "dual conic"
+
+    def __repr__(self) -> str:
+        rows = ", ".join("[" + ", ".join(_format_entry(e) for e in row) + "]" for row in self._matrix.tolist())
+        return f"DualConic([{rows}])"
+
+    def _repr_latex_(self) -> str:
+        return f"$C^{{*}} = {self.latex()}$"
+
+    def value(self, line: Line) -> Expr:
+        """``lᵀ C* l``, expanded.
+
+        >>> dual_conic_at_infinity().value(Line(1, 2, 3))
+        5
+        """
+        _require_line(line, "DualConic.value")
+        return _form(self._matrix, line.coords, line.coords)
+
+    def contains_line(self, line: Line) -> bool:
+        """True when ``lᵀ C* l = 0``: for the dual of a conic C, when l is tangent to C.
+
+        >>> Conic.circle(0, 0, 2).dual().contains_line(Line(0, 1, -2))     # y = 2 touches
+        True
+        """
+        return is_zero(self.value(line))
+
+    def dual(self) -> Conic:
+        """The point conic ``adj C*`` whose tangents are these lines (C* non-degenerate).
+
+        Since ``adj(adj C) = det(C) C`` for 3×3 matrices, ``C.dual().dual() == C``.
+
+        >>> Conic.circle(1, 1, 1).dual().dual() == Conic.circle(1, 1, 1)
+        True
+        """
+        if self.is_degenerate:
+            raise DegenerateConicError(
+                f"{self!r} is degenerate (rank {self.rank}), so its lines are not the tangents of a point conic; "
+                "e.g. the dual conic at infinity consists of the lines through the two circular points"
+            )
+        return Conic._from_exact(_adjugate(self._matrix))
+
+
+def _require_point(obj: object, operation: str) -> None:
+    if not isinstance(obj, Point):
+        raise ObjectTypeError(f"{operation} expects a Point of P², got {type(obj).__name__} {obj!r}")
+
+
+def _require_line(obj: object, operation: str) -> None:
+    if not isinstance(obj, Line):
+        raise ObjectTypeError(f"{operation} expects a Line of P², got {type(obj).__name__} {obj!r}")
+
+
+def _monomials(p: Point) -> list[Expr]:
+    x1, x2, x3 = p.coords
+    return [sympy.expand(v) for v in (x1 * x1, x1 * x2, x2 * x2, x1 * x3, x2 * x3, x3 * x3)]
+
+
+def conic_through(*points: Point) -> Conic:
+    """The unique conic through five points.
+
+    Each point x gives one linear equation in ``(a, b, c, d, e, f)``:
+    ``a x1² + b x1x2 + c x2² + d x1x3 + e x2x3 + f x3² = 0``. The 5×6 system has a
+    one-dimensional null space exactly when it has rank 5, and then the null
+    vector is given exactly by the signed 5×5 minors (a generalised cross
+    product) — no pivoting, so it also works with symbolic coordinates.
+
+    Decisions: if three of the points are collinear (but no four) the unique
+    conic exists and is the degenerate line pair, which is returned. If the null
+    space is two-dimensional or more, no unique conic exists and an error names
+    the cause: :class:`CoincidentPointsError` when two points coincide,
+    :class:`CollinearPointsError` when four of the five are collinear (these
+    are the only ways it can happen for five points).
+
+    >>> conic_through(Point(1, 0), Point(-1, 0), Point(0, 1), Point(0, -1), Point(3, 4, 5))
+    Conic.from_coefficients(1, 0, 1, 0, 0, -1)
+    """
+    if len(points) == 1 and isinstance(points[0], (list, tuple)):
+        points = tuple(points[0])
+    if len(points) != 5:
+        raise DimensionError(
+            f"conic_through needs exactly five points (a conic has 5 degrees of freedom), got {len(points)}"
+        )
+    for p in points:
+        _require_point(p, "conic_through")
+    rows = Matrix([_monomials(p) for p in points])
+    coeffs = []
+    for j in range(6):
+        minor = rows[:, [k for k in range(6) if k != j]].det(method="bareiss")
+        coeffs.append(sympy.expand((-1) ** j * minor))
+    if all(is_zero(c) for c in coeffs):
+        for i, j in itertools.combinations(range(5), 2):
+            if points[i] == points[j]:
+                raise CoincidentPointsError(
+                    f"points {i + 1} and {j + 1} given to conic_through are the same point {points[i]!r}; "
+                    "five distinct points are needed to fix a conic"
+                )
+        for quad in itertools.combinations(range(5), 4):
+            if all(collinear(*(points[k] for k in trio)) for trio in itertools.combinations(quad, 3)):
+                raise CollinearPointsError(
+                    "points " + ", ".join(str(k + 1) for k in quad) + " given to conic_through are collinear: every "
+                    "line pair made of that line and a line through the fifth point contains them, so no unique "
+                    "conic passes through the five points"
+                )
+        raise DegenerateConfigurationError(  # pragma: no cover - unreachable for five points
+            "the five points do not fix a unique conic"
+        )
+    a, b, c, d, e, f = coeffs
+    return Conic.from_coefficients(a, b, c, d, e, f).canonical()
+
+
+def circular_points() -> tuple[Point, Point]:
+    """The circular points ``I = (1, i, 0)`` and ``J = (1, -i, 0)``, on every circle.
+
+    They are ideal points with complex coordinates; a conic passes through both
+    exactly when it is a circle (or a degenerate conic containing them).
+
+    >>> I_, J_ = circular_points()
+    >>> I_, Conic.circle(5, -2, 7).contains(I_) and Conic.circle(5, -2, 7).contains(J_)
+    (Point(1, I, 0), True)
+    """
+    return Point(1, I, 0), Point(1, -I, 0)
+
+
+def dual_conic_at_infinity() -> DualConic:
+    """The dual conic ``C*∞ = I Jᵀ + J Iᵀ = diag(1, 1, 0)`` (up to the factor 2), of rank 2.
+
+    Its lines are those through one of the circular points: ``l1² + l2² = 0``.
+
+    >>> dual_conic_at_infinity()
+    DualConic([[1, 0, 0], [0, 1, 0], [0, 0, 0]])
+    >>> dual_conic_at_infinity().contains_line(Line(1, I, 7))     # a line through I
+    True
+    """
+    return DualConic([[1, 0, 0], [0, 1, 0], [0, 0, 0]])
