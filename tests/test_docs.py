@@ -79,3 +79,11 @@ def test_every_chapter_has_an_exercise_with_a_toggled_solution(path):
     text = "\n".join(c.source for c in nbformat.read(path, as_version=4).cells if c.cell_type == "markdown")
     assert "```{exercise}" in text
     assert re.search(r"```\{solution\}[^\n]*\n:class: dropdown", text)
+
+
+def test_every_python_example_in_the_readme_runs():
+    blocks = python_blocks((ROOT / "README.md").read_text())
+    assert len(blocks) >= 2
+    for block in blocks:
+        with contextlib.redirect_stdout(io.StringIO()):
+            exec(block, {})  # the project's own documentation, not user input
