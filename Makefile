@@ -31,13 +31,18 @@ $(MATHJAX): package.json package-lock.json
 
 mathjax: $(MATHJAX)  ## fetch MathJax 3 from npm
 
-system-deps:  ## install Debian's chromium for the browser test (when root), or say how
-	@if ! command -v chromium >/dev/null; then \
+# Debian packages: chromium for the browser test, TeX for the PDF exercise sheets.
+APT_PACKAGES := chromium texlive-latex-extra texlive-fonts-recommended tex-gyre latexmk lmodern
+system-deps:  ## install Debian's chromium and TeX (when root), or say how
+	@missing=""; \
+	command -v chromium >/dev/null || missing="$$missing chromium"; \
+	command -v pdflatex >/dev/null && command -v latexmk >/dev/null || missing="$$missing tex"; \
+	if [ -n "$$missing" ]; then \
 	  if [ "$$(id -u)" = 0 ] && command -v apt-get >/dev/null; then \
-	    echo "installing Debian's chromium for the browser test"; \
-	    apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq chromium >/dev/null; \
+	    echo "installing Debian packages for:$$missing"; \
+	    apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends $(APT_PACKAGES) >/dev/null; \
 	  else \
-	    echo "The browser test needs Debian's Chromium at /usr/bin/chromium: run 'sudo apt-get install chromium'"; exit 1; \
+	    echo "missing:$$missing. Run: sudo apt-get install $(APT_PACKAGES)"; exit 1; \
 	  fi; \
 	fi
 

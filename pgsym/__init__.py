@@ -8,7 +8,14 @@ Point(-2, -2, -2)
 (True, Point(1, 1, 1), (1, 1))
 """
 
-from .conics import Conic, DualConic, circular_points, conic_through, dual_conic_at_infinity
+# The exact core needs SymPy, which takes a noticeable time to import; the numeric path does not.
+# Names are therefore resolved on first use (PEP 562), so `import pgsym` stays light and a numeric
+# user never pays for SymPy. The errors are plain Python and are imported eagerly.
+from __future__ import annotations
+
+import importlib
+from typing import TYPE_CHECKING, Any
+
 from .errors import (
     CoincidentLinesError,
     CoincidentPointsError,
@@ -35,27 +42,85 @@ from .errors import (
     ZeroCoordinateError,
     ZeroVectorError,
 )
-from .homogeneous import HomogeneousVector, is_zero
-from .linalg import nullspace_exact, nullspace_svd, rank_exact
-from .plucker import Line3, cross_ratio_planes, klein_form, reciprocal_product
-from .projective_line import Point1, ProjectiveMap1, bracket, cross_ratio, cross_ratio_lines, harmonic_conjugate
-from .projective_plane import (
-    Line,
-    Point,
-    collinear,
-    concurrent,
-    cross,
-    dual,
-    ideal_point,
-    incident,
-    join,
-    line_at_infinity,
-    meet,
-)
-from .quadrics import Quadric
-from .space import Plane, Point3, coplanar, plane_at_infinity, plane_through, point_on_planes
 
 __version__ = "0.1.0"
+
+_LAZY: dict[str, str] = {
+    "Conic": "conics",
+    "DualConic": "conics",
+    "HomogeneousVector": "homogeneous",
+    "Line": "projective_plane",
+    "Line3": "plucker",
+    "Plane": "space",
+    "Point": "projective_plane",
+    "Point1": "projective_line",
+    "Point3": "space",
+    "ProjectiveMap1": "projective_line",
+    "Quadric": "quadrics",
+    "bracket": "projective_line",
+    "circular_points": "conics",
+    "collinear": "projective_plane",
+    "concurrent": "projective_plane",
+    "conic_through": "conics",
+    "coplanar": "space",
+    "cross": "projective_plane",
+    "cross_ratio": "projective_line",
+    "cross_ratio_lines": "projective_line",
+    "cross_ratio_planes": "plucker",
+    "dual": "projective_plane",
+    "dual_conic_at_infinity": "conics",
+    "harmonic_conjugate": "projective_line",
+    "ideal_point": "projective_plane",
+    "incident": "projective_plane",
+    "is_zero": "homogeneous",
+    "join": "projective_plane",
+    "klein_form": "plucker",
+    "line_at_infinity": "projective_plane",
+    "meet": "projective_plane",
+    "nullspace_exact": "linalg",
+    "nullspace_svd": "linalg",
+    "plane_at_infinity": "space",
+    "plane_through": "space",
+    "point_on_planes": "space",
+    "rank_exact": "linalg",
+    "reciprocal_product": "plucker",
+}
+
+if TYPE_CHECKING:  # pragma: no cover
+    from .conics import Conic, DualConic, circular_points, conic_through, dual_conic_at_infinity
+    from .homogeneous import HomogeneousVector, is_zero
+    from .linalg import nullspace_exact, nullspace_svd, rank_exact
+    from .plucker import Line3, cross_ratio_planes, klein_form, reciprocal_product
+    from .projective_line import Point1, ProjectiveMap1, bracket, cross_ratio, cross_ratio_lines, harmonic_conjugate
+    from .projective_plane import (
+        Line,
+        Point,
+        collinear,
+        concurrent,
+        cross,
+        dual,
+        ideal_point,
+        incident,
+        join,
+        line_at_infinity,
+        meet,
+    )
+    from .quadrics import Quadric
+    from .space import Plane, Point3, coplanar, plane_at_infinity, plane_through, point_on_planes
+
+
+def __getattr__(name: str) -> Any:
+    module = _LAZY.get(name)
+    if module is None:
+        raise AttributeError(f"module 'pgsym' has no attribute {name!r}")
+    value = getattr(importlib.import_module(f".{module}", __name__), name)
+    globals()[name] = value
+    return value
+
+
+def __dir__() -> list[str]:
+    return sorted(set(globals()) | set(_LAZY))
+
 
 __all__ = [
     "CoincidentLinesError",
