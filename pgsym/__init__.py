@@ -46,6 +46,27 @@ from .errors import (
 __version__ = "0.1.0"
 
 _LAZY: dict[str, str] = {
+    "Transformation": "transformations",
+    "adjugate": "transformations",
+    "homography_from_points": "transformations",
+    "classify": "hierarchy",
+    "CLASSES_2D": "hierarchy",
+    "CLASSES_3D": "hierarchy",
+    "EUCLIDEAN_2D": "hierarchy",
+    "ISOMETRY_2D": "hierarchy",
+    "SIMILARITY_2D": "hierarchy",
+    "AFFINE_2D": "hierarchy",
+    "PROJECTIVE_2D": "hierarchy",
+    "EUCLIDEAN_3D": "hierarchy",
+    "SIMILARITY_3D": "hierarchy",
+    "AFFINE_3D": "hierarchy",
+    "PROJECTIVE_3D": "hierarchy",
+    "rotation_2d": "hierarchy",
+    "rotation_3d": "hierarchy",
+    "INVARIANTS": "invariants",
+    "invariant": "invariants",
+    "summary_table": "invariants",
+    "decompose": "decomposition",
     "Conic": "conics",
     "DualConic": "conics",
     "HomogeneousVector": "homogeneous",
@@ -88,7 +109,25 @@ _LAZY: dict[str, str] = {
 
 if TYPE_CHECKING:  # pragma: no cover
     from .conics import Conic, DualConic, circular_points, conic_through, dual_conic_at_infinity
+    from .decomposition import decompose
+    from .hierarchy import (
+        AFFINE_2D,
+        AFFINE_3D,
+        CLASSES_2D,
+        CLASSES_3D,
+        EUCLIDEAN_2D,
+        EUCLIDEAN_3D,
+        ISOMETRY_2D,
+        PROJECTIVE_2D,
+        PROJECTIVE_3D,
+        SIMILARITY_2D,
+        SIMILARITY_3D,
+        classify,
+        rotation_2d,
+        rotation_3d,
+    )
     from .homogeneous import HomogeneousVector, is_zero
+    from .invariants import INVARIANTS, invariant, summary_table
     from .linalg import nullspace_exact, nullspace_svd, rank_exact
     from .plucker import Line3, cross_ratio_planes, klein_form, reciprocal_product
     from .projective_line import Point1, ProjectiveMap1, bracket, cross_ratio, cross_ratio_lines, harmonic_conjugate
@@ -107,6 +146,7 @@ if TYPE_CHECKING:  # pragma: no cover
     )
     from .quadrics import Quadric
     from .space import Plane, Point3, coplanar, plane_at_infinity, plane_through, point_on_planes
+    from .transformations import Transformation, adjugate, homography_from_points
 
 
 def __getattr__(name: str) -> Any:
@@ -123,6 +163,18 @@ def __dir__() -> list[str]:
 
 
 __all__ = [
+    "AFFINE_2D",
+    "AFFINE_3D",
+    "CLASSES_2D",
+    "CLASSES_3D",
+    "EUCLIDEAN_2D",
+    "EUCLIDEAN_3D",
+    "INVARIANTS",
+    "ISOMETRY_2D",
+    "PROJECTIVE_2D",
+    "PROJECTIVE_3D",
+    "SIMILARITY_2D",
+    "SIMILARITY_3D",
     "CoincidentLinesError",
     "CoincidentPointsError",
     "CollinearPointsError",
@@ -154,13 +206,16 @@ __all__ = [
     "ProjectiveMap1",
     "Quadric",
     "SingularTransformationError",
+    "Transformation",
     "UndefinedCrossRatioError",
     "UnparsableAnswerError",
     "ZeroCoordinateError",
     "ZeroVectorError",
     "__version__",
+    "adjugate",
     "bracket",
     "circular_points",
+    "classify",
     "collinear",
     "concurrent",
     "conic_through",
@@ -169,11 +224,14 @@ __all__ = [
     "cross_ratio",
     "cross_ratio_lines",
     "cross_ratio_planes",
+    "decompose",
     "dual",
     "dual_conic_at_infinity",
     "harmonic_conjugate",
+    "homography_from_points",
     "ideal_point",
     "incident",
+    "invariant",
     "is_zero",
     "join",
     "klein_form",
@@ -186,4 +244,7 @@ __all__ = [
     "point_on_planes",
     "rank_exact",
     "reciprocal_product",
+    "rotation_2d",
+    "rotation_3d",
+    "summary_table",
 ]

@@ -1,0 +1,714 @@
+"""Invariants of the transformation classes: exact proofs, explicit counterexamples, the summary table.
+
+An :class:`Invariant` is a quantity (or a relation, whose quantity is zero) attached to
+a configuration of objects. It is *invariant* under a class when its value on the
+transformed configuration equals its value on the original one for every member of
+the class. :meth:`Invariant.prove` decides this for the class's symbolic generic
+element acting on a generic symbolic configuration: every quantity is a rational
+function, computed as a numerator/denominator pair of polynomials in a SymPy
+polynomial ring over ℚ (no ``simplify``), and the claim is that the numerator of
+``after − before`` is the zero polynomial. Each invariant that is new in its class
+also carries an explicit exact member of the next larger class and an exact
+configuration on which the quantity changes: :meth:`Invariant.counterexample`.
+
+The summary table of the hierarchy (:func:`summary_table`) is assembled from these
+results and from the derived DoF; nothing in it is typed in.
+
+>>> inv = invariant("angle")
+>>> inv.prove().holds
+True
+>>> ce = inv.counterexample()
+>>> ce.before, ce.after, ce.transformation_class
+([0], [1/2], 'Affine')
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass, field
+from functools import cache
+from typing import Any
+
+import sympy
+from sympy import ZZ, Rational
+from sympy.polys.rings import PolyElement, ring
+
+from .errors import ObjectTypeError
+from .hierarchy import CLASSES_2D, CLASSES_3D, TransformationClass, class_by_key, classify
+
+__all__ = [
+    "INVARIANTS",
+    "Counterexample",
+    "Invariant",
+    "Proof",
+    "invariant",
+    "invariants_of",
+    "summary_markdown",
+    "summary_table",
+]
+
+
+# -- a fraction of polynomials, without gcd cancellation -------------------------------------------
+class _Q:
+    """``n / d`` with ``n``, ``d`` polynomials of one ring; zero exactly when ``n`` is the zero polynomial."""
+
+    __slots__ = ("d", "n")
+
+    def __init__(self, n: PolyElement, d: PolyElement) -> None:
+        self.n, self.d = n, d
+
+    def _lift(self, o: Any) -> _Q:
+        if isinstance(o, _Q):
+            return o
+        return _Q(self.n.ring(o), self.n.ring.one)
+
+    def __add__(self, o: Any) -> _Q:
+        o = self._lift(o)
+        if self.d == o.d:
+            return _Q(self.n + o.n, self.d)
+        return _Q(self.n * o.d + o.n * self.d, self.d * o.d)
+
+    __radd__ = __add__
+
+    def __neg__(self) -> _Q:
+        return _Q(-self.n, self.d)
+
+    def __sub__(self, o: Any) -> _Q:
+        return self + (-self._lift(o))
+
+    def __rsub__(self, o: Any) -> _Q:
+        return self._lift(o) - self
+
+    def __mul__(self, o: Any) -> _Q:
+        o = self._lift(o)
+        return _Q(self.n * o.n, self.d * o.d)
+
+    __rmul__ = __mul__
+
+    def __truediv__(self, o: Any) -> _Q:
+        o = self._lift(o)
+        if not o.n:
+            raise ZeroDivisionError("division by the zero polynomial in an invariant proof")
+        return _Q(self.n * o.d, self.d * o.n)
+
+    def __rtruediv__(self, o: Any) -> _Q:
+        return self._lift(o) / self
+
+    def __pow__(self, k: int) -> _Q:
+        return _Q(self.n**k, self.d**k)
+
+    def is_zero(self) -> bool:
+        return not self.n
+
+
+def _nonzero(x: Any) -> bool:
+    return not x.is_zero() if isinstance(x, _Q) else x != 0
+
+
+def _literal_zero(x: Any) -> bool:
+    return x.is_zero() if isinstance(x, _Q) else (x == 0) is True
+
+
+def _ex(v: Sequence[Any]) -> list[Any]:
+    return [x if isinstance(x, _Q) else sympy.sympify(x) for x in v]
+
+
+# -- small exact linear algebra on lists (works for _Q, SymPy numbers and symbols alike) ----------
+def _mv(M: Sequence[Sequence[Any]], v: Sequence[Any]) -> list[Any]:
+    return [sum((M[i][j] * v[j] for j in range(len(v))), 0) for i in range(len(M))]
+
+
+def _mm(A: Sequence[Sequence[Any]], B: Sequence[Sequence[Any]]) -> list[list[Any]]:
+    return [[sum((A[i][k] * B[k][j] for k in range(len(B))), 0) for j in range(len(B[0]))] for i in range(len(A))]
+
+
+def _tr(A: Sequence[Sequence[Any]]) -> list[list[Any]]:
+    return [list(r) for r in zip(*A, strict=True)]
+
+
+def _det(M: Sequence[Sequence[Any]]) -> Any:
+    n = len(M)
+    if n == 1:
+        return M[0][0]
+    if n == 2:
+        return M[0][0] * M[1][1] - M[0][1] * M[1][0]
+    total: Any = 0
+    for j in range(n):
+        if not _literal_zero(M[0][j]):
+            minor = [[M[i][k] for k in range(n) if k != j] for i in range(1, n)]
+            term = M[0][j] * _det(minor)
+            total = total + term if j % 2 == 0 else total - term
+    return total
+
+
+def _cof(M: Sequence[Sequence[Any]]) -> list[list[Any]]:
+    """The cofactor matrix ``adj(M)ᵀ``: maps lines/planes, since ``adj(M)ᵀ ∝ M⁻ᵀ``."""
+    n = len(M)
+    out = []
+    for i in range(n):
+        row = []
+        for j in range(n):
+            minor = [[M[r][c] for c in range(n) if c != j] for r in range(n) if r != i]
+            d = _det(minor)
+            row.append(d if (i + j) % 2 == 0 else -d)
+        out.append(row)
+    return out
+
+
+def _cross(u: Sequence[Any], v: Sequence[Any]) -> list[Any]:
+    return [u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]]
+
+
+def _dot(u: Sequence[Any], v: Sequence[Any]) -> Any:
+    return sum((a * b for a, b in zip(u, v, strict=True)), 0)
+
+
+def _euclid(x: Sequence[Any]) -> list[Any]:
+    return [c / x[-1] for c in x[:-1]]
+
+
+# -- Euclidean quantities of finite points (homogeneous input) ---------------------------------------
+def distance_squared(p: Sequence[Any], q: Sequence[Any]) -> Any:
+    """The squared Euclidean distance of two finite points given homogeneously (2D or 3D).
+
+    >>> distance_squared([0, 0, 1], [6, 8, 2])
+    25
+    """
+    a, b = _euclid(_ex(p)), _euclid(_ex(q))
+    return sum(((x - y) * (x - y) for x, y in zip(a, b, strict=True)), 0)
+
+
+def signed_area(p: Sequence[Any], q: Sequence[Any], r: Sequence[Any]) -> Any:
+    """The signed area of the triangle of three finite points: ``det[p q r] / (2 p₃ q₃ r₃)``.
+
+    >>> signed_area([0, 0, 1], [1, 0, 1], [0, 1, 1])
+    1/2
+    """
+    p, q, r = _ex(p), _ex(q), _ex(r)
+    return _det(_tr([p, q, r])) / (2 * p[2] * q[2] * r[2])
+
+
+def signed_volume(p: Sequence[Any], q: Sequence[Any], r: Sequence[Any], s: Sequence[Any]) -> Any:
+    """The signed volume ``det[q − p, r − p, s − p] / 6`` of a tetrahedron of finite points (homogeneous input).
+
+    >>> signed_volume([0, 0, 0, 1], [1, 0, 0, 1], [0, 1, 0, 1], [0, 0, 1, 1])
+    1/6
+    """
+    p, q, r, s = _ex(p), _ex(q), _ex(r), _ex(s)
+    return -_det(_tr([p, q, r, s])) / (6 * p[3] * q[3] * r[3] * s[3])
+
+
+def cos2_angle(l: Sequence[Any], m: Sequence[Any]) -> Any:
+    """``cos²`` of the angle between two lines (2D) or planes (3D) from their normals; it fixes the angle in [0, π/2].
+
+    >>> cos2_angle([1, 0, 0], [1, -1, 0])
+    1/2
+    """
+    u, v = _ex(l[:-1]), _ex(m[:-1])
+    return _dot(u, v) * _dot(u, v) / (_dot(u, u) * _dot(v, v))
+
+
+def collinear_cross_ratio(a: Sequence[Any], b: Sequence[Any], c: Sequence[Any], d: Sequence[Any]) -> Any:
+    """The cross-ratio ``(A, B; C, D) = [AC][BD] / ([AD][BC])`` of four collinear points of P².
+
+    For collinear points every ``X × Y`` is a multiple ``[XY]`` of the same line vector, so
+    one coordinate ``k`` of the cross products (where ``A × B`` is nonzero) gives the brackets.
+
+    >>> collinear_cross_ratio([0, 0, 1], [1, 0, 1], [2, 0, 1], [3, 0, 1])     # (0−2)(1−3)/((0−3)(1−2))
+    4/3
+    """
+    a, b, c, d = _ex(a), _ex(b), _ex(c), _ex(d)
+    base = _cross(a, b)
+    k = next(i for i in range(3) if _nonzero(base[i]))
+
+    def br(x: Sequence[Any], y: Sequence[Any]) -> Any:
+        return _cross(x, y)[k]
+
+    return br(a, c) * br(b, d) / (br(a, d) * br(b, c))
+
+
+# -- configurations and their images ------------------------------------------------------------------
+# A configuration is a tuple of (tag, data): "P" point (vector), "L" line / plane (covector),
+# "D" dual conic/quadric (matrix, H D Hᵀ), "C" conic/quadric (matrix, cof C cofᵀ).
+def _primitive(entries: list[Any]) -> list[Any]:
+    """A homogeneous object with polynomial entries, divided by the content of its entries.
+
+    Projective objects are defined up to scale, so the common polynomial factor carries no
+    information; removing it keeps the proof polynomials small. Non-polynomial data is returned unchanged.
+    """
+    if not entries or not all(isinstance(e, _Q) for e in entries):
+        return entries
+    common = entries[0].d
+    for e in entries[1:]:
+        if e.d != common:
+            common = common.lcm(e.d)
+    nums = [e.n * common.exquo(e.d) for e in entries]
+    g = None
+    for x in nums:
+        if x:
+            g = x if g is None else g.gcd(x)
+    if g is None:
+        return entries
+    one = g.ring.one
+    return [_Q(x.exquo(g), one) for x in nums]
+
+
+def _act(H: Sequence[Sequence[Any]], config: Sequence[tuple[str, Any]]) -> list[tuple[str, Any]]:
+    cof: list[list[Any]] | None = None
+    out: list[tuple[str, Any]] = []
+    for tag, data in config:
+        if tag in "LC" and cof is None:
+            cof = _cof(H)
+        if tag == "P":
+            out.append((tag, _mv(H, data)))
+        elif tag == "L":
+            out.append((tag, _primitive(_mv(cof, data))))  # type: ignore[arg-type]
+        else:
+            m = _mm(_mm(H, data), _tr(H)) if tag == "D" else _mm(_mm(cof, data), _tr(cof))  # type: ignore[arg-type]
+            flat = _primitive([e for row in m for e in row])
+            n = len(m)
+            out.append((tag, [flat[i * n : (i + 1) * n] for i in range(n)]))
+    return out
+
+
+def _data(config: Sequence[tuple[str, Any]]) -> list[Any]:
+    return [d for _, d in config]
+
+
+New = Callable[[], Any]
+
+
+def _pt(new: New, dim: int) -> tuple[str, list[Any]]:
+    return ("P", [new() for _ in range(dim)] + [1])
+
+
+def _ln(new: New, dim: int) -> tuple[str, list[Any]]:
+    return ("L", [new() for _ in range(dim + 1)])
+
+
+# -- configurations (generic when ``new`` yields symbols; concrete when it yields numbers) ---------
+def _c_points(k: int, dim: int) -> Callable[[New], list]:
+    return lambda new: [_pt(new, dim) for _ in range(k)]
+
+
+def _c_lines(k: int, dim: int) -> Callable[[New], list]:
+    return lambda new: [_ln(new, dim) for _ in range(k)]
+
+
+def _c_parallel_lines(new: New) -> list:
+    a, b, c, d = new(), new(), new(), new()
+    return [("L", [a, b, c]), ("L", [a, b, d])]
+
+
+def _c_parallel_planes(new: New) -> list:
+    a, b, c, d, e = new(), new(), new(), new(), new()
+    return [("L", [a, b, c, d]), ("L", [a, b, c, e])]
+
+
+def _c_parallel_segments(new: New) -> list:
+    p, q, r = (_pt(new, 2) for _ in range(3))
+    mu = new()
+    s = ("P", [r[1][0] + mu * (q[1][0] - p[1][0]), r[1][1] + mu * (q[1][1] - p[1][1]), 1])
+    return [p, q, r, s]
+
+
+def _c_collinear(new: New) -> list:
+    p = ("P", [new(), new(), new()])
+    q = ("P", [new(), new(), new()])
+    s, t = new(), new()
+    return [p, q, ("P", [s * a + t * b for a, b in zip(p[1], q[1], strict=True)])]
+
+
+def _c_concurrent(new: New) -> list:
+    l = ("L", [new(), new(), new()])
+    m = ("L", [new(), new(), new()])
+    s, t = new(), new()
+    return [l, m, ("L", [s * a + t * b for a, b in zip(l[1], m[1], strict=True)])]
+
+
+def _c_four_on_a_line(new: New) -> list:
+    a = [new(), new(), new()]
+    b = [new(), new(), new()]
+    lams = [new() for _ in range(4)]
+    return [("P", [x + lam * y for x, y in zip(a, b, strict=True)]) for lam in lams]
+
+
+def _c_incident(new: New) -> list:
+    l = [new(), new(), new()]
+    v = [new(), new(), new()]
+    return [("P", _cross(l, v)), ("L", l)]
+
+
+def _c_tangent(new: New) -> list:
+    # a point x and a conic C through x (c22 solved from xᵀCx = 0), with the tangent line C x
+    x = [new(), new(), new()]
+    c00, c01, c02, c11, c12 = (new() for _ in range(5))
+    rest = c00 * x[0] * x[0] + 2 * c01 * x[0] * x[1] + c11 * x[1] * x[1] + 2 * c02 * x[0] * x[2] + 2 * c12 * x[1] * x[2]
+    c22 = -rest / (x[2] * x[2])
+    C = [[c00, c01, c02], [c01, c11, c12], [c02, c12, c22]]
+    return [("P", x), ("C", C), ("L", _mv(C, x))]
+
+
+def _c_coplanar(new: New) -> list:
+    p, q, r = ([new() for _ in range(4)] for _ in range(3))
+    s, t, u = new(), new(), new()
+    return [("P", p), ("P", q), ("P", r), ("P", [s * a + t * b + u * c for a, b, c in zip(p, q, r, strict=True)])]
+
+
+def _c_point_in_plane(new: New) -> list:
+    x = [new() for _ in range(4)]
+    a, b, c = new(), new(), new()
+    d = -(a * x[0] + b * x[1] + c * x[2]) / x[3]
+    return [("P", x), ("L", [a, b, c, d])]
+
+
+def _c_fixed(tag: str, data: list) -> Callable[[New], list]:
+    exact = [[sympy.Integer(e) for e in row] for row in data] if isinstance(data[0], list) else _ex(data)
+    return lambda new: [(tag, exact)]
+
+
+# -- quantities ----------------------------------------------------------------------------------------
+def _v_dist(c: list) -> list:
+    p, q = _data(c)
+    return [distance_squared(p, q)]
+
+
+def _v_area2(c: list) -> list:
+    a = signed_area(*_data(c))
+    return [a * a]
+
+
+def _v_area(c: list) -> list:
+    return [signed_area(*_data(c))]
+
+
+def _v_volume(c: list) -> list:
+    return [signed_volume(*_data(c))]
+
+
+def _v_cos2(c: list) -> list:
+    return [cos2_angle(*_data(c))]
+
+
+def _v_length_ratio(c: list) -> list:
+    p, q, r, s = _data(c)
+    return [distance_squared(p, q) / distance_squared(r, s)]
+
+
+def _v_area_ratio(c: list) -> list:
+    d = _data(c)
+    return [signed_area(*d[:3]) / signed_area(*d[3:])]
+
+
+def _v_volume_ratio(c: list) -> list:
+    d = _data(c)
+    return [signed_volume(*d[:4]) / signed_volume(*d[4:])]
+
+
+def _v_parallel_ratio(c: list) -> list:
+    p, q, r, s = (_euclid(x) for x in _data(c))
+    u = [b - a for a, b in zip(p, q, strict=True)]
+    w = [b - a for a, b in zip(r, s, strict=True)]
+    return [_dot(w, u) / _dot(u, u), u[0] * w[1] - u[1] * w[0]]
+
+
+def _v_meet_at_infinity(c: list) -> list:
+    l, m = _data(c)
+    return [_cross(l, m)[2]]
+
+
+def _v_normals_parallel(c: list) -> list:
+    l, m = _data(c)
+    return _cross(l[:3], m[:3])
+
+
+def _v_at_infinity(c: list) -> list:
+    (l,) = _data(c)
+    return [x / l[-1] for x in l[:-1]]
+
+
+def _v_absolute(c: list) -> list:
+    (D,) = _data(c)
+    n = len(D)
+    return [D[i][j] / D[0][0] for i in range(n) for j in range(i, n) if (i, j) != (0, 0)]
+
+
+def _v_det(c: list) -> list:
+    return [_det(_tr(_data(c)))]
+
+
+def _v_cross_ratio(c: list) -> list:
+    return [collinear_cross_ratio(*_data(c))]
+
+
+def _v_incidence(c: list) -> list:
+    x, l = _data(c)
+    return [_dot(l, x)]
+
+
+def _v_tangency(c: list) -> list:
+    x, C, l = _data(c)
+    return [_dot(x, _mv(C, x)), *_cross(_mv(C, x), l)]
+
+
+# -- invariants -----------------------------------------------------------------------------------------
+@dataclass(frozen=True)
+class Proof:
+    """The outcome of :meth:`Invariant.prove`: ``holds`` when every residual numerator is the zero polynomial."""
+
+    key: str
+    transformation_class: str
+    holds: bool
+    components: int
+    terms: int = 0
+
+
+@dataclass(frozen=True)
+class Counterexample:
+    """A member ``matrix`` of the next larger class and a configuration on which the quantity changes."""
+
+    key: str
+    transformation_class: str
+    matrix: sympy.ImmutableMatrix
+    before: list[Any]
+    after: list[Any]
+
+    @property
+    def fails(self) -> bool:
+        """True when some value changed, i.e. the counterexample is genuine."""
+        return any(sympy.sympify(a - b) != 0 for a, b in zip(self.after, self.before, strict=True))
+
+
+@dataclass(frozen=True)
+class Invariant:
+    """A quantity preserved by every member of the class ``cls`` (a class key).
+
+    ``configuration(new)`` builds the objects from scalars supplied by ``new()`` (symbols
+    for the proof, numbers for examples); ``value`` maps a configuration to a list of
+    scalars. ``counter`` is ``(matrix, values)``: a member of the next larger class and
+    the numbers that ``new()`` yields for the counterexample configuration (``None`` for
+    invariants of the largest class).
+    """
+
+    key: str
+    name: str
+    cls: str
+    statement: str
+    configuration: Callable[[New], list] = field(repr=False)
+    value: Callable[[list], list] = field(repr=False)
+    counter: tuple[list[list[int]], list[Any]] | None = field(default=None, repr=False)
+
+    @property
+    def transformation_class(self) -> TransformationClass:
+        """The class for which the invariant is proved."""
+        return class_by_key(self.cls)
+
+    @property
+    def dim(self) -> int:
+        """2 or 3."""
+        return self.transformation_class.dim
+
+    def evaluate(self, H: Any, values: Sequence[Any]) -> tuple[list[Any], list[Any]]:
+        """The quantity before and after applying the matrix ``H`` to the configuration built from ``values``.
+
+        >>> invariant("length").evaluate([[2, 0, 0], [0, 2, 0], [0, 0, 1]], [0, 0, 3, 4])
+        ([25], [100])
+        """
+        rows = [[sympy.sympify(e) for e in r] for r in (H.tolist() if hasattr(H, "tolist") else H)]
+        it = iter([sympy.sympify(v) for v in values])
+        config = self.configuration(lambda: next(it))
+        return self.value(config), self.value(_act(rows, config))
+
+    def prove(self) -> Proof:
+        """Prove the invariance exactly for the generic element (every component) of the class."""
+        return _prove(self.key)
+
+    def counterexample(self) -> Counterexample | None:
+        """The explicit member of the next larger class that changes the quantity (None at the top)."""
+        if self.counter is None:
+            return None
+        H, values = self.counter
+        before, after = self.evaluate(H, values)
+        return Counterexample(self.key, classify(H).name, sympy.ImmutableMatrix(H), before, after)
+
+
+def _symbol_factory() -> tuple[New, list[sympy.Symbol]]:
+    made: list[sympy.Symbol] = []
+
+    def new() -> sympy.Symbol:
+        s = sympy.Symbol(f"z{len(made)}")
+        made.append(s)
+        return s
+
+    return new, made
+
+
+def _matrix_rows(flat: list[_Q], n: int) -> list[list[PolyElement]]:
+    return [[e.n for e in flat[i * n : (i + 1) * n]] for i in range(n)]
+
+
+@cache
+def _prove(key: str) -> Proof:
+    inv = invariant(key)
+    cls = inv.transformation_class
+    new, made = _symbol_factory()
+    inv.configuration(new)
+    n_config = len(made)
+    R, *gens = ring([*map(str, cls.parameters), *(f"z{i}" for i in range(n_config))], ZZ)
+    one = R.one
+    zs = iter(gens[cls.n_parameters :])
+    params = [_Q(g, one) for g in gens[: cls.n_parameters]]
+    config = inv.configuration(lambda: _Q(next(zs), one))
+    holds, terms = True, 0
+    for comp in range(len(cls.components)):
+        # the generic element, built in the ring; every quantity is independent of the
+        # representative of H (a projective map is defined up to scale), so the polynomial
+        # multiple with the denominators cleared is used
+        G = [[e if isinstance(e, _Q) else _Q(R(e), one) for e in row] for row in cls.builder(params, comp)]
+        H = [[_Q(e, one) for e in row] for row in _matrix_rows(_primitive([e for row in G for e in row]), len(G))]
+        before, after = inv.value(config), inv.value(_act(H, config))
+        for a, b in zip(after, before, strict=True):
+            r = a - b
+            terms = max(terms, len(r.n))
+            holds = holds and r.is_zero()
+    return Proof(key, cls.name, holds, len(cls.components), terms)
+
+
+_SCALE2 = [[2, 0, 0], [0, 2, 0], [0, 0, 1]]
+_REFLECT2 = [[1, 0, 0], [0, -1, 0], [0, 0, 1]]
+_SHEAR2 = [[1, 1, 0], [0, 1, 0], [0, 0, 1]]
+_PERSP2 = [[1, 0, 0], [0, 1, 0], [0, 1, 1]]
+_SCALE3 = [[2, 0, 0, 0], [0, 2, 0, 0], [0, 0, 2, 0], [0, 0, 0, 1]]
+_SHEAR3 = [[1, 1, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]
+_PERSP3 = [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 1, 0, 1]]
+
+INVARIANTS: tuple[Invariant, ...] = (
+    # 2D
+    Invariant("orientation", "orientation (signed area)", "euclidean2",
+              "the signed area of a triangle, hence its orientation", _c_points(3, 2), _v_area,
+              (_REFLECT2, [0, 0, 1, 0, 0, 1])),
+    Invariant("length", "length", "isometry2", "the distance between two points", _c_points(2, 2), _v_dist,
+              (_SCALE2, [0, 0, 3, 4])),
+    Invariant("area", "area", "isometry2", "the area of a triangle", _c_points(3, 2), _v_area2,
+              (_SCALE2, [0, 0, 1, 0, 0, 1])),
+    Invariant("angle", "angle", "similarity2", "the angle between two lines", _c_lines(2, 2), _v_cos2,
+              (_SHEAR2, [1, 0, 0, 0, 1, 0])),
+    Invariant("length-ratio", "ratio of lengths", "similarity2", "the ratio of two distances",
+              _c_points(4, 2), _v_length_ratio, (_SHEAR2, [0, 0, 1, 0, 0, 0, 0, 1])),
+    Invariant("circular-points", "circular points", "similarity2",
+              "the dual conic C*∞ = diag(1, 1, 0) of the circular points, up to scale",
+              _c_fixed("D", [[1, 0, 0], [0, 1, 0], [0, 0, 0]]), _v_absolute, (_SHEAR2, [])),
+    Invariant("parallelism", "parallelism", "affine2", "parallel lines stay parallel",
+              _c_parallel_lines, _v_meet_at_infinity, (_PERSP2, [1, 0, 0, -1])),
+    Invariant("area-ratio", "ratio of areas", "affine2", "the ratio of the areas of two triangles",
+              _c_points(6, 2), _v_area_ratio, (_PERSP2, [0, 0, 1, 0, 0, 1, 0, 1, 1, 1, 0, 2])),
+    Invariant("parallel-length-ratio", "ratio of lengths on parallel lines", "affine2",
+              "the ratio of the lengths of two parallel segments", _c_parallel_segments, _v_parallel_ratio,
+              (_PERSP2, [0, 0, 1, 0, 0, 1, 1])),
+    Invariant("line-at-infinity", "the line at infinity", "affine2", "the line at infinity l∞ = (0, 0, 1)",
+              _c_fixed("L", [0, 0, 1]), _v_at_infinity, (_PERSP2, [])),
+    Invariant("cross-ratio", "cross-ratio", "projective2", "the cross-ratio of four collinear points",
+              _c_four_on_a_line, _v_cross_ratio),
+    Invariant("collinearity", "collinearity", "projective2", "three collinear points stay collinear",
+              _c_collinear, _v_det),
+    Invariant("concurrency", "concurrency", "projective2", "three concurrent lines stay concurrent",
+              _c_concurrent, _v_det),
+    Invariant("incidence", "incidence", "projective2", "a point on a line maps to a point on the image line",
+              _c_incident, _v_incidence),
+    Invariant("tangency", "tangency", "projective2",
+              "a point of a conic and the tangent there map to a point of the image conic and its tangent",
+              _c_tangent, _v_tangency),
+    # 3D
+    Invariant("length-3d", "length", "euclidean3", "the distance between two points", _c_points(2, 3), _v_dist,
+              (_SCALE3, [0, 0, 0, 1, 2, 2])),
+    Invariant("volume", "volume", "euclidean3", "the signed volume of a tetrahedron", _c_points(4, 3), _v_volume,
+              (_SCALE3, [0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1])),
+    Invariant("angle-3d", "angle", "similarity3", "the angle between two planes", _c_lines(2, 3), _v_cos2,
+              (_SHEAR3, [1, 0, 0, 0, 0, 1, 0, 0])),
+    Invariant("length-ratio-3d", "ratio of lengths", "similarity3", "the ratio of two distances",
+              _c_points(4, 3), _v_length_ratio, (_SHEAR3, [0, 0, 0, 1, 0, 0, 0, 0, 0, 0, 1, 0])),
+    Invariant("absolute-conic", "the absolute conic Ω∞", "similarity3",
+              "the dual absolute quadric Q*∞ = diag(1, 1, 1, 0), up to scale",
+              _c_fixed("D", [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 0]]), _v_absolute, (_SHEAR3, [])),
+    Invariant("parallelism-3d", "parallelism of planes", "affine3", "parallel planes stay parallel",
+              _c_parallel_planes, _v_normals_parallel, (_PERSP3, [1, 0, 0, 0, -1])),
+    Invariant("volume-ratio", "ratio of volumes", "affine3", "the ratio of the volumes of two tetrahedra",
+              _c_points(8, 3), _v_volume_ratio,
+              (_PERSP3, [0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 0, 1, 1, 0, 0, 2, 0, 0, 1, 1])),
+    Invariant("plane-at-infinity", "the plane at infinity π∞", "affine3", "the plane at infinity (0, 0, 0, 1)",
+              _c_fixed("L", [0, 0, 0, 1]), _v_at_infinity, (_PERSP3, [])),
+    Invariant("coplanarity", "coplanarity", "projective3", "four coplanar points stay coplanar",
+              _c_coplanar, _v_det),
+    Invariant("incidence-3d", "incidence", "projective3", "a point on a plane maps to a point on the image plane",
+              _c_point_in_plane, _v_incidence),
+)
+
+
+def invariant(key: str) -> Invariant:
+    """The invariant with the given key.
+
+    >>> invariant("cross-ratio").cls
+    'projective2'
+    """
+    for inv in INVARIANTS:
+        if inv.key == key:
+            return inv
+    raise ObjectTypeError(f"no invariant {key!r}; known: {[i.key for i in INVARIANTS]}")
+
+
+def invariants_of(cls: TransformationClass | str, inherited: bool = True) -> list[Invariant]:
+    """The invariants of a class: its own and (``inherited``) those of every larger class.
+
+    >>> [i.key for i in invariants_of("affine2", inherited=False)]
+    ['parallelism', 'area-ratio', 'parallel-length-ratio', 'line-at-infinity']
+    """
+    key = cls if isinstance(cls, str) else cls.key
+    chain = [key]
+    while inherited and class_by_key(chain[-1]).larger is not None:
+        chain.append(class_by_key(chain[-1]).larger)  # type: ignore[arg-type]
+    return [inv for k in chain for inv in INVARIANTS if inv.cls == k]
+
+
+def summary_table(dim: int = 2) -> list[dict[str, Any]]:
+    """The rows of the hierarchy table (largest class first), generated from the DoF derivations and the proofs.
+
+    Each row: class name, matrix form (LaTeX), the derived DoF, the invariants *new* in the
+    class (each proved, and refuted in the next larger class by its counterexample), and the
+    number of invariants it has in all (with those of the larger classes).
+
+    >>> [(row["class"], row["dof"]) for row in summary_table(2)]
+    [('Projective', 8), ('Affine', 6), ('Similarity', 4), ('Isometry', 3), ('Euclidean (proper isometry)', 3)]
+    """
+    classes = CLASSES_2D if dim == 2 else CLASSES_3D
+    rows = []
+    for cls in reversed(classes):
+        own = []
+        for inv in invariants_of(cls, inherited=False):
+            proof = inv.prove()
+            ce = inv.counterexample()
+            if proof.holds and (ce is None or ce.fails):
+                own.append(inv.name)
+        rows.append({
+            "class": cls.name,
+            "matrix": cls.matrix_form,
+            "dof": cls.dof().dof,
+            "invariants": own,
+            "all": len([i for i in invariants_of(cls) if i.prove().holds]),
+        })
+    return rows
+
+
+def summary_markdown(dim: int = 2) -> str:
+    """The summary table as Markdown with LaTeX matrices (for a notebook's ``Markdown`` display).
+
+    >>> summary_markdown(3).splitlines()[0]
+    '| Class | Matrix | DoF | Invariants (plus those of the rows above) |'
+    """
+    lines = ["| Class | Matrix | DoF | Invariants (plus those of the rows above) |", "|---|---|---|---|"]
+    for row in summary_table(dim):
+        lines.append(f"| {row['class']} | ${row['matrix']}$ | {row['dof']} | {', '.join(row['invariants'])} |")
+    return "\n".join(lines)
+
+
+def _rational(x: Any) -> Rational:  # pragma: no cover - helper for interactive use
+    return Rational(x)

@@ -1,0 +1,76 @@
+"""The decomposition H = H_S H_A H_P: worked examples, random exact matrices, and when it does not exist."""
+
+from __future__ import annotations
+
+import pytest
+import sympy
+from hypothesis import assume, given, settings
+from hypothesis import strategies as st
+
+from pgsym.decomposition import decompose
+from pgsym.errors import DecompositionError, SingularTransformationError
+
+small = st.integers(min_value=-5, max_value=5)
+
+
+def test_affine_example_by_hand():
+    # H = [[2,1,1],[0,2,3],[0,0,1]]: v = 0 vector, corner 1, so H_P = I and M = A = [[2,1],[0,2]].
+    # MᵀM = [[4,2],[2,5]] = K'ᵀK' with K' = [[2,1],[0,2]]; det M = 4, s = 2, K = K'/2 = [[1,1/2],[0,1]],
+    # R = M K'^-1 = I.
+    d = decompose([[2, 1, 1], [0, 2, 3], [0, 0, 1]])
+    assert d.H_P == sympy.eye(3)
+    assert d.s == 2 and d.R == sympy.eye(2)
+    assert d.K == sympy.Matrix([[1, sympy.Rational(1, 2)], [0, 1]])
+    assert d.H_S == sympy.Matrix([[2, 0, 1], [0, 2, 3], [0, 0, 1]])
+    assert d.verify()
+
+
+def test_projective_example_by_hand():
+    # H = [[1,0,0],[0,1,0],[1,2,1]]: A = I, t = 0, v = (1, 2), corner 1: M = I, so H_S = H_A = I, H_P = H
+    d = decompose([[1, 0, 0], [0, 1, 0], [1, 2, 1]])
+    assert d.H_S == sympy.eye(3) and d.H_A == sympy.eye(3)
+    assert d.H_P == sympy.Matrix([[1, 0, 0], [0, 1, 0], [1, 2, 1]])
+
+
+def test_reflection_goes_into_r():
+    # diag(1, -1, 1): M = diag(1, -1), det M = -1 < 0, MᵀM = I so K = I, s = 1 and R = M (det R = -1)
+    d = decompose(sympy.diag(1, -1, 1))
+    assert d.R == sympy.diag(1, -1) and d.K == sympy.eye(2) and d.s == 1
+
+
+def test_general_3x3_with_radicals():
+    d = decompose([[2, 1, 1], [0, 2, 3], [1, 1, 3]])
+    assert d.verify()
+    assert any(e.has(sympy.sqrt(714)) for e in d.K)
+
+
+@settings(max_examples=12, deadline=None)
+@given(st.lists(small, min_size=9, max_size=9))
+def test_random_exact_matrices_decompose(entries):
+    M = sympy.Matrix(3, 3, entries)
+    assume(M.det() != 0 and M[2, 2] != 0)
+    d = decompose(M.tolist())
+    assert d.verify()
+    # K upper triangular with det 1; H_P carries the last row of H
+    assert d.H_P[2, :] == M[2, :]
+
+
+def test_a_4x4_example():
+    d = decompose([[2, 0, 1, 1], [1, 3, 0, 0], [0, 1, 1, 2], [1, 0, 0, 2]])
+    assert d.verify()
+
+
+def test_corner_entry_zero_has_no_decomposition():
+    with pytest.raises(DecompositionError, match="corner entry"):
+        decompose([[1, 0, 0], [0, 0, 1], [0, 1, 0]])
+
+
+def test_singular_matrix():
+    with pytest.raises(SingularTransformationError):
+        decompose([[1, 2, 3], [2, 4, 6], [1, 1, 1]])
+
+
+def test_symbolic_matrix_is_refused():
+    a = sympy.Symbol("a")
+    with pytest.raises(DecompositionError):
+        decompose([[a, 1, 0], [0, 1, 0], [0, 0, 1]])
