@@ -1,0 +1,276 @@
+"""Rectifying a planar image: from four points, from the vanishing line, from orthogonal lines.
+
+A photograph of a plane is related to a fronto-parallel view of that plane by a
+homography. This module computes rectifying homographies ``H`` (image → rectified
+plane) at three levels of knowledge about the world (Hartley & Zisserman, §2.7):
+
+- :func:`rectangle_homography`: four image points whose world positions are
+  the corners of a rectangle of known size — the full projective map (8 DoF).
+- :func:`affine_rectification`: two pairs of image lines that are parallel in the
+  world. Their intersections are two vanishing points; the line ``l`` through them
+  is the image of the line at infinity, and ``H_P = [[1,0,0],[0,1,0],[l1,l2,l3]]``
+  sends it back to ``(0, 0, 1)``. Parallel lines become parallel; angles and
+  length ratios in different directions remain distorted (an affinity).
+- :func:`metric_rectification`: additionally two pairs of lines orthogonal in
+  the world. In the affinely rectified image, the dual conic ``C*∞`` appears as
+  ``[[S, 0], [0ᵀ, 0]]`` with ``S = K Kᵀ`` symmetric positive definite; each
+  orthogonal pair ``(l, m)`` gives one linear equation ``(l1 m1, l1 m2 + l2 m1, l2 m2) · (s11, s12, s22) = 0``;
+  the upgrade is ``[[K, 0], [0ᵀ, 1]]⁻¹``. The result is the world up to a similarity.
+
+Lines are homogeneous 3-vectors ``(a, b, c)`` for ``a x + b y + c = 0`` in pixel
+coordinates; :func:`line_through` builds them from two points.
+
+>>> import numpy as np
+>>> H = rectangle_homography([[10, 10], [50, 12], [48, 40], [12, 38]], (101, 51))
+>>> (np.round(apply_homography(H, [[50, 12]]), 9) + 0.0).tolist()
+[[100.0, 0.0]]
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from typing import Any
+
+import numpy as np
+
+from ..errors import CoincidentLinesError, CoincidentPointsError, DegenerateConfigurationError, DimensionError
+from .homography import apply_homography, dlt_homography
+
+__all__ = [
+    "affine_rectification",
+    "apply_homography",
+    "fit_to_size",
+    "line_through",
+    "metric_rectification",
+    "metric_upgrade",
+    "rectangle_homography",
+    "transform_lines",
+    "vanishing_line",
+]
+
+
+def line_through(p: Sequence[float], q: Sequence[float]) -> np.ndarray:
+    """The line through two image points, ``(p, 1) × (q, 1)``, scaled to ``a² + b² = 1``.
+
+    >>> line_through((0, 1), (2, 1)).tolist()   # y = 1
+    [0.0, 1.0, -1.0]
+    """
+    a = np.array([p[0], p[1], 1.0], dtype=np.float64)
+    b = np.array([q[0], q[1], 1.0], dtype=np.float64)
+    l = np.cross(a, b)
+    n = float(np.hypot(l[0], l[1]))
+    if n == 0:
+        raise CoincidentPointsError(f"the points {tuple(p)} and {tuple(q)} coincide; they do not fix a line")
+    return l / n
+
+
+def _line(value: Any) -> np.ndarray:
+    l = np.asarray(value, dtype=np.float64)
+    if l.shape != (3,) or not np.isfinite(l).all():
+        raise DimensionError(f"a line is a homogeneous 3-vector (a, b, c), got {value!r}")
+    if not l[:2].any():
+        raise DegenerateConfigurationError("the line (0, 0, c) is the line at infinity (or zero), not an image line")
+    return l
+
+
+def _meet(l: np.ndarray, m: np.ndarray) -> np.ndarray:
+    v = np.cross(l, m)
+    if np.linalg.norm(v) <= 1e-12 * np.linalg.norm(l) * np.linalg.norm(m):
+        raise CoincidentLinesError(f"the lines {l.tolist()} and {m.tolist()} coincide; they have no single meet")
+    return v
+
+
+def vanishing_line(pair1: Sequence[Any], pair2: Sequence[Any]) -> np.ndarray:
+    """The image of the line at infinity from two pairs of lines parallel in the world.
+
+    ``v1 = l1 × l1'``, ``v2 = l2 × l2'`` are the vanishing points of the two
+    directions and ``l∞' = v1 × v2``; the result is scaled to unit norm.
+
+    >>> vanishing_line([[1, 0, 0], [1, 0, -1]], [[0, 1, 0], [0, 1, -1]]).tolist()   # parallel in the image too
+    [0.0, 0.0, 1.0]
+    """
+    l1, m1 = (_line(v) for v in pair1)
+    l2, m2 = (_line(v) for v in pair2)
+    v1 = _meet(l1, m1)
+    v2 = _meet(l2, m2)
+    v1 = v1 / np.linalg.norm(v1)
+    v2 = v2 / np.linalg.norm(v2)
+    l = np.cross(v1, v2)
+    n = np.linalg.norm(l)
+    if n <= 1e-12:
+        raise DegenerateConfigurationError(
+            "the two pairs of lines have the same vanishing point; they must have two different directions in the world"
+        )
+    l = l / n
+    return l * np.sign(l[np.argmax(np.abs(l))]) + 0.0
+
+
+def affine_rectification(line_at_infinity: Any, reference: Sequence[float] = (0.0, 0.0)) -> np.ndarray:
+    """The projective part ``H_P = [[1,0,0],[0,1,0],[l1,l2,l3]]`` that sends the vanishing line ``l`` to infinity.
+
+    ``l`` is scaled so that ``lᵀ(reference, 1) = 1``: the reference point (e.g. the
+    image centre) keeps its position and the scale near it is preserved.
+    Raises :class:`~pgsym.errors.DegenerateConfigurationError` if the reference
+    point lies on the vanishing line, or if ``l`` is the line at infinity already
+    (then the identity is the answer).
+
+    >>> H = affine_rectification([0.0, -0.01, 1.0])   # the horizon y = 100
+    >>> H.tolist()
+    [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, -0.01, 1.0]]
+    """
+    l = np.asarray(line_at_infinity, dtype=np.float64)
+    if l.shape != (3,) or not np.isfinite(l).all() or not l.any():
+        raise DimensionError(f"the vanishing line is a nonzero homogeneous 3-vector, got {line_at_infinity!r}")
+    value = l[0] * reference[0] + l[1] * reference[1] + l[2]
+    if abs(value) <= 1e-12 * np.linalg.norm(l) * max(1.0, float(np.hypot(*reference))):
+        raise DegenerateConfigurationError(
+            f"the reference point {tuple(reference)} lies on the vanishing line {l.tolist()}: the image of the "
+            "line at infinity must not pass through the part of the image you want to rectify"
+        )
+    l = l / value
+    H = np.eye(3)
+    H[2] = l
+    return H
+
+
+def transform_lines(H: Any, lines: Any) -> np.ndarray:
+    """Map lines (rows of an ``(n, 3)`` array) by the point homography ``H``: ``l' = H⁻ᵀ l``.
+
+    >>> transform_lines(np.diag([2.0, 1.0, 1.0]), [[1.0, 0.0, -1.0]]).tolist()   # x = 1 becomes x = 2
+    [[0.5, 0.0, -1.0]]
+    """
+    M = np.asarray(H, dtype=np.float64)
+    L = np.asarray(lines, dtype=np.float64).reshape(-1, 3)
+    return np.linalg.solve(M.T, L.T).T
+
+
+def metric_upgrade(orthogonal_pairs: Sequence[Any]) -> np.ndarray:
+    """The affine map ``[[K, 0], [0, 1]]⁻¹`` that makes an affinely rectified image metric.
+
+    ``orthogonal_pairs`` holds at least two pairs ``(l, m)`` of lines that are
+    orthogonal in the world, in the affinely rectified image, with different
+    directions. Each pair gives ``(l1 m1, l1 m2 + l2 m1, l2 m2) · (s11, s12, s22) = 0``;
+    the null vector gives ``S = [[s11, s12], [s12, s22]] = K Kᵀ`` (Cholesky factor ``K``).
+
+    >>> # a world square seen through the affinity x' = 2x: its sides and diagonals
+    >>> pairs = [([1, 0, 0], [0, 1, 0]), ([1, -2, 0], [1, 2, -2])]
+    >>> A = metric_upgrade(pairs)
+    >>> (np.round(A[:2, :2] / A[1, 1], 9) + 0.0).tolist()
+    [[0.5, 0.0], [0.0, 1.0]]
+    """
+    rows = []
+    for pair in orthogonal_pairs:
+        if len(pair) != 2:
+            raise DimensionError("each orthogonal pair must hold exactly two lines")
+        l, m = (_line(v) for v in pair)
+        l, m = l / np.hypot(l[0], l[1]), m / np.hypot(m[0], m[1])
+        rows.append([l[0] * m[0], l[0] * m[1] + l[1] * m[0], l[1] * m[1]])
+    if len(rows) < 2:
+        raise DimensionError(f"metric rectification needs at least two orthogonal line pairs, got {len(rows)}")
+    _, sv, Vt = np.linalg.svd(np.array(rows), full_matrices=True)
+    if len(sv) >= 2 and sv[1] <= 1e-9 * sv[0]:
+        raise DegenerateConfigurationError(
+            "the orthogonal line pairs give only one independent constraint: use pairs with different "
+            "directions (e.g. the sides and the diagonals of a square)"
+        )
+    s = Vt[-1]
+    S = np.array([[s[0], s[1]], [s[1], s[2]]])
+    if S[0, 0] < 0:
+        S = -S
+    if np.linalg.det(S) <= 1e-12 * np.trace(S) ** 2:
+        raise DegenerateConfigurationError(
+            "the orthogonal line pairs are inconsistent: the image of the dual conic C*∞ they give is not "
+            "positive definite (check that each pair really is orthogonal in the world, after affine rectification)"
+        )
+    S = S / np.sqrt(np.linalg.det(S))
+    K = np.linalg.cholesky(S)
+    A = np.eye(3)
+    A[:2, :2] = np.linalg.inv(K)
+    return A
+
+
+def metric_rectification(
+    parallel_pairs: Sequence[Any],
+    orthogonal_pairs: Sequence[Any],
+    reference: Sequence[float] = (0.0, 0.0),
+) -> np.ndarray:
+    """A rectifying homography up to a similarity: affine step from parallels, then metric step from right angles.
+
+    ``parallel_pairs`` are two pairs of image lines parallel in the world,
+    ``orthogonal_pairs`` two (or more) pairs of image lines orthogonal in the
+    world (all in the original image). Returns ``H = H_A⁻¹ H_P``.
+
+    >>> Hw = np.array([[1.0, 0.3, 0], [0.1, 1.2, 0], [0.001, 0.002, 1]])  # world → image
+    >>> img = lambda *pts: apply_homography(Hw, pts)
+    >>> a, b, c, d = img([0, 0], [100, 0], [100, 100], [0, 100])   # a world square
+    >>> sides = [(line_through(a, b), line_through(d, c)), (line_through(a, d), line_through(b, c))]
+    >>> right = [(line_through(a, b), line_through(a, d)), (line_through(a, c), line_through(b, d))]
+    >>> H = metric_rectification(sides, right, reference=a)
+    >>> r = apply_homography(H, [a, b, c, d])
+    >>> e1, e2 = r[1] - r[0], r[3] - r[0]
+    >>> round(float(e1 @ e2), 9), round(float(np.linalg.norm(e1) / np.linalg.norm(e2)), 9)
+    (0.0, 1.0)
+    """
+    if len(parallel_pairs) != 2:
+        raise DimensionError(
+            f"affine rectification needs exactly two pairs of parallel lines, got {len(parallel_pairs)}"
+        )
+    HP = affine_rectification(vanishing_line(*parallel_pairs), reference)
+    mapped = []
+    for pair in orthogonal_pairs:
+        if len(pair) != 2:
+            raise DimensionError("each orthogonal pair must hold exactly two lines")
+        mapped.append(tuple(transform_lines(HP, [_line(v)])[0] for v in pair))
+    return metric_upgrade(mapped) @ HP
+
+
+def rectangle_homography(image_points: Any, size: tuple[int, int]) -> np.ndarray:
+    """The homography sending four image points to the corners of a ``width × height`` output image.
+
+    The points are taken in the order top-left, top-right, bottom-right,
+    bottom-left of the world rectangle; they go to the outermost pixel centres
+    ``(0, 0)``, ``(W−1, 0)``, ``(W−1, H−1)``, ``(0, H−1)``. Three collinear points
+    raise :class:`~pgsym.errors.CollinearPointsError`.
+
+    >>> H = rectangle_homography([[0, 0], [9, 0], [9, 9], [0, 9]], (19, 10))
+    >>> (np.round(H / H[2, 2], 9) + 0.0).tolist()
+    [[2.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]]
+    """
+    w, h = (int(v) for v in size)
+    if w < 2 or h < 2:
+        raise DimensionError(f"the output rectangle needs at least 2×2 pixels, got {w}×{h}")
+    p = np.asarray(image_points, dtype=np.float64)
+    if p.shape != (4, 2):
+        raise DimensionError(f"rectification needs exactly four image points (x, y), got shape {p.shape}")
+    corners = np.array([[0, 0], [w - 1, 0], [w - 1, h - 1], [0, h - 1]], dtype=np.float64)
+    return dlt_homography(p, corners)
+
+
+def fit_to_size(H: Any, points: Any, size: tuple[int, int], margin: int = 0) -> np.ndarray:
+    """Compose ``H`` with a uniform scaling and translation so the mapped ``points`` fill ``size``, centred.
+
+    Used to frame an affinely or metrically rectified image: ``points`` (e.g. the
+    image corners or a region of interest) must map to finite points on one side
+    of the vanishing line, else :class:`~pgsym.errors.DegenerateConfigurationError`.
+
+    >>> H = fit_to_size(np.eye(3), [[0, 0], [10, 0], [10, 5], [0, 5]], (21, 21))
+    >>> apply_homography(H, [[0, 0], [10, 5]]).tolist()
+    [[0.0, 5.0], [20.0, 15.0]]
+    """
+    M = np.asarray(H, dtype=np.float64)
+    p = np.asarray(points, dtype=np.float64).reshape(-1, 2)
+    w_out, h_out = (int(v) for v in size)
+    hom = p @ M[:, :2].T + M[:, 2]
+    if not (np.all(hom[:, 2] > 0) or np.all(hom[:, 2] < 0)) or np.min(np.abs(hom[:, 2])) < 1e-12:
+        raise DegenerateConfigurationError(
+            "the vanishing line crosses the region to be shown: part of it would be mapped through infinity; "
+            "check the lines, or frame a smaller region"
+        )
+    q = hom[:, :2] / hom[:, 2:3]
+    lo, hi = q.min(axis=0), q.max(axis=0)
+    extent = np.maximum(hi - lo, 1e-300)
+    s = min((w_out - 1 - 2 * margin) / extent[0], (h_out - 1 - 2 * margin) / extent[1])
+    centre_out = np.array([(w_out - 1) / 2, (h_out - 1) / 2])
+    t = centre_out - s * (lo + hi) / 2
+    S = np.array([[s, 0, t[0]], [0, s, t[1]], [0, 0, 1.0]])
+    return S @ M
