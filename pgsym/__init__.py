@@ -35,6 +35,7 @@ from .errors import (
     NotOnQuadricError,
     NotSkewSymmetricError,
     ObjectTypeError,
+    OptionError,
     PgsymError,
     SingularTransformationError,
     UndefinedCrossRatioError,
@@ -149,7 +150,12 @@ if TYPE_CHECKING:  # pragma: no cover
     from .transformations import Transformation, adjugate, homography_from_points
 
 
+_SUBPACKAGES = ("numeric", "vision")
+
+
 def __getattr__(name: str) -> Any:
+    if name in _SUBPACKAGES:
+        return importlib.import_module(f".{name}", __name__)
     module = _LAZY.get(name)
     if module is None:
         raise AttributeError(f"module 'pgsym' has no attribute {name!r}")
@@ -159,7 +165,7 @@ def __getattr__(name: str) -> Any:
 
 
 def __dir__() -> list[str]:
-    return sorted(set(globals()) | set(_LAZY))
+    return sorted(set(globals()) | set(_LAZY) | set(_SUBPACKAGES))
 
 
 __all__ = [
@@ -198,6 +204,7 @@ __all__ = [
     "NotOnQuadricError",
     "NotSkewSymmetricError",
     "ObjectTypeError",
+    "OptionError",
     "PgsymError",
     "Plane",
     "Point",
@@ -239,6 +246,7 @@ __all__ = [
     "meet",
     "nullspace_exact",
     "nullspace_svd",
+    "numeric",
     "plane_at_infinity",
     "plane_through",
     "point_on_planes",

@@ -34,6 +34,7 @@ __all__ = [
     "NotOnQuadricError",
     "NotSkewSymmetricError",
     "ObjectTypeError",
+    "OptionError",
     "PgsymError",
     "SingularTransformationError",
     "UndefinedCrossRatioError",
@@ -137,3 +138,7 @@ class NotAPencilError(DegenerateConfigurationError):
 
 class NotOnConicError(DegenerateConfigurationError):
     """A point that must lie on a conic (e.g. for a tangent line) does not."""
+
+
+class OptionError(PgsymError, ValueError):
+    """A keyword option of a numeric function has a value it does not accept (e.g. ``ideal="skip"``)."""

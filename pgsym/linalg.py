@@ -356,5 +356,8 @@ def svd_steps(A: Any) -> SVDSteps:
     v = np.column_stack([v1, [-v1[1], v1[0]]])  # the second column makes V a rotation
     u = np.empty((2, 2))
     u[:, 0] = array @ v[:, 0] / s[0] if s[0] > tol else [1.0, 0.0]
-    u[:, 1] = array @ v[:, 1] / s[1] if s[1] > tol else [-u[1, 0], u[0, 0]]  # σ2 = 0: U a rotation too
+    # u2 is ±u1 turned by 90°; dividing A v2 by a small σ2 would lose orthogonality, so take only its sign
+    perpendicular = np.array([-u[1, 0], u[0, 0]])
+    flip = s[1] > tol and float(perpendicular @ (array @ v[:, 1])) < 0
+    u[:, 1] = -perpendicular if flip else perpendicular  # σ2 = 0: U a rotation too
     return SVDSteps(V=v, Sigma=np.diag(s), U=u)

@@ -1,0 +1,71 @@
+"""The numeric path: pgsym's constructions on float64 arrays of many points, lines and planes.
+
+Every function here takes arrays of shape ``(..., k)`` — the ``k`` homogeneous
+coordinates on the last axis, all other axes broadcasting — or, with ``axis=0``, the
+component-major layout ``(k, ...)``, which is the fastest. The formulas are those of
+the exact core (a cross product for join and meet in P², signed 3×3 minors in P³, the
+adjugate for lines, planes and conics), and the tests check each kernel against the
+exact result on the same integer data. Only NumPy is imported: ``import pgsym.numeric``
+does not import SymPy, and neither does any kernel call (the conversions
+:func:`to_array` / :func:`from_array` load the exact core when they run).
+
+Kernels run block by block over the rows, so that their scratch buffers stay in the
+processor cache; pass ``out=`` to reuse an output array.
+
+>>> import numpy as np
+>>> from pgsym import numeric as pn
+>>> lines = pn.join(np.array([[0.0, 0, 1], [0, 1, 1]]), np.array([[1.0, 1, 1], [1, 1, 1]]))
+>>> pn.dehomogenize(pn.meet(lines, [1.0, 0, -2]))     # where y = x and y = 1 cross x = 2
+array([[2., 2.],
+       [2., 1.]])
+"""
+
+from __future__ import annotations
+
+from ._arrays import CHUNK, OptionError
+from .convert import from_array, to_array
+from .homogeneous import dehomogenize, homogenize, is_ideal
+from .plane import cross, incident, is_zero_vector, join, meet
+from .plucker import klein_form, plucker_join, plucker_meet
+from .projective_line import bracket, cross_ratio, cross_ratio_homogeneous
+from .space import plane_through, point_on_planes, triple_cross
+from .transform import (
+    adjugate,
+    transform_conics,
+    transform_dual_conics,
+    transform_lines,
+    transform_planes,
+    transform_points,
+    transform_quadrics,
+)
+
+__all__ = [
+    "CHUNK",
+    "OptionError",
+    "adjugate",
+    "bracket",
+    "cross",
+    "cross_ratio",
+    "cross_ratio_homogeneous",
+    "dehomogenize",
+    "from_array",
+    "homogenize",
+    "incident",
+    "is_ideal",
+    "is_zero_vector",
+    "join",
+    "klein_form",
+    "meet",
+    "plane_through",
+    "plucker_join",
+    "plucker_meet",
+    "point_on_planes",
+    "to_array",
+    "transform_conics",
+    "transform_dual_conics",
+    "transform_lines",
+    "transform_planes",
+    "transform_points",
+    "transform_quadrics",
+    "triple_cross",
+]

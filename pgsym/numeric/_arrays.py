@@ -1,0 +1,151 @@
+"""Shared machinery of the numeric kernels: input checks and a cache-blocked row loop.
+
+Every kernel works on float64 arrays whose component axis (``axis``, the last one by
+default) holds the homogeneous coordinates; all other axes broadcast. The loop below
+walks over the rows in blocks of :data:`CHUNK` so that the few scratch buffers a formula
+needs stay in the processor cache: each block is read from memory once and written once,
+which keeps a kernel close to the memory-bandwidth floor instead of paying one memory pass
+per arithmetic operation.
+
+Only NumPy is imported here (and by every module of :mod:`pgsym.numeric` except the
+conversions, which import the exact core inside their functions).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Sequence
+from typing import Any
+
+import numpy as np
+
+from ..errors import DimensionError, NonNumericError, OptionError
+
+__all__ = ["CHUNK", "OptionError", "as_float_array", "rowwise"]
+
+CHUNK = 8192
+"""Rows per block: a few blocks of 8192 float64 triples fit in a typical L2 cache."""
+
+Kernel = Callable[[list[np.ndarray], np.ndarray, list[np.ndarray]], None]
+
+
+def check_option(value: str, allowed: Sequence[str], name: str, function: str) -> None:
+    """Raise :class:`OptionError` unless ``value`` is one of ``allowed``.
+
+    >>> check_option("raise", ("raise", "mask"), "ideal", "dehomogenize")
+    """
+    if value not in allowed:
+        choices = ", ".join(repr(a) for a in allowed)
+        raise OptionError(f"{function}: {name}={value!r} is not an option; use one of {choices}")
+
+
+def as_float_array(x: Any, name: str, function: str) -> np.ndarray:
+    """``x`` as a float64 ndarray (no copy when it already is one), or :class:`NonNumericError`.
+
+    >>> as_float_array([1, 2, 3], "p", "join").dtype
+    dtype('float64')
+    """
+    if isinstance(x, np.ndarray) and x.dtype == np.float64:
+        return x
+    try:
+        return np.asarray(x, dtype=np.float64)
+    except (TypeError, ValueError) as err:
+        raise NonNumericError(
+            f"{function}: {name} must be an array of real numbers, got {type(x).__name__}; "
+            "exact pgsym objects convert with pgsym.numeric.to_array"
+        ) from err
+
+
+def _move(a: np.ndarray, k: int, axis: int, name: str, function: str) -> np.ndarray:
+    if a.ndim == 0 or not -a.ndim <= axis < a.ndim or a.shape[axis] != k:
+        raise DimensionError(
+            f"{function}: {name} must have {k} homogeneous coordinates along axis {axis}, got an array of "
+            f"shape {a.shape}; pass axis=0 for a component-major ({k}, N) array"
+        )
+    return a if axis in (-1, a.ndim - 1) else np.moveaxis(a, axis, -1)
+
+
+def _flat(a: np.ndarray, k: int | None) -> np.ndarray | None:
+    """A (rows, k) or (rows,) view of ``a`` without copying, or None when that needs a copy."""
+    try:
+        return a.reshape((-1, k) if k is not None else (-1,), copy=False)
+    except ValueError:
+        return None
+
+
+def rowwise(
+    kernel: Kernel,
+    function: str,
+    inputs: Sequence[tuple[Any, int, str]],
+    k_out: int | None,
+    out: np.ndarray | None,
+    axis: int,
+    n_scratch: int,
+) -> np.ndarray:
+    """Run ``kernel`` over broadcast rows of ``inputs`` block by block, writing into ``out``.
+
+    ``inputs`` are ``(array, k, name)`` triples; ``k_out`` is the number of output
+    components (None for one scalar per row). The kernel receives the input blocks
+    (shape ``(n, k)``), the output block and ``n_scratch`` scratch vectors of length
+    ``n``; it indexes components with ``x[..., i]``. Returns ``out`` (allocated when None,
+    with its component axis at ``axis`` like the inputs).
+
+    >>> def add(ins, o, ws):
+    ...     np.add(ins[0], ins[1], out=o)
+    >>> rowwise(add, "add", [([1.0, 2.0], 2, "a"), ([[1.0, 1.0]] * 3, 2, "b")], 2, None, -1, 0)
+    array([[2., 3.],
+           [2., 3.],
+           [2., 3.]])
+    """
+    arrays = [_move(as_float_array(x, name, function), k, axis, name, function) for x, k, name in inputs]
+    batch = np.broadcast_shapes(*(a.shape[:-1] for a in arrays))
+    full = batch if k_out is None else (*batch, k_out)
+    if out is None:
+        if k_out is None or axis in (-1, len(full) - 1):
+            result = np.empty(full)
+            o = result
+        else:
+            shape = list(batch)
+            position = axis if axis >= 0 else len(full) + axis
+            shape.insert(position, k_out)
+            result = np.empty(shape)
+            o = np.moveaxis(result, position, -1)
+    else:
+        if not isinstance(out, np.ndarray) or out.dtype != np.float64 or not out.flags.writeable:
+            raise NonNumericError(f"{function}: out must be a writeable float64 ndarray, got {type(out).__name__}")
+        result = out
+        o = out if k_out is None else _move(out, k_out, axis, "out", function)
+        if o.shape != full:
+            raise DimensionError(
+                f"{function}: out has shape {out.shape}, but the result has shape {full} (component axis {axis})"
+            )
+        if any(np.may_share_memory(o, a) for a in arrays):  # formulas read inputs after writing outputs
+            tmp = rowwise(
+                kernel,
+                function,
+                [(a, a.shape[-1], n) for a, (_, _, n) in zip(arrays, inputs, strict=True)],
+                k_out,
+                None,
+                -1,
+                n_scratch,
+            )
+            np.copyto(o, tmp)
+            return result
+    views = [np.broadcast_to(a, (*batch, a.shape[-1])) for a in arrays]
+    if len(batch) == 0:
+        views, o_rows = [v[None] for v in views], o[None]
+    elif len(batch) == 1:
+        o_rows = o
+    else:
+        flat = [_flat(v, v.shape[-1]) for v in views]
+        o_rows = _flat(o, k_out)
+        if o_rows is None or any(f is None for f in flat):  # strides do not allow a flat view: one block
+            kernel(views, o, [np.empty(batch) for _ in range(n_scratch)])
+            return result
+        views = flat  # type: ignore[assignment]
+    rows = o_rows.shape[0]
+    block = min(CHUNK, rows)
+    scratch = [np.empty(block) for _ in range(n_scratch)]
+    for start in range(0, rows, block):
+        stop = min(start + block, rows)
+        kernel([v[start:stop] for v in views], o_rows[start:stop], [w[: stop - start] for w in scratch])
+    return result

@@ -1,0 +1,115 @@
+"""Join, meet and incidence in the projective plane P², on float64 arrays.
+
+The numeric twin of :mod:`pgsym.projective_plane`: the line through two points and
+the point on two lines are both the cross product, computed with the same formula as
+:func:`pgsym.projective_plane.cross`,
+
+    (u2 v3 − u3 v2,  u3 v1 − u1 v3,  u1 v2 − u2 v1).
+
+Arrays have shape ``(..., 3)`` (or ``(3, ...)`` with ``axis=0``) and broadcast. Nothing
+is normalised: the result is the raw cross product, exactly as in the exact core, so
+integer data gives the same numbers. Coincident inputs give the zero vector, which is
+no projective object; test for it with :func:`pgsym.numeric.is_zero_vector`.
+
+>>> import numpy as np
+>>> meet(np.array([[1.0, 0, -1], [1, -1, 0]]), np.array([0.0, 1, -2]))   # x = 1 and y = x, with y = 2
+array([[1., 2., 1.],
+       [2., 2., 1.]])
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+
+from ..errors import DimensionError
+from ._arrays import as_float_array, rowwise
+
+__all__ = ["cross", "incident", "is_zero_vector", "join", "meet"]
+
+_CYCLE = ((0, 1, 2), (1, 2, 0), (2, 0, 1))
+
+
+def _cross_kernel(ins: list[np.ndarray], o: np.ndarray, ws: list[np.ndarray]) -> None:
+    u, v = ins
+    t = ws[0]
+    for i, j, k in _CYCLE:  # o_i = u_j v_k − u_k v_j
+        oi = o[..., i]
+        np.multiply(u[..., j], v[..., k], out=oi)
+        np.multiply(u[..., k], v[..., j], out=t)
+        np.subtract(oi, t, out=oi)
+
+
+def cross(u: Any, v: Any, *, out: np.ndarray | None = None, axis: int = -1) -> np.ndarray:
+    """The cross products ``u × v`` of broadcast arrays of 3-vectors.
+
+    ``out`` (optional) receives the result; ``axis`` is the component axis (0 for a
+    component-major ``(3, N)`` layout, the fastest one).
+
+    >>> cross([1.0, 0, 0], [0.0, 1, 0])
+    array([0., 0., 1.])
+    >>> cross(np.array([[1.0, 0], [0, 1], [0, 0]]), np.array([[0.0, 0], [0, 0], [1, 1]]), axis=0)
+    array([[ 0.,  1.],
+           [-1.,  0.],
+           [ 0.,  0.]])
+    """
+    return rowwise(_cross_kernel, "cross", [(u, 3, "u"), (v, 3, "v")], 3, out, axis, 1)
+
+
+def join(p: Any, q: Any, *, out: np.ndarray | None = None, axis: int = -1) -> np.ndarray:
+    """The lines ``p × q`` through pairs of points of P² (the numeric :func:`pgsym.projective_plane.join`).
+
+    >>> join([0.0, 0, 1], [[1.0, 1, 1], [1, 0, 0]])   # y = x, and the x-axis through an ideal point
+    array([[-1.,  1.,  0.],
+           [ 0.,  1.,  0.]])
+    """
+    return rowwise(_cross_kernel, "join", [(p, 3, "p"), (q, 3, "q")], 3, out, axis, 1)
+
+
+def meet(l: Any, m: Any, *, out: np.ndarray | None = None, axis: int = -1) -> np.ndarray:
+    """The points ``l × m`` where pairs of lines of P² meet (the numeric :func:`pgsym.projective_plane.meet`).
+
+    Parallel lines meet in an ideal point (last coordinate 0):
+
+    >>> meet([1.0, -1, 0], [1.0, -1, 3])
+    array([-3., -3.,  0.])
+    """
+    return rowwise(_cross_kernel, "meet", [(l, 3, "l"), (m, 3, "m")], 3, out, axis, 1)
+
+
+def incident(x: Any, y: Any, *, rtol: float = 1e-10, axis: int = -1) -> np.ndarray:
+    """True where ``x`` and ``y`` are incident: ``|x · y| ≤ rtol |x| |y|``.
+
+    Works in any dimension: a point and a line of P², a point and a plane of P³. The test
+    is scale-invariant: it compares the cosine of the angle between the two coordinate
+    vectors with ``rtol``; ``rtol=0`` asks for an exact zero.
+
+    >>> incident([[1.0, 1, 1], [1, 2, 1]], [1.0, -1, 0])     # is the point on y = x?
+    array([ True, False])
+    >>> incident([1.0, 1, 1], [1.0, -1, 1e-12]), incident([1.0, 1, 1], [1.0, -1, 1e-12], rtol=0)
+    (array(True), array(False))
+    """
+    a = as_float_array(x, "x", "incident")
+    b = as_float_array(y, "y", "incident")
+    if a.ndim == 0 or b.ndim == 0 or a.shape[axis] != b.shape[axis]:
+        raise DimensionError(
+            f"incident: x and y need the same number of homogeneous coordinates along axis {axis}, "
+            f"got shapes {a.shape} and {b.shape}"
+        )
+    a, b = np.moveaxis(a, axis, -1), np.moveaxis(b, axis, -1)
+    dot = np.einsum("...i,...i->...", a, b)
+    bound = rtol * np.sqrt(np.einsum("...i,...i->...", a, a) * np.einsum("...i,...i->...", b, b))
+    return np.asarray(np.abs(dot) <= bound)
+
+
+def is_zero_vector(x: Any, *, atol: float = 0.0, axis: int = -1) -> np.ndarray:
+    """True where every coordinate is at most ``atol`` in size: no projective object.
+
+    A join of two coincident points (or a meet of two equal lines) is the zero vector.
+
+    >>> is_zero_vector(join([[1.0, 2, 1], [1, 2, 1]], [[2.0, 4, 2], [0, 0, 1]]))
+    array([ True, False])
+    """
+    a = np.moveaxis(as_float_array(x, "x", "is_zero_vector"), axis, -1)
+    return np.asarray(np.all(np.abs(a) <= atol, axis=-1))
