@@ -7,43 +7,16 @@ line with the response correlation with scikit-image (interior and mirror-padded
 
 from __future__ import annotations
 
-import json
-import time
-
 import cv2
 import numpy as np
 import skimage.data
 import skimage.feature
+from timing import paired_medians, report
 
 from pgsym.vision.harris import harris
 from pgsym.vision.images import to_float_image
 
 K, SIGMA = 0.05, 1.0
-
-
-def median_time(fn, repeat: int) -> float:
-    fn()
-    times = []
-    for _ in range(repeat):
-        t = time.perf_counter()
-        fn()
-        times.append(time.perf_counter() - t)
-    return float(np.median(times))
-
-
-def paired_medians(ours, baseline, repeat: int) -> tuple[float, float]:
-    """Median times of two functions run alternately, so that both see the same machine load."""
-    ours()
-    baseline()
-    a, b = [], []
-    for _ in range(repeat):
-        t = time.perf_counter()
-        ours()
-        a.append(time.perf_counter() - t)
-        t = time.perf_counter()
-        baseline()
-        b.append(time.perf_counter() - t)
-    return float(np.median(a)), float(np.median(b))
 
 
 def opencv_primitives(img: np.ndarray) -> np.ndarray:
@@ -60,18 +33,11 @@ def paired(name, ours, baseline, repeat):  # type: ignore[no-untyped-def]
     return a, name, b
 
 
-def report(name: str, ours: float, baseline: str, base: float) -> None:
-    print(json.dumps({"bench": name, "ours_s": round(ours, 6), "baseline": baseline,
-                      "baseline_s": round(base, 6), "ratio": round(base / ours, 3)}))
-
-
 def main() -> None:
     img = cv2.resize(to_float_image(skimage.data.camera()), (1024, 1024), interpolation=cv2.INTER_LINEAR)
     ours = lambda: harris(img, k=K, sigma=SIGMA)  # noqa: E731
     report("harris_1024", *paired("opencv_primitives", ours, lambda: opencv_primitives(img), 21))
     report("harris_1024", *paired("cv2.cornerHarris", ours, lambda: cv2.cornerHarris(img, 3, 3, K), 21))
-    report("harris_1024", *paired("skimage.corner_harris", ours,
-                                  lambda: skimage.feature.corner_harris(img, k=K, sigma=SIGMA), 9))
     r = harris(img, k=K, sigma=SIGMA).response
     sk = skimage.feature.corner_harris(img, k=K, sigma=SIGMA)
     b = int(np.ceil(4 * SIGMA)) + 2  # scikit-image pads with zeros; compare away from the border
@@ -79,9 +45,9 @@ def main() -> None:
     a = skimage.feature.structure_tensor(img, sigma=SIGMA, mode="mirror", order="rc")
     mirror = a[0] * a[2] - a[1] ** 2 - K * (a[0] + a[2]) ** 2
     whole = float(np.corrcoef(r.ravel(), mirror.ravel())[0, 1])
-    print(json.dumps({"bench": "harris_1024_correlation", "skimage_interior": round(interior, 9),
-                      "skimage_mirror_whole_image": round(whole, 9)}))
-
+    report("harris_1024", *paired("skimage.corner_harris", ours,
+                                  lambda: skimage.feature.corner_harris(img, k=K, sigma=SIGMA), 9),
+           response_correlation_interior=round(interior, 9), response_correlation_mirror=round(whole, 9))
 
 if __name__ == "__main__":
     main()

@@ -4,11 +4,9 @@ accuracy of both (reprojection error; fraction of four-point results off by more
 
 from __future__ import annotations
 
-import json
-import time
-
 import cv2
 import numpy as np
+from timing import paired_medians, report
 
 from pgsym.vision.homography import (
     apply_homography,
@@ -17,36 +15,6 @@ from pgsym.vision.homography import (
     normalize_homography,
     reprojection_error,
 )
-
-
-def median_time(fn, repeat: int) -> float:
-    fn()
-    times = []
-    for _ in range(repeat):
-        t = time.perf_counter()
-        fn()
-        times.append(time.perf_counter() - t)
-    return float(np.median(times))
-
-
-def paired_medians(ours, baseline, repeat: int) -> tuple[float, float]:
-    """Median times of two functions run alternately, so that both see the same machine load."""
-    ours()
-    baseline()
-    a, b = [], []
-    for _ in range(repeat):
-        t = time.perf_counter()
-        ours()
-        a.append(time.perf_counter() - t)
-        t = time.perf_counter()
-        baseline()
-        b.append(time.perf_counter() - t)
-    return float(np.median(a)), float(np.median(b))
-
-
-def report(name: str, ours: float, baseline: str, base: float, **extra) -> None:
-    print(json.dumps({"bench": name, "ours_s": round(ours, 7), "baseline": baseline, "baseline_s": round(base, 7),
-                      "ratio": round(base / ours, 3), **extra}))
 
 
 def four_point_problems(rng: np.random.Generator, n: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:

@@ -3,45 +3,13 @@ and the pure-NumPy reference against the same baseline."""
 
 from __future__ import annotations
 
-import json
-import time
-
 import cv2
 import numpy as np
 import skimage.data
+from timing import paired_medians, report
 
 from pgsym.vision.images import to_float_image
 from pgsym.vision.warp import warp, warp_numpy
-
-
-def median_time(fn, repeat: int) -> float:
-    fn()
-    times = []
-    for _ in range(repeat):
-        t = time.perf_counter()
-        fn()
-        times.append(time.perf_counter() - t)
-    return float(np.median(times))
-
-
-def paired_medians(ours, baseline, repeat: int) -> tuple[float, float]:
-    """Median times of two functions run alternately, so that both see the same machine load."""
-    ours()
-    baseline()
-    a, b = [], []
-    for _ in range(repeat):
-        t = time.perf_counter()
-        ours()
-        a.append(time.perf_counter() - t)
-        t = time.perf_counter()
-        baseline()
-        b.append(time.perf_counter() - t)
-    return float(np.median(a)), float(np.median(b))
-
-
-def report(name: str, ours: float, baseline: str, base: float) -> None:
-    print(json.dumps({"bench": name, "ours_s": round(ours, 6), "baseline": baseline,
-                      "baseline_s": round(base, 6), "ratio": round(base / ours, 3)}))
 
 
 def main() -> None:
