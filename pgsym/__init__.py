@@ -29,6 +29,7 @@ from .errors import (
     ImageError,
     InvalidCoordinatesError,
     NonNumericError,
+    NonPolynomialClaimError,
     NotAPencilError,
     NotOnConicError,
     NotOnKleinQuadricError,
@@ -38,7 +39,9 @@ from .errors import (
     OptionError,
     PgsymError,
     SingularTransformationError,
+    UndefinedConstructionError,
     UndefinedCrossRatioError,
+    UnknownClaimError,
     UnparsableAnswerError,
     ZeroCoordinateError,
     ZeroVectorError,
@@ -47,6 +50,8 @@ from .errors import (
 __version__ = "0.1.0"
 
 _LAZY: dict[str, str] = {
+    "Claim": "proofs",
+    "Verdict": "proofs",
     "Transformation": "transformations",
     "adjugate": "transformations",
     "homography_from_points": "transformations",
@@ -145,6 +150,8 @@ if TYPE_CHECKING:  # pragma: no cover
         line_at_infinity,
         meet,
     )
+    from .proofs import Claim, Verdict
+    from .proofs import prove as prove_claim
     from .quadrics import Quadric
     from .space import Plane, Point3, coplanar, plane_at_infinity, plane_through, point_on_planes
     from .transformations import Transformation, adjugate, homography_from_points
@@ -156,6 +163,8 @@ _SUBPACKAGES = ("numeric", "vision")
 def __getattr__(name: str) -> Any:
     if name in _SUBPACKAGES:
         return importlib.import_module(f".{name}", __name__)
+    if name == "prove_claim":  # `prove` would be too generic a top-level name
+        return importlib.import_module(".proofs", __name__).prove
     module = _LAZY.get(name)
     if module is None:
         raise AttributeError(f"module 'pgsym' has no attribute {name!r}")
@@ -165,7 +174,7 @@ def __getattr__(name: str) -> Any:
 
 
 def __dir__() -> list[str]:
-    return sorted(set(globals()) | set(_LAZY) | set(_SUBPACKAGES))
+    return sorted(set(globals()) | set(_LAZY) | set(_SUBPACKAGES) | {"prove_claim"})
 
 
 __all__ = [
@@ -181,6 +190,7 @@ __all__ = [
     "PROJECTIVE_3D",
     "SIMILARITY_2D",
     "SIMILARITY_3D",
+    "Claim",
     "CoincidentLinesError",
     "CoincidentPointsError",
     "CollinearPointsError",
@@ -198,6 +208,7 @@ __all__ = [
     "Line",
     "Line3",
     "NonNumericError",
+    "NonPolynomialClaimError",
     "NotAPencilError",
     "NotOnConicError",
     "NotOnKleinQuadricError",
@@ -214,8 +225,11 @@ __all__ = [
     "Quadric",
     "SingularTransformationError",
     "Transformation",
+    "UndefinedConstructionError",
     "UndefinedCrossRatioError",
+    "UnknownClaimError",
     "UnparsableAnswerError",
+    "Verdict",
     "ZeroCoordinateError",
     "ZeroVectorError",
     "__version__",
@@ -250,6 +264,7 @@ __all__ = [
     "plane_at_infinity",
     "plane_through",
     "point_on_planes",
+    "prove_claim",
     "rank_exact",
     "reciprocal_product",
     "rotation_2d",

@@ -106,15 +106,14 @@ def meet_command(l: tuple[Fraction, ...], m: tuple[Fraction, ...]) -> None:
     _run(lambda: meet(Line(*l), Line(*m)))
 
 
-# The vision commands; their module imports NumPy and OpenCV only when a command runs.
+# The vision, proof and instructor commands import their heavy modules only when they run.
+from .prove_cli import prove_command  # noqa: E402
 from .vision_cli import harris_command, rectify_command  # noqa: E402
 
 main.add_command(harris_command)
 main.add_command(rectify_command)
+main.add_command(prove_command)
 
 
 if __name__ == "__main__":  # pragma: no cover
     main()
-from .prove_cli import prove_command  # noqa: E402
-
-main.add_command(prove_command)

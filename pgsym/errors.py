@@ -28,6 +28,7 @@ __all__ = [
     "ImageError",
     "InvalidCoordinatesError",
     "NonNumericError",
+    "NonPolynomialClaimError",
     "NotAPencilError",
     "NotOnConicError",
     "NotOnKleinQuadricError",
@@ -37,7 +38,9 @@ __all__ = [
     "OptionError",
     "PgsymError",
     "SingularTransformationError",
+    "UndefinedConstructionError",
     "UndefinedCrossRatioError",
+    "UnknownClaimError",
     "UnparsableAnswerError",
     "ZeroCoordinateError",
     "ZeroVectorError",
@@ -142,3 +145,15 @@ class NotOnConicError(DegenerateConfigurationError):
 
 class OptionError(PgsymError, ValueError):
     """A keyword option of a numeric function has a value it does not accept (e.g. ``ideal="skip"``)."""
+
+
+class NonPolynomialClaimError(InvalidCoordinatesError):
+    """A coordinate, hypothesis or conclusion is not a polynomial in the claim's parameters."""
+
+
+class UndefinedConstructionError(ObjectTypeError):
+    """A construction refers to an object or an operation the claim does not define."""
+
+
+class UnknownClaimError(UndefinedConstructionError):
+    """No claim of that name is in the catalogue."""

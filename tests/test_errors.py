@@ -71,3 +71,12 @@ def test_symbolic_coincidence_is_detected_identically():
     a, b = sympy.symbols("a b")
     with pytest.raises(CoincidentPointsError):
         join(Point(a, b), Point(2 * a, 2 * b, 2))
+
+
+def test_every_error_class_is_exported_at_the_top_level():
+    import pgsym
+    import pgsym.errors
+
+    assert set(pgsym.errors.__all__) <= set(pgsym.__all__)
+    for name in pgsym.errors.__all__:
+        assert issubclass(getattr(pgsym, name), PgsymError)

@@ -1,0 +1,167 @@
+"""Exact formulas written once for every kind of scalar.
+
+The proof engine evaluates the same construction with three kinds of numbers:
+polynomials of a SymPy ring (the certificate), integers modulo a large prime (the
+fast random pass) and exact fractions (counterexamples). The functions below use
+only ``+``, ``-`` and ``*``, so they work unchanged for all three.
+
+>>> cross((1, 0, 0), (0, 1, 0))
+(0, 0, 1)
+>>> det([[1, 2], [3, 4]])
+-2
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from itertools import combinations
+from typing import Any
+
+__all__ = [
+    "adjugate",
+    "cross",
+    "det",
+    "dot",
+    "matmul",
+    "matvec",
+    "minors",
+    "plane_through",
+    "transpose",
+    "wedge",
+]
+
+Vector = tuple[Any, ...]
+Matrix = tuple[tuple[Any, ...], ...]
+
+
+def _sum(terms: Sequence[Any]) -> Any:
+    total = terms[0]
+    for term in terms[1:]:
+        total = total + term
+    return total
+
+
+def dot(u: Sequence[Any], v: Sequence[Any]) -> Any:
+    """The bilinear pairing ``uᵀv`` (incidence of a point and a line or plane).
+
+    >>> dot((1, 2, 3), (4, 5, 6))
+    32
+    """
+    return _sum([a * b for a, b in zip(u, v, strict=True)])
+
+
+def cross(u: Sequence[Any], v: Sequence[Any]) -> Vector:
+    """The cross product ``u × v`` of two 3-vectors: the join of two points, the meet of two lines.
+
+    >>> cross((1, 2, 1), (3, 4, 1))
+    (-2, 2, -2)
+    """
+    return (u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0])
+
+
+def det(rows: Sequence[Sequence[Any]]) -> Any:
+    """The determinant by expansion along the first row (exact; meant for n ≤ 6).
+
+    >>> det([[2, 0, 0], [0, 3, 0], [0, 0, 4]])
+    24
+    """
+    n = len(rows)
+    if n == 1:
+        return rows[0][0]
+    if n == 2:
+        return rows[0][0] * rows[1][1] - rows[0][1] * rows[1][0]
+    terms = []
+    for j in range(n):
+        sub = [row[:j] + row[j + 1 :] for row in (tuple(r) for r in rows[1:])]
+        term = rows[0][j] * det(sub)
+        terms.append(term if j % 2 == 0 else -term)
+    return _sum(terms)
+
+
+def transpose(m: Sequence[Sequence[Any]]) -> Matrix:
+    """The transposed matrix.
+
+    >>> transpose([[1, 2], [3, 4]])
+    ((1, 3), (2, 4))
+    """
+    return tuple(zip(*m, strict=True))
+
+
+def matvec(m: Sequence[Sequence[Any]], v: Sequence[Any]) -> Vector:
+    """The product ``M v``.
+
+    >>> matvec([[1, 1], [0, 1]], (2, 3))
+    (5, 3)
+    """
+    return tuple(dot(row, v) for row in m)
+
+
+def matmul(a: Sequence[Sequence[Any]], b: Sequence[Sequence[Any]]) -> Matrix:
+    """The product ``A B``.
+
+    >>> matmul([[1, 1], [0, 1]], [[1, 0], [2, 1]])
+    ((3, 1), (2, 1))
+    """
+    cols = transpose(b)
+    return tuple(tuple(dot(row, col) for col in cols) for row in a)
+
+
+def adjugate(m: Sequence[Sequence[Any]]) -> Matrix:
+    """The adjugate ``adj(M)`` with ``M adj(M) = det(M) I``: an inverse up to scale, without division.
+
+    >>> adjugate([[1, 2], [3, 4]])
+    ((4, -2), (-3, 1))
+    """
+    n = len(m)
+    rows = [tuple(r) for r in m]
+    if n == 1:
+        return ((1,),)
+    cof = []
+    for i in range(n):
+        row = []
+        for j in range(n):
+            sub = [r[:j] + r[j + 1 :] for k, r in enumerate(rows) if k != i]
+            c = det(sub)
+            row.append(c if (i + j) % 2 == 0 else -c)
+        cof.append(tuple(row))
+    return transpose(cof)
+
+
+def plane_through(a: Sequence[Any], b: Sequence[Any], c: Sequence[Any]) -> Vector:
+    """The plane through three points of P³: the signed 3×3 minors of the matrix with rows a, b, c.
+
+    It satisfies ``πᵀx = det[x a b c]`` for every x (cofactor expansion along the first row).
+
+    >>> plane_through((0, 0, 0, 1), (1, 0, 0, 1), (0, 1, 0, 1))
+    (0, 0, 1, 0)
+    """
+    rows = (tuple(a), tuple(b), tuple(c))
+    out = []
+    for j in range(4):
+        sub = [r[:j] + r[j + 1 :] for r in rows]
+        d = det(sub)
+        out.append(d if j % 2 == 0 else -d)
+    return tuple(out)
+
+
+def wedge(a: Sequence[Any], b: Sequence[Any]) -> Matrix:
+    """The Plücker matrix ``A Bᵀ − B Aᵀ`` of the line through two points of P³ (4×4, skew).
+
+    >>> wedge((1, 0, 0, 0), (0, 1, 0, 0))[0]
+    (0, 1, 0, 0)
+    """
+    return tuple(tuple(a[i] * b[j] - b[i] * a[j] for j in range(4)) for i in range(4))
+
+
+def minors(m: Sequence[Sequence[Any]], k: int) -> list[tuple[tuple[int, ...], tuple[int, ...], Any]]:
+    """Every k×k minor of ``m`` as ``(rows, columns, value)``.
+
+    >>> [value for _, _, value in minors([[1, 2], [2, 4]], 2)]
+    [0]
+    """
+    rows = [tuple(r) for r in m]
+    out = []
+    for rs in combinations(range(len(rows)), k):
+        for cs in combinations(range(len(rows[0])), k):
+            out.append((rs, cs, det([[rows[i][j] for j in cs] for i in rs])))
+    return out

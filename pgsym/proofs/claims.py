@@ -1,0 +1,542 @@
+"""Claims: free parameters, constructions, hypotheses and a conclusion.
+
+A :class:`Claim` is a small geometric program. Free objects have coordinates that
+are polynomials in the claim's parameters (SymPy symbols); every further object is
+built from earlier ones by one of pgsym's operations (join, meet, plane through
+three points, Plücker matrix, a transformation acting on a point or a line, …).
+Each construction records the non-degeneracy condition it needs, e.g. ``A ≠ B``
+for a join, because the cross product vanishes exactly when the points coincide.
+The conclusion is a list of polynomials that must vanish (an incidence, a
+collinearity, an equality up to scale, a matrix identity, a rank condition, …).
+
+>>> c = Claim("demo", "the join of A and B contains A")
+>>> A, B = c.free_point("A"), c.free_point("B")
+>>> l = c.join("l", A, B)
+>>> c.conclude_incident(A, l)
+>>> [n.name for n in c.nodes.values()], c.conditions_text()
+(['A', 'B', 'l'], ['A ≠ B'])
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass, field
+from typing import Any
+
+import sympy
+
+from ..errors import NonPolynomialClaimError, ObjectTypeError, UndefinedConstructionError
+from . import algebra as alg
+
+__all__ = [
+    "KINDS",
+    "Claim",
+    "Conclusion",
+    "Node",
+    "NonPolynomialClaimError",
+    "UndefinedConstructionError",
+]
+
+
+
+
+#: kind of object -> number of homogeneous coordinates (None for matrices and scalars)
+KINDS: dict[str, int | None] = {
+    "point1": 2,
+    "point": 3,
+    "line": 3,
+    "point3": 4,
+    "plane": 4,
+    "line3": None,
+    "conic": None,
+    "matrix": None,
+    "scalar": None,
+    "ratio": None,
+}
+
+_VECTOR_KINDS = ("point1", "point", "line", "point3", "plane")
+
+
+@dataclass(eq=False)
+class Node:
+    """One object of a claim: its name, kind, the operation that built it and its arguments."""
+
+    name: str
+    kind: str
+    op: str
+    args: tuple[Any, ...]
+    description: str = ""
+    data: Any = None
+    conditions: list[str] = field(default_factory=list)
+
+    def __repr__(self) -> str:
+        return f"<{self.kind} {self.name} = {self.description}>"
+
+
+@dataclass
+class Conclusion:
+    """What must hold: ``kind`` (incident, collinear, …), its nodes and a readable statement."""
+
+    kind: str
+    args: tuple[Any, ...]
+    text: str
+
+
+def _polynomial(expr: Any, params: Sequence[sympy.Symbol], what: str) -> sympy.Expr:
+    """Check that ``expr`` is a polynomial over ℚ in ``params``; return it as a SymPy expression."""
+    try:
+        e = sympy.sympify(expr)
+    except (sympy.SympifyError, TypeError) as err:
+        raise NonPolynomialClaimError(f"{what}: {expr!r} is not an expression ({err})") from None
+    if not isinstance(e, sympy.Expr):
+        raise NonPolynomialClaimError(f"{what}: {expr!r} is not a number or an expression in the parameters")
+    extra = e.free_symbols - set(params)
+    if extra:
+        names = ", ".join(sorted(map(str, extra)))
+        raise NonPolynomialClaimError(
+            f"{what}: {e} uses {names}, which are not parameters of the claim; declare them with claim.params()"
+        )
+    if e.is_Rational or e in params:
+        return e
+    bad_numbers = any(not a.is_Rational for a in e.atoms(sympy.Number)) or e.atoms(sympy.NumberSymbol, sympy.I)
+    bad_powers = any(not (p.exp.is_Integer and p.exp >= 0) for p in e.atoms(sympy.Pow))
+    if bad_numbers or bad_powers or not e.is_polynomial(*params):
+        raise NonPolynomialClaimError(
+            f"{what}: {e} is not a polynomial with rational coefficients in the parameters; "
+            "multiply out denominators (compare a/b = c/d as a*d - b*c = 0, or use conclude_equal_ratio) "
+            "and avoid roots and transcendental functions"
+        )
+    return e
+
+
+class Claim:
+    """A statement of projective geometry to be proved for generic values of its parameters.
+
+    Build it with the ``free_*`` methods (free objects), the construction methods
+    (``join``, ``meet``, ``apply``, …), optional equation hypotheses
+    (:meth:`assume_zero`) and one or more ``conclude_*`` calls; then pass it to
+    :func:`pgsym.proofs.engine.prove`. ``expected`` records whether the catalogue
+    states the claim as true (``True``) or as a deliberate false statement.
+
+    >>> c = Claim("parallel", "parallel lines meet at infinity")
+    >>> a, b, p, q = c.params("a b p q")
+    >>> l, m = c.line("l", a, b, p), c.line("m", a, b, q)
+    >>> x = c.meet("x", l, m)
+    >>> c.conclude_incident(x, c.line("linf", 0, 0, 1))
+    >>> len(c.conclusions), c.conditions_text()
+    (1, ['l ≠ m'])
+    """
+
+    def __init__(
+        self,
+        name: str,
+        title: str,
+        statement: str = "",
+        *,
+        expected: bool = True,
+        chapter: str = "",
+        method_note: str = "",
+    ) -> None:
+        self.name = name
+        self.title = title
+        self.statement = statement or title
+        self.expected = expected
+        self.chapter = chapter
+        self.method_note = method_note
+        self.parameters: list[sympy.Symbol] = []
+        self.nodes: dict[str, Node] = {}
+        self.hypotheses: list[tuple[sympy.Expr, str]] = []
+        self.conclusions: list[Conclusion] = []
+
+    def __repr__(self) -> str:
+        return f"Claim({self.name!r}, {self.title!r})"
+
+    # -- parameters and free objects -----------------------------------------------
+    def params(self, names: str) -> tuple[sympy.Symbol, ...]:
+        """Declare free parameters (space-separated names); returns the symbols.
+
+        >>> Claim("x", "x").params("s t")
+        (s, t)
+        """
+        syms = sympy.symbols(names, seq=True)
+        for s in syms:
+            if s not in self.parameters:
+                self.parameters.append(s)
+        return tuple(syms)
+
+    def _node(self, name: str, kind: str, op: str, args: tuple[Any, ...], description: str,
+              data: Any = None, conditions: Sequence[str] = ()) -> Node:
+        if not isinstance(name, str) or not name:
+            raise ObjectTypeError(f"every object of a claim needs a nonempty name, got {name!r}")
+        if name in self.nodes:
+            raise ObjectTypeError(f"claim {self.name!r} already has an object named {name!r}; choose another name")
+        node = Node(name, kind, op, args, description, data, list(conditions))
+        self.nodes[name] = node
+        return node
+
+    def _free(self, name: str, kind: str, coords: Sequence[Any]) -> Node:
+        size = KINDS[kind]
+        if size is not None and len(coords) != size:
+            raise ObjectTypeError(f"a {kind} needs {size} coordinates, got {len(coords)} for {name!r}")
+        exprs = tuple(_polynomial(c, self.parameters, f"coordinate of {name}") for c in coords)
+        if all(e == 0 for e in exprs):
+            raise ObjectTypeError(f"{name!r} has only zero coordinates, which is no {kind}")
+        text = "(" + ", ".join(map(str, exprs)) + ")"
+        return self._node(name, kind, "free", (), text, exprs)
+
+    def point(self, name: str, *coords: Any) -> Node:
+        """A point of P² with given coordinates (2 inhomogeneous or 3 homogeneous).
+
+        >>> Claim("x", "x").point("P", 1, 2).data
+        (1, 2, 1)
+        """
+        return self._free(name, "point", coords if len(coords) != 2 else (*coords, 1))
+
+    def line(self, name: str, *coords: Any) -> Node:
+        """A line ``ax + by + c = 0`` of P² with given coefficients.
+
+        >>> Claim("x", "x").line("l", 0, 0, 1).description
+        '(0, 0, 1)'
+        """
+        return self._free(name, "line", coords)
+
+    def point1(self, name: str, *coords: Any) -> Node:
+        """A point of P¹ (one inhomogeneous or two homogeneous coordinates)."""
+        return self._free(name, "point1", coords if len(coords) != 1 else (*coords, 1))
+
+    def point3(self, name: str, *coords: Any) -> Node:
+        """A point of P³ (3 inhomogeneous or 4 homogeneous coordinates)."""
+        return self._free(name, "point3", coords if len(coords) != 3 else (*coords, 1))
+
+    def plane(self, name: str, *coords: Any) -> Node:
+        """A plane ``ax + by + cz + d = 0`` of P³."""
+        return self._free(name, "plane", coords)
+
+    def matrix(self, name: str, rows: Any, *, invertible: bool = False) -> Node:
+        """A matrix with given entries; ``invertible`` records ``det ≠ 0`` as a condition."""
+        m = sympy.Matrix(rows)
+        exprs = tuple(tuple(_polynomial(e, self.parameters, f"entry of {name}") for e in m.row(i))
+                      for i in range(m.rows))
+        node = self._node(name, "matrix", "free", (), f"{m.rows}×{m.cols} matrix", exprs)
+        if invertible:
+            node.conditions.append(f"{name} is non-singular (det {name} ≠ 0)")
+        return node
+
+    def conic(self, name: str, rows: Any) -> Node:
+        """A conic given by its symmetric 3×3 matrix."""
+        node = self.matrix(name, rows)
+        node.kind = "conic"
+        node.description = "conic"
+        return node
+
+    def free_point(self, name: str, homogeneous: bool = False) -> Node:
+        """A generic point of P² whose coordinates are new parameters (``A_x``, ``A_y`` [, ``A_w``]).
+
+        >>> Claim("x", "x").free_point("A").data
+        (A_x, A_y, 1)
+        """
+        names = ("x", "y", "w") if homogeneous else ("x", "y")
+        syms = self.params(" ".join(f"{name}_{n}" for n in names))
+        return self.point(name, *syms)
+
+    def free_line(self, name: str) -> Node:
+        """A generic line of P² with new parameters ``l_a, l_b, l_c``."""
+        return self.line(name, *self.params(f"{name}_a {name}_b {name}_c"))
+
+    def free_point1(self, name: str) -> Node:
+        """A generic finite point of P¹ with one new parameter (its name in lower case)."""
+        return self.point1(name, *self.params(name.lower()))
+
+    def free_point3(self, name: str) -> Node:
+        """A generic finite point of P³ with new parameters ``A_x, A_y, A_z``."""
+        return self.point3(name, *self.params(f"{name}_x {name}_y {name}_z"))
+
+    def free_plane(self, name: str) -> Node:
+        """A generic plane of P³ with new parameters."""
+        return self.plane(name, *self.params(f"{name}_a {name}_b {name}_c {name}_d"))
+
+    def free_matrix(self, name: str, n: int, m: int | None = None, *, invertible: bool = True) -> Node:
+        """A generic n×m matrix with new parameters ``h11 … hnm`` (prefix: the name in lower case)."""
+        m = n if m is None else m
+        prefix = name.lower()
+        syms = self.params(" ".join(f"{prefix}{i}{j}" for i in range(1, n + 1) for j in range(1, m + 1)))
+        rows = [syms[i * m:(i + 1) * m] for i in range(n)]
+        return self.matrix(name, rows, invertible=invertible and n == m)
+
+    # -- constructions ----------------------------------------------------------------
+    def _get(self, obj: Any, kinds: Sequence[str], operation: str) -> Node:
+        if isinstance(obj, str):
+            if obj not in self.nodes:
+                raise UndefinedConstructionError(
+                    f"{operation}: claim {self.name!r} has no object named {obj!r}; "
+                    f"define it first (known: {', '.join(self.nodes) or 'none'})"
+                )
+            obj = self.nodes[obj]
+        if not isinstance(obj, Node) or self.nodes.get(obj.name) is not obj:
+            raise UndefinedConstructionError(
+                f"{operation}: {obj!r} is not an object of claim {self.name!r}; build it with this claim's methods"
+            )
+        if kinds and obj.kind not in kinds:
+            raise ObjectTypeError(f"{operation} expects {' or '.join(kinds)}, got the {obj.kind} {obj.name}")
+        return obj
+
+    def construct(self, op: str, name: str, *args: Any) -> Node:
+        """Build an object by the name of its operation, e.g. ``construct("join", "l", A, B)``.
+
+        >>> c = Claim("x", "x")
+        >>> c.construct("frobnicate", "z")
+        Traceback (most recent call last):
+        ...
+        pgsym.errors.UndefinedConstructionError: unknown construction 'frobnicate'; ...
+        """
+        methods = {"join", "meet", "combine", "plane_through", "point_on_planes", "line3", "apply", "apply_line",
+                   "apply_plane", "apply_conic", "polar", "conic_through", "dual_conic", "cross_ratio",
+                   "harmonic_conjugate", "formula"}
+        if op not in methods:
+            raise UndefinedConstructionError(
+                f"unknown construction {op!r}; the operations are: {', '.join(sorted(methods))}"
+            )
+        return getattr(self, op)(name, *args)
+
+    def join(self, name: str, p: Any, q: Any) -> Node:
+        """The line through two points of P² (their cross product); needs ``P ≠ Q``.
+
+        >>> c = Claim("x", "x")
+        >>> c.join("l", c.free_point("P"), c.free_point("Q")).conditions
+        ['P ≠ Q']
+        """
+        p, q = self._get(p, ("point",), "join"), self._get(q, ("point",), "join")
+        return self._node(name, "line", "join", (p, q), f"{p.name} × {q.name}", conditions=[f"{p.name} ≠ {q.name}"])
+
+    def meet(self, name: str, l: Any, m: Any) -> Node:
+        """The point common to two lines of P² (their cross product); needs ``l ≠ m``.
+
+        >>> c = Claim("x", "x")
+        >>> c.meet("X", c.free_line("l"), c.free_line("m")).kind
+        'point'
+        """
+        l, m = self._get(l, ("line",), "meet"), self._get(m, ("line",), "meet")
+        return self._node(name, "point", "meet", (l, m), f"{l.name} × {m.name}", conditions=[f"{l.name} ≠ {m.name}"])
+
+    def combine(self, name: str, p: Any, q: Any, s: Any, t: Any = 1) -> Node:
+        """The point (or line, plane) ``s·P + t·Q``: a generic point on the line PQ for a parameter s."""
+        p = self._get(p, _VECTOR_KINDS, "combine")
+        q = self._get(q, (p.kind,), "combine")
+        s = _polynomial(s, self.parameters, f"coefficient of {name}")
+        t = _polynomial(t, self.parameters, f"coefficient of {name}")
+        return self._node(name, p.kind, "combine", (p, q), f"{s}·{p.name} + {t}·{q.name}", (s, t),
+                          [f"{name} is not the zero vector ({p.name} ≠ {q.name})"])
+
+    def plane_through(self, name: str, a: Any, b: Any, c: Any) -> Node:
+        """The plane through three points of P³; needs them not collinear."""
+        a, b, c = (self._get(x, ("point3",), "plane_through") for x in (a, b, c))
+        return self._node(name, "plane", "plane_through", (a, b, c), f"plane({a.name}, {b.name}, {c.name})",
+                          conditions=[f"{a.name}, {b.name}, {c.name} are not collinear"])
+
+    def point_on_planes(self, name: str, a: Any, b: Any, c: Any) -> Node:
+        """The point common to three planes of P³; needs them independent."""
+        a, b, c = (self._get(x, ("plane",), "point_on_planes") for x in (a, b, c))
+        return self._node(name, "point3", "point_on_planes", (a, b, c), f"point({a.name}, {b.name}, {c.name})",
+                          conditions=[f"{a.name}, {b.name}, {c.name} do not share a line"])
+
+    def line3(self, name: str, a: Any, b: Any) -> Node:
+        """The Plücker matrix ``A Bᵀ − B Aᵀ`` of the line through two points of P³; needs ``A ≠ B``."""
+        a, b = self._get(a, ("point3",), "line3"), self._get(b, ("point3",), "line3")
+        return self._node(name, "line3", "line3", (a, b), f"{a.name} {b.name}ᵀ − {b.name} {a.name}ᵀ",
+                          conditions=[f"{a.name} ≠ {b.name}"])
+
+    def apply(self, name: str, h: Any, x: Any) -> Node:
+        """The image ``H x`` of a point (of P¹, P² or P³) under a matrix."""
+        h = self._get(h, ("matrix",), "apply")
+        x = self._get(x, ("point1", "point", "point3"), "apply")
+        return self._node(name, x.kind, "apply", (h, x), f"{h.name} {x.name}")
+
+    def apply_line(self, name: str, h: Any, l: Any) -> Node:
+        """The image of a line (or plane) under H: ``adj(H)ᵀ l``, i.e. ``H⁻ᵀ l`` up to the scale det H."""
+        h = self._get(h, ("matrix",), "apply_line")
+        l = self._get(l, ("line", "plane"), "apply_line")
+        return self._node(name, l.kind, "apply_line", (h, l), f"adj({h.name})ᵀ {l.name}",
+                          conditions=[f"{h.name} is non-singular (det {h.name} ≠ 0)"])
+
+    apply_plane = apply_line
+
+    def apply_conic(self, name: str, h: Any, c: Any) -> Node:
+        """The image of a conic under H: ``adj(H)ᵀ C adj(H)``, i.e. ``H⁻ᵀ C H⁻¹`` up to scale."""
+        h = self._get(h, ("matrix",), "apply_conic")
+        c = self._get(c, ("conic",), "apply_conic")
+        return self._node(name, "conic", "apply_conic", (h, c), f"adj({h.name})ᵀ {c.name} adj({h.name})",
+                          conditions=[f"{h.name} is non-singular (det {h.name} ≠ 0)"])
+
+    def polar(self, name: str, c: Any, p: Any) -> Node:
+        """The polar line ``C p`` of a point with respect to a conic (the tangent when p is on C)."""
+        c, p = self._get(c, ("conic",), "polar"), self._get(p, ("point",), "polar")
+        return self._node(name, "line", "polar", (c, p), f"{c.name} {p.name}",
+                          conditions=[f"{p.name} is not a singular point of {c.name} ({c.name} {p.name} ≠ 0)"])
+
+    def conic_through(self, name: str, *points: Any) -> Node:
+        """The conic through five points (its six coefficients are signed 5×5 minors)."""
+        if len(points) != 5:
+            raise ObjectTypeError(f"conic_through needs five points, got {len(points)}")
+        pts = tuple(self._get(p, ("point",), "conic_through") for p in points)
+        names = ", ".join(p.name for p in pts)
+        return self._node(name, "conic", "conic_through", pts, f"conic({names})",
+                          conditions=[f"{names} determine a unique conic (no two equal, no four collinear)"])
+
+    def dual_conic(self, name: str, c: Any) -> Node:
+        """The dual conic ``adj(C)``: the tangent lines of C satisfy ``lᵀ adj(C) l = 0``."""
+        c = self._get(c, ("conic",), "dual_conic")
+        return self._node(name, "matrix", "dual_conic", (c,), f"adj({c.name})",
+                          conditions=[f"{c.name} is non-degenerate (det {c.name} ≠ 0)"])
+
+    def cross_ratio(self, name: str, a: Any, b: Any, c: Any, d: Any) -> Node:
+        """The cross-ratio ``(A, B; C, D) = [A C][B D] / ([A D][B C])`` of four points of P¹."""
+        pts = tuple(self._get(x, ("point1",), "cross_ratio") for x in (a, b, c, d))
+        A, B, C, D = (p.name for p in pts)
+        return self._node(name, "ratio", "cross_ratio", pts, f"({A}, {B}; {C}, {D})",
+                          conditions=[f"[{A} {D}][{B} {C}] ≠ 0 ({A} ≠ {D} and {B} ≠ {C})"])
+
+    def harmonic_conjugate(self, name: str, a: Any, b: Any, c: Any) -> Node:
+        """The harmonic conjugate ``[A C] B + [B C] A`` of C with respect to A and B (points of P¹)."""
+        pts = tuple(self._get(x, ("point1",), "harmonic_conjugate") for x in (a, b, c))
+        A, B, C = (p.name for p in pts)
+        return self._node(name, "point1", "harmonic_conjugate", pts, f"[{A} {C}] {B} + [{B} {C}] {A}",
+                          conditions=[f"{A}, {B}, {C} are distinct"])
+
+    def formula(self, name: str, kind: str, fn: Callable[..., Any], *args: Any, description: str = "",
+                conditions: Sequence[str] = ()) -> Node:
+        """An object computed by ``fn`` from earlier objects with ``+``, ``-``, ``*`` only.
+
+        ``fn`` receives the values of ``args`` (tuples for vectors and matrices,
+        a ``(numerator, denominator)`` pair for ratios) and must return a value
+        of ``kind``. The helpers of :mod:`pgsym.proofs.algebra` are written this way.
+        """
+        if kind not in KINDS:
+            raise ObjectTypeError(f"unknown kind {kind!r}; use one of {', '.join(KINDS)}")
+        nodes = tuple(self._get(a, (), "formula") for a in args)
+        text = description or f"{getattr(fn, '__name__', 'f')}({', '.join(n.name for n in nodes)})"
+        return self._node(name, kind, "formula", nodes, text, fn, conditions)
+
+    # -- hypotheses ----------------------------------------------------------------
+    def assume_zero(self, expr: Any, text: str) -> None:
+        """An equation hypothesis ``expr = 0`` (a polynomial in the parameters); proofs then use Gröbner bases."""
+        self.hypotheses.append((_polynomial(expr, self.parameters, "hypothesis"), text))
+
+    # -- conclusions -----------------------------------------------------------------
+    def _conclude(self, kind: str, args: tuple[Any, ...], text: str) -> None:
+        self.conclusions.append(Conclusion(kind, args, text))
+
+    def conclude_incident(self, x: Any, l: Any) -> None:
+        """The point x lies on the line (or plane) l: ``lᵀx = 0``."""
+        x = self._get(x, ("point", "point3"), "conclude_incident")
+        l = self._get(l, ("line",) if x.kind == "point" else ("plane",), "conclude_incident")
+        self._conclude("incident", (x, l), f"{x.name} lies on {l.name}")
+
+    def conclude_collinear(self, p: Any, q: Any, r: Any) -> None:
+        """Three points of P² are collinear: ``det[P Q R] = 0``.
+
+        >>> c = Claim("x", "x")
+        >>> c.conclude_collinear(*(c.free_point(n) for n in "PQR"))
+        >>> c.conclusions[0].text
+        'P, Q, R are collinear'
+        """
+        pts = tuple(self._get(x, ("point",), "conclude_collinear") for x in (p, q, r))
+        self._conclude("det", pts, f"{', '.join(x.name for x in pts)} are collinear")
+
+    def conclude_concurrent(self, l: Any, m: Any, n: Any) -> None:
+        """Three lines of P² pass through one point: ``det[l m n] = 0``."""
+        lines = tuple(self._get(x, ("line",), "conclude_concurrent") for x in (l, m, n))
+        self._conclude("det", lines, f"{', '.join(x.name for x in lines)} are concurrent")
+
+    def conclude_coplanar(self, a: Any, b: Any, c: Any, d: Any) -> None:
+        """Four points of P³ lie in one plane: ``det[A B C D] = 0``."""
+        pts = tuple(self._get(x, ("point3",), "conclude_coplanar") for x in (a, b, c, d))
+        self._conclude("det", pts, f"{', '.join(x.name for x in pts)} are coplanar")
+
+    def conclude_proportional(self, u: Any, v: Any) -> None:
+        """Equality up to a nonzero scale of two vectors or matrices of the same shape.
+
+        >>> c = Claim("x", "x")
+        >>> c.conclude_proportional(c.point("P", 1, 2, 3), c.point("Q", 2, 4, 6))
+        >>> c.conclusions[0].kind
+        'proportional'
+        """
+        u, v = self._get(u, (), "conclude_proportional"), self._get(v, (), "conclude_proportional")
+        self._conclude("proportional", (u, v), f"{u.name} = λ {v.name} for a nonzero λ")
+
+    def conclude_equal(self, u: Any, v: Any) -> None:
+        """Exact equality of two vectors, matrices or scalars (e.g. a matrix identity)."""
+        u, v = self._get(u, (), "conclude_equal"), self._get(v, (), "conclude_equal")
+        self._conclude("equal", (u, v), f"{u.name} = {v.name}")
+
+    def conclude_zero(self, x: Any, text: str = "") -> None:
+        """A polynomial identity: a scalar or matrix object, or an expression in the parameters, vanishes.
+
+        >>> c = Claim("x", "x"); (a,) = c.params("a")
+        >>> c.conclude_zero(sympy.sin(a))
+        Traceback (most recent call last):
+        ...
+        pgsym.errors.NonPolynomialClaimError: conclusion: sin(a) is not a polynomial ...
+        """
+        if isinstance(x, (Node, str)):
+            node = self._get(x, (), "conclude_zero")
+            self._conclude("zero", (node,), text or f"{node.name} = 0")
+        else:
+            e = _polynomial(x, self.parameters, "conclusion")
+            node = self._free(f"_expr{len(self.conclusions)}", "scalar", (e,))
+            node.name = f"({e})"
+            self._conclude("zero", (node,), text or f"{e} = 0")
+
+    def conclude_equal_ratio(self, r: Any, s: Any) -> None:
+        """Two ratios are equal: ``r = n₁/d₁``, ``s = n₂/d₂`` (ratio objects or numbers), ``n₁d₂ − n₂d₁ = 0``."""
+        r = self._ratio(r)
+        s = self._ratio(s)
+        self._conclude("equal_ratio", (r, s), f"{r.name} = {s.name}")
+
+    def _ratio(self, x: Any) -> Node:
+        if isinstance(x, (Node, str)):
+            return self._get(x, ("ratio",), "conclude_equal_ratio")
+        try:
+            value = sympy.Rational(x)
+        except (TypeError, ValueError, sympy.SympifyError):
+            raise NonPolynomialClaimError(
+                f"conclude_equal_ratio: {x!r} is neither a ratio object nor a rational number"
+            ) from None
+        node = Node(str(value), "ratio", "const", (), str(value), (sympy.Integer(value.p), sympy.Integer(value.q)))
+        self.nodes[f"_const{len(self.nodes)}"] = node
+        return node
+
+    def conclude_rank(self, m: Any, r: int) -> None:
+        """The generic rank of a matrix object is exactly r (its (r+1)-minors vanish, some r-minor does not)."""
+        m = self._get(m, ("matrix", "line3", "conic"), "conclude_rank")
+        self._conclude("rank", (m, r), f"rank {m.name} = {r}")
+
+    def conclude_dof(self, name: str, entries: Any, params: Sequence[sympy.Symbol], dof: int) -> None:
+        """A family of matrices, polynomial in ``params``, up to scale, has ``dof`` degrees of freedom.
+
+        The number of degrees of freedom is the dimension of the family in projective
+        space: the generic rank of the Jacobian of the entries with the entry vector
+        itself as an extra column (the scale direction), minus one.
+        """
+        m = sympy.Matrix(entries)
+        v = sympy.Matrix(list(m))
+        jac = v.jacobian(list(params)).row_join(v)
+        node = self.matrix(name, jac)
+        node.description = f"[∂{name}/∂params | vec {name}]"
+        self._conclude("rank", (node, dof + 1), f"{name} has {dof} degrees of freedom (rank of [J | v] = {dof + 1})")
+
+    def conditions_text(self) -> list[str]:
+        """The non-degeneracy conditions the constructions need, as readable text."""
+        return [c for n in self.nodes.values() for c in n.conditions]
+
+
+def node_size(node: Node) -> int | None:
+    """Number of coordinates of a vector node (None for matrices and scalars)."""
+    return KINDS.get(node.kind)
+
+
+def is_vector(node: Node) -> bool:
+    """True for points, lines and planes."""
+    return node.kind in _VECTOR_KINDS
+
+
+_ = alg  # the formulas module is part of the claim vocabulary (see Claim.formula)

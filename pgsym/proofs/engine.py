@@ -1,0 +1,713 @@
+"""The proof engine: random evaluation modulo a prime first, then an exact certificate.
+
+1. **Random pass.** Every construction is evaluated at random integers modulo the
+   prime p = 2⁶¹ − 1. If a conclusion polynomial is nonzero there while the
+   constructions are defined, the claim is false, and an exact counterexample
+   (small integers when possible) is returned. A zero value proves nothing.
+2. **Certificate.** The constructions are evaluated in the polynomial ring
+   ℚ[parameters]; the claim is proved when every conclusion polynomial is the zero
+   polynomial (with equation hypotheses: when it reduces to zero modulo a Gröbner
+   basis of the hypotheses, i.e. lies in their ideal). The non-degeneracy
+   conditions are the constructions' nonzero requirements, checked not to vanish
+   identically.
+3. **Core check.** At one exact rational point the same configuration is built with
+   pgsym's own objects (``join``, ``meet``, ``plane_through``, ``Line3.join``, …) and
+   compared with the formulas, so the catalogue and the library cannot drift.
+
+>>> from pgsym.proofs.claims import Claim
+>>> c = Claim("demo", "the join of A and B contains A")
+>>> A, B = c.free_point("A"), c.free_point("B")
+>>> c.conclude_incident(A, c.join("l", A, B))
+>>> v = prove(c)
+>>> v.status, v.method, [k.text for k in v.conditions]
+('proved', 'polynomial identity (exact expansion)', ['A ≠ B'])
+"""
+
+from __future__ import annotations
+
+import random
+import signal
+import threading
+import time
+import zlib
+from collections.abc import Callable
+from contextlib import contextmanager
+from fractions import Fraction
+from typing import Any
+
+import sympy
+from sympy.polys.rings import ring
+
+from ..errors import PgsymError
+from . import algebra as alg
+from .claims import Claim, Node
+from .verdicts import Certificate, Condition, Counterexample, Verdict
+from .verdicts import poly_str as _poly_str
+
+__all__ = ["PRIME", "prove", "recheck_counterexample"]
+
+PRIME = 2**61 - 1
+"""The prime of the random pass (a Mersenne prime)."""
+
+
+class _Timeout(Exception):
+    pass
+
+
+class _Deadline:
+    def __init__(self, seconds: float | None) -> None:
+        self.end = None if seconds is None else time.perf_counter() + seconds
+        self.stage = "start"
+
+    def check(self, stage: str | None = None) -> None:
+        if stage:
+            self.stage = stage
+        if self.end is not None and time.perf_counter() > self.end:
+            raise _Timeout(self.stage)
+
+
+@contextmanager
+def _alarm(seconds: float | None):  # type: ignore[no-untyped-def]
+    """Interrupt long single computations with SIGALRM (main thread on Unix only)."""
+    usable = (seconds is not None and seconds > 0 and hasattr(signal, "setitimer")
+              and threading.current_thread() is threading.main_thread())
+    if not usable:
+        yield
+        return
+
+    def handler(signum, frame):  # type: ignore[no-untyped-def]
+        raise _Timeout("interrupted")
+
+    old = signal.signal(signal.SIGALRM, handler)
+    signal.setitimer(signal.ITIMER_REAL, seconds + 0.05)
+    try:
+        yield
+    finally:
+        signal.setitimer(signal.ITIMER_REAL, 0)
+        signal.signal(signal.SIGALRM, old)
+
+
+def _flat(value: Any) -> list[Any]:
+    if isinstance(value, tuple):
+        out: list[Any] = []
+        for v in value:
+            out.extend(_flat(v))
+        return out
+    return [value]
+
+
+# -- evaluation of a claim in one arithmetic -----------------------------------------------
+
+def _conic_from_points(points: list[tuple[Any, ...]]) -> tuple[tuple[Any, ...], ...]:
+    rows = [(x * x, x * y, y * y, x * w, y * w, w * w) for x, y, w in points]
+    coeffs = []
+    for j in range(6):
+        d = alg.det([r[:j] + r[j + 1:] for r in rows])
+        coeffs.append(d if j % 2 == 0 else -d)
+    a, b, c, d, e, f = coeffs
+    return ((a + a, b, d), (b, c + c, e), (d, e, f + f))
+
+
+def _formula(node: Node, v: list[Any], scalar: Callable[[Any], Any]) -> Any:
+    op = node.op
+    if op == "free":
+        return tuple(tuple(scalar(e) for e in row) for row in node.data) if node.kind in ("matrix", "conic") \
+            else (scalar(node.data[0]) if node.kind == "scalar" else tuple(scalar(e) for e in node.data))
+    if op == "const":
+        return (scalar(node.data[0]), scalar(node.data[1]))
+    if op in ("join", "meet"):
+        return alg.cross(v[0], v[1])
+    if op == "combine":
+        s, t = scalar(node.data[0]), scalar(node.data[1])
+        return tuple(s * a + t * b for a, b in zip(v[0], v[1], strict=True))
+    if op in ("plane_through", "point_on_planes"):
+        return alg.plane_through(*v)
+    if op == "line3":
+        return alg.wedge(v[0], v[1])
+    if op == "apply":
+        return alg.matvec(v[0], v[1])
+    if op == "apply_line":
+        return alg.matvec(alg.transpose(alg.adjugate(v[0])), v[1])
+    if op == "apply_conic":
+        a = alg.adjugate(v[0])
+        return alg.matmul(alg.transpose(a), alg.matmul(v[1], a))
+    if op == "polar":
+        return alg.matvec(v[0], v[1])
+    if op == "conic_through":
+        return _conic_from_points(v)
+    if op == "dual_conic":
+        return alg.adjugate(v[0])
+    if op == "cross_ratio":
+        a, b, c, d = v
+        br = lambda p, q: p[0] * q[1] - p[1] * q[0]  # noqa: E731
+        return (br(a, c) * br(b, d), br(a, d) * br(b, c))
+    if op == "harmonic_conjugate":
+        a, b, c = v
+        ac, bc = a[0] * c[1] - a[1] * c[0], b[0] * c[1] - b[1] * c[0]
+        return tuple(ac * bi + bc * ai for ai, bi in zip(a, b, strict=True))
+    if op == "formula":
+        return node.data(*v)
+    raise PgsymError(f"internal: no formula for operation {op!r}")  # pragma: no cover
+
+
+def _condition_values(node: Node, value: Any, values: dict[Node, Any]) -> list[list[Any]]:
+    """One list per condition text of the node: the condition holds when not all entries vanish."""
+    if not node.conditions:
+        return []
+    if node.op == "free" and node.kind == "matrix":
+        return [[alg.det(value)]]
+    if node.op in ("apply_line", "apply_conic"):
+        return [[alg.det(values[node.args[0]])]]
+    if node.op == "dual_conic":
+        return [[alg.det(values[node.args[0]])]]
+    if node.op == "cross_ratio":
+        return [[value[1]]]
+    return [_flat(value)] * len(node.conditions)
+
+
+def _evaluate(claim: Claim, scalar: Callable[[Any], Any], reduce: Callable[[Any], Any] | None = None,
+              deadline: _Deadline | None = None) -> dict[Node, Any]:
+    values: dict[Node, Any] = {}
+    for node in claim.nodes.values():
+        if deadline is not None:
+            deadline.check(f"constructing {node.name}")
+        value = _formula(node, [values[a] for a in node.args if isinstance(a, Node)], scalar)
+        if reduce is not None:
+            value = _map(value, reduce)
+        values[node] = value
+    return values
+
+
+def _map(value: Any, f: Callable[[Any], Any]) -> Any:
+    if isinstance(value, tuple):
+        return tuple(_map(v, f) for v in value)
+    return f(value)
+
+
+def _is_zero_vector(value: Any) -> bool:
+    return all(x == 0 for x in _flat(value))
+
+
+def _conclusion_polys(claim: Claim, values: dict[Node, Any], skip: Any = ()) -> list[tuple[str, Any]]:
+    """(label, polynomial) pairs that must all vanish; rank conclusions are handled separately."""
+    out: list[tuple[str, Any]] = []
+    for c in claim.conclusions:
+        if any(c is x for x in skip):
+            continue
+        vals = [values[a] for a in c.args if isinstance(a, Node)]
+        names = [a.name for a in c.args if isinstance(a, Node)]
+        if c.kind == "incident":
+            out.append((f"{names[1]}ᵀ{names[0]}", alg.dot(vals[0], vals[1])))
+        elif c.kind == "det":
+            out.append((f"det[{' '.join(names)}]", alg.det(vals)))
+        elif c.kind == "proportional":
+            u, v = _flat(vals[0]), _flat(vals[1])
+            k = next((i for i, x in enumerate(v) if x != 0), 0)
+            for i in range(len(u)):
+                if i != k:
+                    out.append((f"{names[0]}[{i}]·{names[1]}[{k}] − {names[0]}[{k}]·{names[1]}[{i}]",
+                                u[i] * v[k] - u[k] * v[i]))
+        elif c.kind == "equal":
+            u, v = _flat(vals[0]), _flat(vals[1])
+            for i, (a, b) in enumerate(zip(u, v, strict=True)):
+                out.append((f"{names[0]}[{i}] − {names[1]}[{i}]", a - b))
+        elif c.kind == "zero":
+            for i, a in enumerate(_flat(vals[0])):
+                out.append((f"{names[0]}[{i}]" if len(_flat(vals[0])) > 1 else names[0], a))
+        elif c.kind == "equal_ratio":
+            (n1, d1), (n2, d2) = vals
+            out.append((f"num({names[0]})·den({names[1]}) − num({names[1]})·den({names[0]})", n1 * d2 - n2 * d1))
+    return out
+
+
+def _nonzero_requirements(claim: Claim, values: dict[Node, Any]) -> list[tuple[str, list[Any]]]:
+    out = []
+    for node in claim.nodes.values():
+        for text, polys in zip(node.conditions, _condition_values(node, values[node], values), strict=True):
+            out.append((text, polys))
+    for c in claim.conclusions:
+        if c.kind == "proportional":
+            for a in c.args:
+                out.append((f"{a.name} is not zero", _flat(values[a])))
+        if c.kind == "equal_ratio":
+            for a in c.args:
+                if a.op != "const":
+                    out.append((f"the denominator of {a.name} is not zero", [values[a][1]]))
+    return out
+
+
+def _rank_mod(rows: list[list[int]], p: int) -> tuple[int, tuple[int, ...], tuple[int, ...]]:
+    """Rank of an integer matrix modulo p, with the rows and columns of a nonzero maximal minor."""
+    m = [[x % p for x in r] for r in rows]
+    n_rows, n_cols = len(m), len(m[0])
+    rank, piv_rows, piv_cols = 0, [], []
+    used = [False] * n_rows
+    for j in range(n_cols):
+        i = next((i for i in range(n_rows) if not used[i] and m[i][j]), None)
+        if i is None:
+            continue
+        used[i] = True
+        piv_rows.append(i)
+        piv_cols.append(j)
+        inv = pow(m[i][j], -1, p)
+        for k in range(n_rows):
+            if k != i and m[k][j]:
+                f = m[k][j] * inv % p
+                m[k] = [(a - f * b) % p for a, b in zip(m[k], m[i], strict=True)]
+        rank += 1
+    return rank, tuple(sorted(piv_rows)), tuple(sorted(piv_cols))
+
+
+# -- the passes ---------------------------------------------------------------------------
+
+def _qq_to_fraction(x: Any) -> Fraction:
+    return Fraction(int(x.numerator), int(x.denominator))
+
+
+class _Converter:
+    """Parameter expressions to ring elements, memoised (one per ring)."""
+
+    def __init__(self, R: Any) -> None:
+        self.R = R
+        self.cache: dict[Any, Any] = {}
+
+    def __call__(self, expr: Any) -> Any:
+        out = self.cache.get(expr)
+        if out is None:
+            out = self.cache[expr] = self.R(expr)
+        return out
+
+
+_CONVERTERS: dict[tuple[int, str, bool], tuple[Claim, _Converter]] = {}
+
+
+def _integral(claim: Claim) -> bool:
+    """True when every coefficient in the claim's data is an integer (then ℤ[params] suffices)."""
+    for node in claim.nodes.values():
+        if node.op in ("free", "combine", "const"):
+            for e in _flat(node.data) if isinstance(node.data, tuple) else []:
+                if any(not a.is_Integer for a in sympy.sympify(e).atoms(sympy.Rational)):
+                    return False
+    return not claim.hypotheses
+
+
+def _converter(claim: Claim, order: str = "lex", field: bool = True) -> _Converter:
+    key = (id(claim), order, field)
+    hit = _CONVERTERS.get(key)
+    if hit is None or hit[0] is not claim:
+        if len(_CONVERTERS) > 64:
+            _CONVERTERS.clear()
+        domain = sympy.QQ if field or not _integral(claim) else sympy.ZZ
+        hit = _CONVERTERS[key] = (claim, _Converter(_ring(claim, order, domain)))
+    return hit[1]
+
+
+def _point_evaluator(claim: Claim, R: Any, point: dict[sympy.Symbol, Any]) -> Callable[[Any], Any]:
+    """A converter from parameter expressions to exact Fractions at the given point."""
+    conv = _converter(claim)
+    cache: dict[Any, Fraction] = {}
+    args = [sympy.QQ(Fraction(point[s]).numerator, Fraction(point[s]).denominator) for s in claim.parameters]
+    args = args or [sympy.QQ(0)]
+
+    def scalar(expr: Any) -> Fraction:
+        out = cache.get(expr)
+        if out is None:
+            if expr in point:
+                out = Fraction(point[expr])
+            elif expr.is_Rational:
+                out = Fraction(int(expr.p), int(expr.q))
+            else:
+                out = _qq_to_fraction(conv(expr)(*args))
+            cache[expr] = out
+        return out
+
+    return scalar
+
+
+def _modp(x: Fraction) -> int:
+    return x.numerator % PRIME * pow(x.denominator % PRIME, -1, PRIME) % PRIME
+
+
+def _check_point(claim: Claim, values: dict[Node, Any], modp: bool) -> tuple[str, Any]:
+    """Classify one evaluated point: 'degenerate', 'fails' (with residuals), 'holds' (with rank data)."""
+    red = (lambda x: x % PRIME) if modp else (lambda x: x)
+    for _text, polys in _nonzero_requirements(claim, values):
+        if all(red(p) == 0 for p in polys):
+            return "degenerate", _text
+    residuals = [red(val) for _, val in _conclusion_polys(claim, values)]
+    rank_info = []
+    for c in claim.conclusions:
+        if c.kind == "rank":
+            node, r = c.args
+            rows = [list(row) for row in values[node]]
+            if modp:
+                rk, rs, cs = _rank_mod(rows, PRIME)
+            else:
+                rk = sympy.Matrix(rows).rank()
+                rs = cs = ()
+            if rk > r:
+                residuals.append(Fraction(rk - r) if not modp else rk - r)
+            rank_info.append((node, r, rk, rs, cs))
+    if any(x != 0 for x in residuals):
+        return "fails", residuals
+    if any(rk < r for _, r, rk, _, _ in rank_info):
+        return "low-rank", rank_info
+    return "holds", rank_info
+
+
+def _rng(claim: Claim, seed: int) -> random.Random:
+    return random.Random(zlib.crc32(claim.name.encode()) + 7919 * seed)
+
+
+def _random_point(claim: Claim, rng: random.Random, bound: int) -> dict[sympy.Symbol, int]:
+    if bound >= PRIME:
+        return {s: rng.randrange(PRIME) for s in claim.parameters}
+    return {s: rng.randint(-bound, bound) for s in claim.parameters}
+
+
+def _find_small_counterexample(claim: Claim, R: Any, rng: random.Random, fallback: dict[sympy.Symbol, int],
+                               deadline: _Deadline) -> Counterexample:
+    for attempt in range(120):
+        deadline.check("searching a small counterexample")
+        point = _random_point(claim, rng, 2 + attempt // 10)
+        values = _evaluate(claim, _point_evaluator(claim, R, point))
+        kind, data = _check_point(claim, values, modp=False)
+        if kind == "fails":
+            return Counterexample({str(s): Fraction(v) for s, v in point.items()}, data, claim)
+    values = _evaluate(claim, _point_evaluator(claim, R, fallback))
+    kind, data = _check_point(claim, values, modp=False)
+    return Counterexample({str(s): Fraction(v) for s, v in fallback.items()}, data, claim)
+
+
+def _ring(claim: Claim, order: str = "lex", domain: Any = sympy.QQ) -> Any:
+    gens = claim.parameters or [sympy.Symbol("_t")]
+    R, *_ = ring(gens, domain, order)
+    return R
+
+
+def _describe_ring(claim: Claim, order: str) -> str:
+    names = [str(s) for s in claim.parameters]
+    shown = ", ".join(names) if len(names) <= 6 else ", ".join(names[:4]) + ", …"
+    field = "ℚ" if not _integral(claim) else "ℤ"
+    return f"{field}[{shown}] ({len(names)} variables, {order} order)"
+
+
+def _random_pass(claim: Claim, R: Any, rng: random.Random, deadline: _Deadline) -> tuple[str, Any, str]:
+    """Returns (outcome, data, summary) with outcome in 'fails', 'holds', 'degenerate', 'low-rank'."""
+    last = ("degenerate", "", "")
+    for trial in range(4):
+        deadline.check("random evaluation")
+        point = _random_point(claim, rng, PRIME)
+        frac = _point_evaluator(claim, R, point)
+        values = _evaluate(claim, lambda e, frac=frac: _modp(frac(e)), reduce=lambda x: x % PRIME, deadline=deadline)
+        kind, data = _check_point(claim, values, modp=True)
+        if kind == "fails":
+            return "fails", point, f"conclusion nonzero modulo p = 2^61 − 1 at a random point (trial {trial + 1})"
+        if kind == "holds":
+            return "holds", (point, data), (
+                f"conclusion zero modulo p = 2^61 − 1 at a random point (trial {trial + 1}); "
+                "this finds counterexamples but proves nothing"
+            )
+        last = (kind, data, "")
+    kind, data, _ = last
+    if kind == "low-rank":
+        return "low-rank", data, "the rank stayed below the claim at four random points"
+    return "degenerate", data, f"a construction was undefined at four random points: {data}"
+
+
+def _proportional_by_division(c: Any, values: dict[Node, Any]) -> str | None:
+    """Prove u = q·v (or v = q·u) with one exact polynomial division; None when that does not work."""
+    u, v = (_flat(values[a]) for a in c.args)
+    names = [a.name for a in c.args]
+    for (x, y), (nx, ny) in (((u, v), names), ((v, u), names[::-1])):
+        k = next((i for i, t in enumerate(y) if t != 0), None)
+        if k is None or x[k] == 0:
+            continue
+        q, r = divmod(x[k], y[k])
+        if r == 0 and q != 0 and all(a == q * b for a, b in zip(x, y, strict=True)):
+            scale = _poly_str(q)
+            scale = scale if len(scale) <= 120 else f"a polynomial with {len(q)} terms"
+            return f"{nx} = q·{ny} exactly, with q = {scale} (one exact division, then {len(x)} products compared)"
+    return None
+
+
+def _exact_pass(claim: Claim, deadline: _Deadline, rank_witness: list[Any]) -> tuple[str, Any]:
+    hyps = claim.hypotheses
+    order = "grevlex" if hyps else "lex"
+    conv = _converter(claim, order, field=bool(hyps))
+    R = conv.R
+    values = _evaluate(claim, conv, deadline=deadline)
+    largest = max((len(p) for v in values.values() for p in _flat(v) if hasattr(p, "terms")), default=0)
+    conditions = []
+    for text, polys in _nonzero_requirements(claim, values):
+        deadline.check("checking the non-degeneracy conditions")
+        if all(p == 0 for p in polys):
+            return "degenerate", text
+        conditions.append(Condition(text, raw=[p for p in polys if p != 0][:3]))
+    deadline.check("reducing the conclusion")
+    steps = []
+    if hyps:
+        G = sympy.groebner([h for h, _ in hyps], *claim.parameters, order="grevlex", domain="QQ")
+        basis = [R(g.as_expr()) for g in G.exprs]
+        method = "Gröbner basis ideal membership"
+        steps.append("Gröbner basis (grevlex) of the hypotheses: " + "; ".join(_poly_str(g) for g in basis))
+        for label, poly in _conclusion_polys(claim, values):
+            deadline.check("reducing the conclusion")
+            quotients, rem = poly.div(basis)
+            if rem != 0:
+                return "not-in-ideal", (label, _poly_str(rem))
+            combo = " + ".join(f"({_poly_str(q)})·g{i + 1}" for i, q in enumerate(quotients) if q != 0) or "0"
+            steps.append(f"{label} = {combo}; remainder 0")
+    else:
+        method = "polynomial identity (exact expansion)"
+        done = []
+        for c in claim.conclusions:
+            if c.kind == "proportional":
+                deadline.check("dividing for the scale factor")
+                line = _proportional_by_division(c, values)
+                if line is not None:
+                    steps.append(line)
+                    done.append(c)
+        for label, poly in _conclusion_polys(claim, values, done):
+            deadline.check("expanding the conclusion")
+            if poly != 0:
+                return "nonzero", (label, _poly_str(poly))
+            steps.append(f"{label} expands to 0")
+    for c in claim.conclusions:
+        if c.kind != "rank":
+            continue
+        node, r = c.args
+        rows = values[node]
+        n_cols = len(rows[0])
+        if r < min(len(rows), n_cols):
+            for rs, cs, minor in alg.minors(rows, r + 1):
+                deadline.check("expanding the minors")
+                if minor != 0:
+                    return "nonzero", (f"minor rows {rs} columns {cs} of {node.name}", _poly_str(minor))
+            steps.append(f"all {r + 1}×{r + 1} minors of {node.name} expand to 0")
+        witness = next((w for w in rank_witness if w[0] is node), None)
+        if witness is None:
+            return "no-witness", node.name
+        _, _, _rank, rs, cs = witness
+        steps.append(f"the {r}×{r} minor of {node.name} on rows {rs}, columns {cs} is nonzero at a random point "
+                     "modulo p, hence not the zero polynomial")
+    return "proved", (Certificate(method, _describe_ring(claim, order), steps, largest), conditions)
+
+
+# -- the core check -------------------------------------------------------------------------
+
+def _core_objects(claim: Claim, point: dict[Any, Any]) -> dict[Node, Any]:
+    """Build the configuration with pgsym's own objects at an exact rational point."""
+    from sympy import Matrix, Rational
+
+    from .. import conics, plucker, projective_line, projective_plane, space
+
+    R = _converter(claim).R
+    frac = _point_evaluator(claim, R, point)
+
+    def q(x: Fraction) -> Rational:
+        return Rational(x.numerator, x.denominator)
+
+    vector_class = {"point": projective_plane.Point, "line": projective_plane.Line, "point1": projective_line.Point1,
+                    "point3": space.Point3, "plane": space.Plane}
+    objs: dict[Node, Any] = {}
+    for node in claim.nodes.values():
+        a = [objs.get(x) for x in node.args if isinstance(x, Node)]
+        op = node.op
+        if op == "free":
+            if node.kind in vector_class:
+                objs[node] = vector_class[node.kind](*(q(frac(e)) for e in node.data))
+            elif node.kind in ("matrix", "conic"):
+                objs[node] = Matrix([[q(frac(e)) for e in row] for row in node.data])
+            continue
+        if any(x is None for x in a):
+            continue
+        if op == "join":
+            objs[node] = projective_plane.join(*a)
+        elif op == "meet":
+            objs[node] = projective_plane.meet(*a)
+        elif op == "combine":
+            s, t = q(frac(node.data[0])), q(frac(node.data[1]))
+            pairs = zip(a[0].coords, a[1].coords, strict=True)
+            objs[node] = vector_class[node.kind](*(s * x + t * y for x, y in pairs))
+        elif op == "plane_through":
+            objs[node] = space.plane_through(*a)
+        elif op == "point_on_planes":
+            objs[node] = space.point_on_planes(*a)
+        elif op == "line3":
+            objs[node] = plucker.Line3.join(*a)
+        elif op == "apply":
+            objs[node] = vector_class[node.kind](*(a[0] * a[1].vector))
+        elif op == "apply_line":
+            if a[0].det() == 0:
+                raise _CoreDegenerate(f"{node.args[0].name} is singular")
+            objs[node] = vector_class[node.kind](*(a[0].adjugate().T * a[1].vector))
+        elif op == "apply_conic":
+            adj = a[0].adjugate()
+            objs[node] = conics.Conic(adj.T * (a[1].matrix if hasattr(a[1], "matrix") else a[1]) * adj)
+        elif op == "polar":
+            objs[node] = conics.Conic(a[0]).polar(a[1])
+        elif op == "conic_through":
+            objs[node] = conics.conic_through(*a)
+        elif op == "dual_conic":
+            objs[node] = conics.Conic(a[0]).dual()
+        elif op == "cross_ratio":
+            objs[node] = projective_line.cross_ratio(*a)
+        elif op == "harmonic_conjugate":
+            objs[node] = projective_line.harmonic_conjugate(*a)
+    return objs
+
+
+class _CoreDegenerate(Exception):
+    pass
+
+
+def _core_value(obj: Any) -> list[Fraction]:
+    if hasattr(obj, "matrix"):
+        entries = list(obj.matrix)
+    elif hasattr(obj, "coords"):
+        entries = list(obj.coords)
+    elif hasattr(obj, "shape"):
+        entries = list(obj)
+    else:
+        entries = [obj]
+    return [Fraction(int(sympy.Rational(e).p), int(sympy.Rational(e).q)) for e in entries]
+
+
+def _agree(claim: Claim, objs: dict[Node, Any], values: dict[Node, Any]) -> str | None:
+    """None when every core object is proportional to the formula's value, else the first mismatch."""
+    for node, obj in objs.items():
+        mine = values[node]
+        if node.kind == "ratio":
+            n, d = mine
+            if d == 0 or Fraction(n) / Fraction(d) != _core_value(obj)[0]:
+                return node.name
+            continue
+        u, v = _flat(mine), _core_value(obj)
+        k = next((i for i, x in enumerate(v) if x != 0), None)
+        if len(u) != len(v) or k is None or u[k] == 0 or any(u[i] * v[k] != u[k] * v[i] for i in range(len(u))):
+            return node.name
+    return None
+
+
+def _core_check(claim: Claim, rng: random.Random, deadline: _Deadline) -> str:
+    R = _converter(claim).R
+    for _ in range(8):
+        deadline.check("comparing with pgsym's core objects")
+        point = _random_point(claim, rng, 9)
+        try:
+            objs = _core_objects(claim, point)
+        except (PgsymError, _CoreDegenerate):
+            continue
+        values = _evaluate(claim, _point_evaluator(claim, R, point))
+        bad = _agree(claim, objs, values)
+        if bad is not None:
+            return f"MISMATCH at {bad}"
+        return f"{len(objs)} objects rebuilt with pgsym's core at a rational point agree with the formulas"
+    return "skipped: the core rejected eight random rational instances as degenerate"
+
+
+def recheck_counterexample(claim: Claim, values: dict[str, Any]) -> bool:
+    """True when, at these exact values, pgsym's core builds the configuration and the conclusion fails.
+
+    The core objects must be defined (no degenerate construction raised) and agree
+    with the formulas; then the conclusion polynomials are evaluated exactly.
+    """
+    point = {s: Fraction(values[str(s)]) for s in claim.parameters}
+    try:
+        objs = _core_objects(claim, point)
+    except (PgsymError, _CoreDegenerate):
+        return False
+    vals = _evaluate(claim, _point_evaluator(claim, _converter(claim).R, point))
+    if _agree(claim, objs, vals) is not None:
+        return False
+    kind, _ = _check_point(claim, vals, modp=False)
+    return kind == "fails"
+
+
+# -- the entry point --------------------------------------------------------------------------
+
+def _constructions(claim: Claim) -> list[tuple[str, str, str]]:
+    return [(n.name, n.kind, n.description) for k, n in claim.nodes.items() if not k.startswith("_")]
+
+
+def prove(claim: Claim, *, timeout: float | None = 10.0, seed: int = 0, core_check: bool = True) -> Verdict:
+    """Decide a claim: proved (with certificate and conditions), false (with a counterexample), or unknown.
+
+    ``timeout`` (seconds, ``None`` for none) bounds the whole run; when it is
+    exceeded the verdict is *unknown*, never *proved*. ``seed`` changes the random
+    points (the default makes runs reproducible).
+
+    >>> from pgsym.proofs.claims import Claim
+    >>> c = Claim("wrong", "every point lies on the line y = 0", expected=False)
+    >>> P = c.free_point("P")
+    >>> c.conclude_incident(P, c.line("l", 0, 1, 0))
+    >>> v = prove(c)
+    >>> v.status, v.counterexample.recheck()
+    ('false', True)
+    """
+    if not isinstance(claim, Claim):
+        from ..errors import ObjectTypeError
+
+        raise ObjectTypeError(f"prove expects a Claim (or use pgsym.proofs.prove with a catalogue name), got {claim!r}")
+    if not claim.conclusions:
+        from .claims import UndefinedConstructionError
+
+        raise UndefinedConstructionError(f"claim {claim.name!r} has no conclusion; add one with a conclude_* method")
+    start = time.perf_counter()
+    deadline = _Deadline(timeout)
+    base = dict(name=claim.name, title=claim.title, statement=claim.statement, expected=claim.expected,
+                constructions=_constructions(claim), hypotheses=[t for _, t in claim.hypotheses],
+                conclusion=[c.text for c in claim.conclusions])
+    rng = _rng(claim, seed)
+    summary = ""
+    try:
+        with _alarm(timeout):
+            R = _converter(claim).R
+            rank_witness: list[Any] = []
+            if claim.hypotheses:
+                summary = "skipped: random points do not satisfy the equation hypotheses"
+            else:
+                outcome, data, summary = _random_pass(claim, R, rng, deadline)
+                if outcome == "fails":
+                    ce = _find_small_counterexample(claim, R, rng, data, deadline)
+                    return Verdict(status="false", method="random evaluation modulo a prime, then exact recheck",
+                                   counterexample=ce, random_pass=summary,
+                                   reason="the conclusion does not vanish at the counterexample",
+                                   elapsed=time.perf_counter() - start, **base)
+                if outcome == "low-rank":
+                    return Verdict(status="unknown", random_pass=summary,
+                                   reason="the matrix had lower rank than claimed at every random point tried",
+                                   elapsed=time.perf_counter() - start, **base)
+                rank_witness = data[1] if outcome == "holds" else []
+            status, data = _exact_pass(claim, deadline, rank_witness)
+            if status == "proved":
+                certificate, conditions = data
+                core = _core_check(claim, rng, deadline) if core_check else "not requested"
+                if core.startswith("MISMATCH"):
+                    return Verdict(status="unknown", random_pass=summary, core_check=core,
+                                   reason=f"pgsym's core and the proof formulas disagree ({core})",
+                                   elapsed=time.perf_counter() - start, **base)
+                method = certificate.method
+                if claim.method_note:
+                    method = f"rational parametrisation ({claim.method_note}), then {method}"
+                return Verdict(status="proved", method=method, certificate=certificate, conditions=conditions,
+                               random_pass=summary, core_check=core, elapsed=time.perf_counter() - start, **base)
+            if status == "degenerate":
+                reason = f"a construction is undefined for every value of the parameters: {data} fails identically"
+            elif status == "not-in-ideal":
+                reason = (f"{data[0]} has the nonzero remainder {data[1][:200]} modulo the hypotheses: it is not in "
+                          "their ideal (it may still hold on a component, or after saturating by the conditions)")
+            elif status == "no-witness":
+                reason = f"no nonzero minor of {data} of the claimed size was found"
+            else:
+                ce = _find_small_counterexample(claim, R, rng, _random_point(claim, rng, PRIME), deadline)
+                return Verdict(status="false", method="exact expansion, then exact recheck", counterexample=ce,
+                               random_pass=summary, reason=f"{data[0]} expands to a nonzero polynomial",
+                               elapsed=time.perf_counter() - start, **base)
+            return Verdict(status="unknown", random_pass=summary, reason=reason,
+                           elapsed=time.perf_counter() - start, **base)
+    except _Timeout as err:
+        return Verdict(status="unknown", random_pass=summary,
+                       reason=f"timed out after {timeout} s while {err.args[0] if err.args else 'working'}",
+                       elapsed=time.perf_counter() - start, **base)

@@ -1,0 +1,238 @@
+"""Verdicts: proved (with certificate and conditions), false (with a counterexample) or unknown (with why).
+
+>>> v = Verdict("demo", "a demo", "proved", method="polynomial identity")
+>>> v.proved, v.to_dict()["status"]
+(True, 'proved')
+"""
+
+from __future__ import annotations
+
+import json
+from dataclasses import dataclass, field
+from fractions import Fraction
+from typing import Any
+
+__all__ = ["Certificate", "Condition", "Counterexample", "Verdict"]
+
+_STATUS_MARK = {"proved": "✔ proved", "false": "✘ false", "unknown": "? unknown"}
+
+
+def _short(text: str, limit: int = 90) -> str:
+    return text if len(text) <= limit else text[: limit - 1] + "…"
+
+
+def poly_str(p: Any, max_terms: int = 40) -> str:
+    """A polynomial as text; very long ones are summarised by degree and number of terms.
+
+    >>> poly_str(3)
+    '3'
+    """
+    if hasattr(p, "terms") and len(p) > max_terms:
+        return f"<a polynomial of degree {max(sum(m) for m in p.monoms())} with {len(p)} terms>"
+    return str(p.as_expr()) if hasattr(p, "as_expr") else str(p)
+
+
+@dataclass
+class Condition:
+    """A non-degeneracy condition: readable text, and polynomials not all of which may vanish.
+
+    ``raw`` holds the polynomials themselves; :attr:`polynomials` gives them as text.
+    """
+
+    text: str
+    raw: list[Any] = field(default_factory=list, repr=False)
+
+    @property
+    def polynomials(self) -> list[str]:
+        """The condition's polynomials as text (not all of them may vanish)."""
+        return [poly_str(p, 12) for p in self.raw]
+
+    def to_dict(self) -> dict[str, Any]:
+        """JSON-ready form (very long polynomials are summarised).
+
+        >>> Condition("A ≠ B", ["a - b"]).to_dict()  # raw polynomials, shown as text
+        {'text': 'A ≠ B', 'not_all_zero': ['a - b']}
+        """
+        return {"text": self.text, "not_all_zero": [p if len(p) <= 400 else _short(p, 400) for p in self.polynomials]}
+
+
+@dataclass
+class Certificate:
+    """How the conclusion was reduced to zero: the method, the ring and one line per checked polynomial."""
+
+    method: str
+    ring: str = ""
+    steps: list[str] = field(default_factory=list)
+    largest_terms: int = 0
+
+    def to_dict(self) -> dict[str, Any]:
+        """JSON-ready form.
+
+        >>> Certificate("polynomial identity", "QQ[a]", ["a - a → 0"]).to_dict()["steps"]
+        ['a - a → 0']
+        """
+        return {"method": self.method, "ring": self.ring, "steps": self.steps, "largest_terms": self.largest_terms}
+
+
+@dataclass
+class Counterexample:
+    """Exact values of the parameters at which the constructions are defined and the conclusion fails.
+
+    ``residuals`` are the values of the conclusion polynomials there (not all zero).
+    :meth:`recheck` builds the configuration again with pgsym's core objects.
+    """
+
+    values: dict[str, Fraction]
+    residuals: list[Fraction]
+    claim: Any = None
+
+    def substitution(self) -> dict[Any, Any]:
+        """The values as a SymPy substitution ``{symbol: Rational}``.
+
+        >>> Counterexample({"a": Fraction(1, 2)}, [Fraction(1)]).substitution()
+        {a: 1/2}
+        """
+        import sympy
+
+        return {sympy.Symbol(k): sympy.Rational(v.numerator, v.denominator) for k, v in self.values.items()}
+
+    def recheck(self) -> bool:
+        """Rebuild with the core objects at these values: True when the claim indeed fails there."""
+        from .engine import recheck_counterexample
+
+        if self.claim is None:
+            return False
+        return recheck_counterexample(self.claim, self.values)
+
+    def to_dict(self) -> dict[str, Any]:
+        """JSON-ready form (fractions as strings).
+
+        >>> Counterexample({"a": Fraction(1, 2)}, [Fraction(3)]).to_dict()
+        {'values': {'a': '1/2'}, 'residuals': ['3']}
+        """
+        return {"values": {k: str(v) for k, v in self.values.items()}, "residuals": [str(r) for r in self.residuals]}
+
+
+@dataclass
+class Verdict:
+    """The result of proving a claim.
+
+    ``status`` is ``"proved"`` (generically true: the conclusion polynomials
+    vanish identically wherever the listed conditions hold), ``"false"`` (an exact
+    counterexample is attached) or ``"unknown"`` (``reason`` says why, e.g. a
+    timeout). A random evaluation never proves by itself: ``random_pass`` only
+    reports what it found.
+    """
+
+    name: str
+    title: str
+    status: str
+    method: str = ""
+    statement: str = ""
+    conclusion: list[str] = field(default_factory=list)
+    constructions: list[tuple[str, str, str]] = field(default_factory=list)
+    hypotheses: list[str] = field(default_factory=list)
+    conditions: list[Condition] = field(default_factory=list)
+    certificate: Certificate | None = None
+    counterexample: Counterexample | None = None
+    reason: str = ""
+    random_pass: str = ""
+    core_check: str = ""
+    expected: bool = True
+    elapsed: float = 0.0
+
+    @property
+    def proved(self) -> bool:
+        """True exactly when the status is ``"proved"``."""
+        return self.status == "proved"
+
+    @property
+    def refuted(self) -> bool:
+        """True exactly when the status is ``"false"`` (a counterexample is attached)."""
+        return self.status == "false"
+
+    @property
+    def as_expected(self) -> bool:
+        """A true claim proved, or a false claim refuted.
+
+        >>> Verdict("x", "x", "false", expected=False).as_expected
+        True
+        """
+        return self.proved if self.expected else self.refuted
+
+    def __repr__(self) -> str:
+        return f"<Verdict {self.name}: {self.status}>"
+
+    # -- serialisation -----------------------------------------------------------
+    def to_dict(self, timing: bool = True) -> dict[str, Any]:
+        """A JSON-ready dictionary (``timing=False`` leaves out the elapsed time)."""
+        out: dict[str, Any] = {
+            "name": self.name,
+            "title": self.title,
+            "status": self.status,
+            "expected": "true" if self.expected else "false",
+            "as_expected": self.as_expected,
+            "statement": self.statement,
+            "method": self.method,
+            "hypotheses": self.hypotheses,
+            "conclusion": self.conclusion,
+            "conditions": [c.to_dict() for c in self.conditions],
+            "certificate": None if self.certificate is None else self.certificate.to_dict(),
+            "counterexample": None if self.counterexample is None else self.counterexample.to_dict(),
+            "reason": self.reason,
+            "random_pass": self.random_pass,
+            "core_check": self.core_check,
+        }
+        if timing:
+            out["elapsed_ms"] = round(1000 * self.elapsed, 2)
+        return out
+
+    def to_json(self, timing: bool = True, **kwargs: Any) -> str:
+        """The verdict as a JSON string."""
+        return json.dumps(self.to_dict(timing), ensure_ascii=False, **kwargs)
+
+    # -- display -----------------------------------------------------------------
+    def markdown(self, timing: bool = True) -> str:
+        """A short derivation in Markdown: statement, constructions, conclusion, conditions, verdict."""
+        lines = [f"**{self.title}** (`{self.name}`): **{_STATUS_MARK[self.status]}**", ""]
+        if self.statement and self.statement != self.title:
+            lines += [f"*Claim.* {self.statement}", ""]
+        if self.constructions:
+            lines.append("*Constructions:*")
+            lines += [f"- {name} ({kind}) = {_short(desc, 100)}" for name, kind, desc in self.constructions]
+            lines.append("")
+        if self.hypotheses:
+            lines += ["*Hypotheses:* " + "; ".join(self.hypotheses), ""]
+        lines += ["*Conclusion:* " + "; ".join(self.conclusion), ""]
+        if self.certificate is not None:
+            lines.append(f"*Certificate* ({self.certificate.method}, in {self.certificate.ring}):")
+            lines += [f"- `{_short(s, 160)}`" for s in self.certificate.steps[:8]]
+            if len(self.certificate.steps) > 8:
+                lines.append(f"- … and {len(self.certificate.steps) - 8} more polynomials, each reduced to 0")
+            lines.append("")
+        if self.conditions:
+            lines.append("*Non-degeneracy conditions:* " + "; ".join(c.text for c in self.conditions))
+            lines.append("")
+        if self.counterexample is not None:
+            vals = ", ".join(f"{k} = {v}" for k, v in self.counterexample.values.items())
+            lines += [f"*Counterexample:* {vals}", "",
+                      "*Residual (should be 0):* "
+                      + ", ".join(_short(str(r), 40) for r in self.counterexample.residuals[:4]),
+                      ""]
+        if self.reason:
+            lines += [f"*Why:* {self.reason}", ""]
+        if timing:
+            lines.append(f"*Time:* {1000 * self.elapsed:.1f} ms")
+        return "\n".join(lines).rstrip() + "\n"
+
+    def _repr_markdown_(self) -> str:
+        return self.markdown(timing=True)
+
+    def latex(self) -> str:
+        """A one-line LaTeX summary (status, statement and the number of conditions)."""
+        word = {"proved": r"\text{proved}", "false": r"\text{false}", "unknown": r"\text{unknown}"}[self.status]
+        title = self.title.replace("_", r"\_")
+        return rf"$\text{{{title}}}:\ {word}\ \ (\text{{{len(self.conditions)} non-degeneracy conditions}})$"
+
+    def _repr_latex_(self) -> str:
+        return self.latex()

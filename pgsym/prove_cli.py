@@ -1,0 +1,81 @@
+"""The ``pgsym prove`` command: prove catalogue claims from the shell.
+
+    $ pgsym prove pappus
+    proved    pappus    Pappus's hexagon theorem    (4 conditions)
+
+The exit status is 1 when a claim stated as true is not proved, or a claim
+stated as false is "proved"; 0 otherwise.
+"""
+
+from __future__ import annotations
+
+import json
+import sys
+
+import click
+
+from .proofs.catalogue import CATALOGUE, UnknownClaimError, catalogue_names, prove
+
+__all__ = ["prove_command"]
+
+
+def _line(verdict) -> str:  # type: ignore[no-untyped-def]
+    expected = "" if verdict.expected else "  [false claim]"
+    ok = "" if verdict.as_expected else "  <-- NOT AS EXPECTED"
+    if verdict.status == "proved":
+        extra = f"({len(verdict.conditions)} non-degeneracy conditions)"
+    elif verdict.status == "false":
+        values = ", ".join(f"{k}={v}" for k, v in verdict.counterexample.values.items())
+        extra = f"(counterexample: {values[:100]})"
+    else:
+        extra = f"({verdict.reason[:120]})"
+    return f"{verdict.status:8s}  {verdict.name:40s}  {extra}  {1000 * verdict.elapsed:.0f} ms{expected}{ok}"
+
+
+@click.command("prove")
+@click.argument("names", nargs=-1)
+@click.option("--list", "list_", is_flag=True, help="List the catalogue's claims and exit.")
+@click.option("--all", "all_", is_flag=True, help="Prove every claim of the catalogue.")
+@click.option("--json", "as_json", is_flag=True, help="Print the verdicts as a JSON array.")
+@click.option("--timeout", type=click.FloatRange(min=0, min_open=True), default=10.0, show_default=True,
+              help="Seconds per claim; a claim that takes longer is reported as unknown.")
+def prove_command(names: tuple[str, ...], list_: bool, all_: bool, as_json: bool, timeout: float) -> None:
+    """Prove claims of the catalogue by exact polynomial arithmetic.
+
+    Examples: pgsym prove --list; pgsym prove pappus desargues; pgsym prove --all --json
+    """
+    if list_:
+        if as_json:
+            rows = [{"name": e.name, "title": e.title, "chapter": e.chapter, "expected": e.expected}
+                    for e in CATALOGUE.values()]
+            click.echo(json.dumps(rows, ensure_ascii=False, indent=1))
+        else:
+            for e in CATALOGUE.values():
+                mark = "true " if e.expected else "FALSE"
+                click.echo(f"{e.name:40s}  {mark}  {e.chapter:28s}  {e.title}")
+        return
+    if all_ and names:
+        raise click.UsageError("give claim names or --all, not both")
+    if not all_ and not names:
+        raise click.UsageError("give claim names, --all or --list (see pgsym prove --help)")
+    selected = catalogue_names() if all_ else list(names)
+    unknown = [n for n in selected if n not in CATALOGUE]
+    if unknown:
+        try:
+            prove(unknown[0])
+        except UnknownClaimError as err:
+            raise click.BadParameter(str(err), param_hint="NAMES") from None
+    verdicts = []
+    with click.progressbar(selected, label="proving", file=sys.stderr, show_pos=True,
+                           item_show_func=lambda n: n or "") as bar:
+        for name in bar:
+            verdicts.append(prove(name, timeout=timeout))
+    if as_json:
+        click.echo(json.dumps([v.to_dict() for v in verdicts], ensure_ascii=False, indent=1))
+    else:
+        for v in verdicts:
+            click.echo(_line(v))
+    bad = [v.name for v in verdicts if not v.as_expected and (v.expected or v.status == "proved")]
+    if bad:
+        click.echo(f"not as expected: {', '.join(bad)}", err=True)
+        sys.exit(1)

@@ -1,0 +1,236 @@
+"""The proof engine: verdicts, certificates, conditions, mutations, bad input, display and JSON."""
+
+from __future__ import annotations
+
+import json
+from fractions import Fraction
+
+import pytest
+import sympy
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from pgsym.errors import ObjectTypeError, PgsymError
+from pgsym.projective_plane import Point, cross, join
+from pgsym.proofs import Claim, NonPolynomialClaimError, UndefinedConstructionError, UnknownClaimError, prove
+from pgsym.proofs import algebra as alg
+from pgsym.proofs.catalogue import _cross_ratio_p2
+
+small = st.integers(-6, 6)
+vec3 = st.tuples(small, small, small).filter(any)
+
+
+# -- worked examples -------------------------------------------------------------------------------
+
+def test_worked_example_false_claim_has_the_hand_derived_residual():
+    # "P = (x, y, 1) lies on y = 0": the residual is lᵀP = 0·x + 1·y + 0·1 = y, so any
+    # counterexample must have P_y ≠ 0 and the residual equals P_y.
+    c = Claim("on-x-axis", "every point lies on the x-axis", expected=False)
+    P = c.free_point("P")
+    c.conclude_incident(P, c.line("l", 0, 1, 0))
+    v = prove(c)
+    assert v.refuted
+    assert v.counterexample.residuals == [v.counterexample.values["P_y"]] != [0]
+    assert v.counterexample.recheck()
+
+
+def test_proved_claim_lists_its_conditions_as_text_and_polynomials():
+    # join(A, B) = A × B with A = (A_x, A_y, 1), B = (B_x, B_y, 1): the first two coordinates are
+    # A_y − B_y and B_x − A_x (by hand), so "A ≠ B" is reported with those polynomials.
+    c = Claim("demo", "the join contains A")
+    A, B = c.free_point("A"), c.free_point("B")
+    c.conclude_incident(A, c.join("l", A, B))
+    v = prove(c)
+    assert v.proved and [k.text for k in v.conditions] == ["A ≠ B"]
+    polys = {sympy.sympify(p) for p in v.conditions[0].polynomials}
+    A_x, A_y, B_x, B_y = sympy.symbols("A_x A_y B_x B_y")
+    assert sympy.expand(A_y - B_y) in polys and sympy.expand(B_x - A_x) in polys
+
+
+def test_random_pass_never_proves_alone():
+    v = prove("pappus")
+    assert "proves nothing" in v.random_pass and v.certificate.steps
+
+
+def test_rank_claims_true_false_and_too_high():
+    def claim(r):
+        c = Claim(f"rank{r}", "rank of a Plücker matrix", expected=(r == 2))
+        A, B = c.free_point3("A"), c.free_point3("B")
+        c.conclude_rank(c.line3("L", A, B), r)
+        return c
+
+    assert prove(claim(2)).proved
+    low = prove(claim(1))  # a 2×2 minor is nonzero: rank > 1 at the counterexample
+    assert low.refuted and low.counterexample.recheck()
+    high = prove(claim(3))  # every 3×3 minor vanishes identically: no witness, never "proved"
+    assert high.status == "unknown"
+
+
+def test_groebner_membership_and_non_membership():
+    c = Claim("sq", "x² = 0 implies x = 0")
+    (x,) = c.params("x")
+    c.assume_zero(x**2, "x² = 0")
+    c.conclude_zero(x)
+    v = prove(c)
+    # x is not in the ideal (x²) (it is in its radical): the engine must not claim a proof
+    assert v.status == "unknown" and "not in" in v.reason
+    c2 = Claim("sq2", "x² = 0 implies x³ = 0")
+    (x,) = c2.params("x")
+    c2.assume_zero(x**2, "x² = 0")
+    c2.conclude_zero(x**3)
+    v2 = prove(c2)
+    assert v2.proved and v2.method == "Gröbner basis ideal membership"
+    assert any("remainder 0" in s for s in v2.certificate.steps)
+
+
+# -- mutations: perturb a construction and the proof must turn into a refutation --------------------
+
+def _desargues(perturb: bool) -> Claim:
+    c = Claim("desargues-mutant", "Desargues with A' moved off OA", expected=not perturb)
+    a, b, cc = c.params("a b c")
+    O, A, B, C = (c.free_point(n) for n in "OABC")
+    A2 = c.combine("A'", A, O, 1, a)
+    if perturb:
+        A2 = c.combine("A''", A2, c.point("U", 1, 0, 0), 1, 1)  # shift A' by a fixed direction
+    B2, C2 = c.combine("B'", B, O, 1, b), c.combine("C'", C, O, 1, cc)
+    X = c.meet("X", c.join("AB", A, B), c.join("A'B'", A2, B2))
+    Y = c.meet("Y", c.join("BC", B, C), c.join("B'C'", B2, C2))
+    Z = c.meet("Z", c.join("CA", C, A), c.join("C'A'", C2, A2))
+    c.conclude_collinear(X, Y, Z)
+    return c
+
+
+def test_mutating_desargues_turns_proved_into_false():
+    assert prove(_desargues(False)).proved
+    v = prove(_desargues(True))
+    assert v.refuted and v.counterexample.recheck()
+
+
+@pytest.mark.parametrize("swap", ["meet->join", "sign"])
+def test_mutating_pascal(swap):
+    c = Claim("pascal-mutant", "Pascal, mutated", expected=False)
+    ts = c.params("a b c d e f")
+    P = [c.point(n, t, t**2 + (1 if (swap == "sign" and n == "F") else 0)) for n, t in zip("ABCDEF", ts, strict=True)]
+    A, B, C, D, E, F = P
+    X = c.meet("X", c.join("AB", A, B), c.join("DE", D, E))
+    Y = c.meet("Y", c.join("BC", B, C), c.join("EF", E, F))
+    Z = c.meet("Z", c.join("CD", C, D), c.join("FA", F, A)) if swap == "sign" else \
+        c.meet("Z", c.join("CE", C, E), c.join("FA", F, A))
+    c.conclude_collinear(X, Y, Z)
+    v = prove(c)
+    assert v.refuted and v.counterexample.recheck()
+
+
+def test_mutating_the_harmonic_value():
+    c = Claim("harmonic-mutant", "the harmonic conjugate gives −2", expected=False)
+    A, B, C = (c.free_point1(n) for n in "ABC")
+    D = c.harmonic_conjugate("D", A, B, C)
+    c.conclude_equal_ratio(c.cross_ratio("cr", A, B, C, D), -2)
+    assert prove(c).refuted
+
+
+# -- bad input -------------------------------------------------------------------------------------
+
+@pytest.mark.parametrize("expr", ["sin", "inverse", "root", "float", "undeclared"])
+def test_non_polynomial_conclusions_are_named_errors(expr):
+    c = Claim("bad", "bad")
+    (a,) = c.params("a")
+    value = {"sin": sympy.sin(a), "inverse": 1 / a, "root": sympy.sqrt(2) * a, "float": sympy.Float(0.5) * a,
+             "undeclared": sympy.Symbol("zz")}[expr]
+    with pytest.raises(NonPolynomialClaimError):
+        c.conclude_zero(value)
+
+
+def test_non_polynomial_coordinates_are_named_errors():
+    c = Claim("bad", "bad")
+    (a,) = c.params("a")
+    with pytest.raises(NonPolynomialClaimError, match="not a polynomial"):
+        c.point("P", 1 / a, 1)
+    assert issubclass(NonPolynomialClaimError, PgsymError)
+
+
+def test_undefined_constructions_are_named_errors():
+    c = Claim("bad", "bad")
+    A = c.free_point("A")
+    with pytest.raises(UndefinedConstructionError, match="no object named 'B'"):
+        c.join("l", A, "B")
+    other = Claim("other", "other").free_point("Q")
+    with pytest.raises(UndefinedConstructionError, match="not an object of claim"):
+        c.join("l", A, other)
+    with pytest.raises(UndefinedConstructionError, match="unknown construction"):
+        c.construct("frobnicate", "z", A)
+    with pytest.raises(ObjectTypeError, match="join expects point"):
+        c.join("l", A, c.free_line("m"))
+    with pytest.raises(UnknownClaimError, match="no claim named"):
+        prove("no-such-claim")
+    with pytest.raises(UndefinedConstructionError, match="no conclusion"):
+        prove(Claim("empty", "nothing to prove"))
+
+
+def test_timeout_is_unknown_never_proved():
+    v = prove("pappus", timeout=1e-6)
+    assert v.status == "unknown" and "timed out" in v.reason and v.certificate is None
+
+
+def test_identically_degenerate_construction_is_unknown():
+    c = Claim("self-join", "the join of A with itself contains A")
+    A = c.free_point("A")
+    c.conclude_incident(A, c.join("l", A, A))
+    v = prove(c)
+    assert v.status == "unknown" and "A ≠ A" in v.reason
+
+
+# -- display and JSON ------------------------------------------------------------------------------
+
+def test_markdown_latex_and_json():
+    v = prove("desargues")
+    md = v._repr_markdown_()
+    assert "✔ proved" in md and "Non-degeneracy conditions" in md and "*Time:*" in md
+    assert "*Time:*" not in v.markdown(timing=False)
+    assert v._repr_latex_().startswith("$") and "proved" in v._repr_latex_()
+    data = json.loads(v.to_json())
+    assert data["status"] == "proved" and data["conditions"] and data["certificate"]["steps"]
+    assert "elapsed_ms" in data and "elapsed_ms" not in v.to_dict(timing=False)
+    f = prove("cross-product-sign-flipped")
+    fd = json.loads(f.to_json())
+    assert fd["status"] == "false" and fd["counterexample"]["values"]
+    assert all(Fraction(x) is not None for x in fd["counterexample"]["values"].values())
+    assert "Counterexample" in f.markdown()
+
+
+# -- the shared formulas agree with pgsym and SymPy on random exact inputs -----------------------------
+
+@settings(max_examples=40, deadline=None)
+@given(vec3, vec3)
+def test_cross_matches_the_core(u, v):
+    assert alg.cross(u, v) == tuple(cross(u, v))
+    if alg.cross(u, v) != (0, 0, 0):
+        assert join(Point(*u), Point(*v)) == Point(*u).join(Point(*v))
+
+
+@settings(max_examples=25, deadline=None)
+@given(st.lists(small, min_size=9, max_size=9))
+def test_det_and_adjugate_match_sympy(entries):
+    M = sympy.Matrix(3, 3, entries)
+    rows = tuple(tuple(r) for r in M.tolist())
+    assert alg.det(rows) == M.det()
+    assert sympy.Matrix(alg.adjugate(rows)) == M.adjugate()
+
+
+@settings(max_examples=25, deadline=None)
+@given(st.lists(small, min_size=16, max_size=16))
+def test_plane_through_satisfies_the_determinant_identity(entries):
+    x, a, b, c = (tuple(entries[i:i + 4]) for i in range(0, 16, 4))
+    assert alg.dot(alg.plane_through(a, b, c), x) == sympy.Matrix([x, a, b, c]).det()
+
+
+@settings(max_examples=25, deadline=None)
+@given(st.lists(st.integers(-5, 5), min_size=4, max_size=4, unique=True), st.sampled_from([(0, 1), (1, 0)]))
+def test_cross_ratio_from_a_point_matches_the_line_formula(xs, o):
+    # four points (x, 0) on the x-axis seen from O = (0, 1) or from the ideal point (1, 0, 0)… only O off the
+    # line works; (1, 0) is the x-axis direction, so use (0, 1, 1) and (1, 1, 0) as the two viewpoints
+    a, b, c, d = ((x, 0, 1) for x in xs)
+    view = (0, 1, 1) if o == (0, 1) else (1, 1, 0)
+    num, den = _cross_ratio_p2(a, b, c, d, view)
+    x1, x2, x3, x4 = xs
+    assert sympy.Rational(num, den) == sympy.Rational((x1 - x3) * (x2 - x4), (x1 - x4) * (x2 - x3))
