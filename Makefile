@@ -31,12 +31,13 @@ $(MATHJAX): package.json package-lock.json
 
 mathjax: $(MATHJAX)  ## fetch MathJax 3 from npm
 
-# Debian packages: chromium for the browser test, TeX for the PDF exercise sheets.
-APT_PACKAGES := chromium texlive-latex-extra texlive-fonts-recommended tex-gyre latexmk lmodern
+# Debian packages: chromium for the browser test, TeX for the PDF exercise sheets, pdftotext to read them back.
+APT_PACKAGES := chromium texlive-latex-extra texlive-fonts-recommended tex-gyre latexmk lmodern poppler-utils
 system-deps:  ## install Debian's chromium and TeX (when root), or say how
 	@missing=""; \
 	command -v chromium >/dev/null || missing="$$missing chromium"; \
 	command -v pdflatex >/dev/null && command -v latexmk >/dev/null || missing="$$missing tex"; \
+	command -v pdftotext >/dev/null || missing="$$missing poppler-utils"; \
 	if [ -n "$$missing" ]; then \
 	  if [ "$$(id -u)" = 0 ] && command -v apt-get >/dev/null; then \
 	    echo "installing Debian packages for:$$missing"; \

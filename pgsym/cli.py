@@ -113,6 +113,11 @@ from .vision_cli import harris_command, rectify_command  # noqa: E402
 main.add_command(harris_command)
 main.add_command(rectify_command)
 main.add_command(prove_command)
+from .exercises_cli import check_command, sheet_command, templates_group  # noqa: E402
+
+main.add_command(sheet_command)
+main.add_command(check_command)
+main.add_command(templates_group)
 
 
 if __name__ == "__main__":  # pragma: no cover

@@ -16,6 +16,7 @@ CoincidentPointsError
 from __future__ import annotations
 
 __all__ = [
+    "AnswersFileError",
     "CoincidentLinesError",
     "CoincidentPointsError",
     "CollinearPointsError",
@@ -27,6 +28,8 @@ __all__ = [
     "IdealPointError",
     "ImageError",
     "InvalidCoordinatesError",
+    "ManifestError",
+    "MathJaxMissingError",
     "NonNumericError",
     "NonPolynomialClaimError",
     "NotAPencilError",
@@ -36,11 +39,17 @@ __all__ = [
     "NotSkewSymmetricError",
     "ObjectTypeError",
     "OptionError",
+    "OutputError",
     "PgsymError",
+    "RosterError",
     "SingularTransformationError",
+    "TeXFailedError",
+    "TeXMissingError",
+    "TemplateError",
     "UndefinedConstructionError",
     "UndefinedCrossRatioError",
     "UnknownClaimError",
+    "UnknownTopicError",
     "UnparsableAnswerError",
     "ZeroCoordinateError",
     "ZeroVectorError",
@@ -157,3 +166,42 @@ class UndefinedConstructionError(ObjectTypeError):
 
 class UnknownClaimError(UndefinedConstructionError):
     """No claim of that name is in the catalogue."""
+
+
+class OutputError(PgsymError, OSError):
+    """The output folder cannot be created or written."""
+
+
+class RosterError(PgsymError, ValueError):
+    """A roster CSV that cannot be read (no id column, empty, duplicate or blank ids)."""
+
+
+class ManifestError(PgsymError, ValueError):
+    """A manifest file that is missing, not JSON, or not a pgsym exercise manifest."""
+
+
+class MathJaxMissingError(PgsymError, FileNotFoundError):
+    """No local copy of MathJax was found for the HTML sheets."""
+
+
+class AnswersFileError(PgsymError, ValueError):
+    """An answers CSV that cannot be read (missing, not CSV, no id column)."""
+
+
+class UnknownTopicError(PgsymError, KeyError):
+    """A topic name that no built-in or instructor template provides."""
+
+    def __str__(self) -> str:  # KeyError would quote the message
+        return str(self.args[0]) if self.args else ""
+
+
+class TemplateError(DegenerateConfigurationError):
+    """A template produced an instance that fails its own checks (degenerate, wrong or too large)."""
+
+
+class TeXMissingError(PgsymError, RuntimeError):
+    """pdflatex (or latexmk) is not installed, so no PDF can be made."""
+
+
+class TeXFailedError(PgsymError, RuntimeError):
+    """pdflatex ran but failed; the message holds the end of its log."""

@@ -1,0 +1,114 @@
+"""Benchmark: exercise sheets for a class, the stress check of one template, and grading.
+
+Prints one JSON line per case:
+
+* ``sheets``: 200 students × 8 exercises with solutions, built and rendered to Markdown, LaTeX and
+  Moodle XML (budget 10 s);
+* ``stress``: ``pgsym templates check join`` over 10⁴ seeds (one instance per seed, the levels in
+  turn; budget 30 s);
+* ``grading``: grading 200 × 8 typed answers with the hand-written parser and canonical forms
+  (``ours_s``) against the naive route (``baseline_s``): ``sympy.sympify`` of the typed text and an
+  up-to-scale test by the rank of the 2-row matrix [answer; key]. The baseline evaluates the
+  student's text as a SymPy expression, which is exactly what the parser exists to avoid; it is
+  here only to show the price of the naive route.
+"""
+
+from __future__ import annotations
+
+import json
+import tempfile
+import time
+from pathlib import Path
+
+TOPICS = ["homogeneous", "join", "meet:2", "ideal:2", "apply-point:2", "cross-ratio", "plane3", "classify:2"]
+
+
+def _sheets_once() -> tuple[float, int]:
+    from pgsym.exercises.output import render_all
+    from pgsym.exercises.sheets import anonymous_students, build_sheets, parse_topics
+
+    t0 = time.perf_counter()
+    pairs = parse_topics(TOPICS)
+    sheets = build_sheets(pairs, anonymous_students(200), master_seed=2026)
+    with tempfile.TemporaryDirectory() as tmp:
+        files = render_all(sheets, pairs, ["md", "tex", "moodle"], Path(tmp), solutions=True)
+    return time.perf_counter() - t0, len(files)
+
+
+def _sheets() -> tuple[float, float, int]:
+    """(first run, which also imports the templates and SymPy; best of three warm runs; files)."""
+    cold, files = _sheets_once()
+    return cold, min(_sheets_once()[0] for _ in range(3)), files
+
+
+def _stress() -> tuple[float, int, bool]:
+    from pgsym.exercises.stress import stress
+    from pgsym.exercises.template import get_template
+
+    t0 = time.perf_counter()
+    report = stress(get_template("join"), seeds=10_000)
+    return time.perf_counter() - t0, report.instances, report.ok
+
+
+def _answers() -> list[tuple[object, str]]:
+    from pgsym.exercises.sheets import anonymous_students, build_sheets
+
+    sheets = build_sheets(TOPICS, anonymous_students(200), master_seed=7)
+    out = []
+    for i, sheet in enumerate(sheets):
+        for ex in sheet.exercises:
+            for part in ex.parts:
+                if part.answer.kind in ("projective", "vector", "scalar", "integer"):
+                    text = part.answer.display()
+                    if part.answer.kind == "projective" and i % 2:
+                        text = "(" + ", ".join(str(-3 * v) for v in part.answer.value) + ")"
+                    out.append((part.answer, text))
+    return out
+
+
+def _grade_ours(items: list) -> tuple[float, int]:
+    from pgsym.exercises.answers import grade
+
+    t0 = time.perf_counter()
+    right = sum(grade(answer, text) for answer, text in items)
+    return time.perf_counter() - t0, right
+
+
+def _grade_naive(items: list) -> tuple[float, int]:
+    import sympy
+
+    t0 = time.perf_counter()
+    right = 0
+    for answer, text in items:
+        value = sympy.sympify(text)  # the naive route: evaluates the typed text
+        got = list(value) if isinstance(value, (tuple, sympy.Tuple)) else [value]
+        key = [sympy.Rational(str(v)) for v in answer.flat()]
+        if answer.kind == "projective":
+            ok = len(got) == len(key) and sympy.Matrix([got, key]).rank() == 1
+        else:
+            ok = len(got) == len(key) and all(sympy.Rational(g) == k for g, k in zip(got, key, strict=True))
+        right += bool(ok)
+    return time.perf_counter() - t0, right
+
+
+def main() -> None:
+    cold, seconds, files = _sheets()
+    print(json.dumps({"bench": "exercises", "case": "200 students x 8 exercises with solutions -> md + tex + moodle",
+                      "ours_s": round(seconds, 3), "cold_s": round(cold, 3), "files": files, "budget_s": 10.0,
+                      "within_budget": cold <= 10.0}), flush=True)
+    seconds, instances, ok = _stress()
+    print(json.dumps({"bench": "exercises", "case": "stress of template 'join' over 10^4 seeds (levels in turn)",
+                      "ours_s": round(seconds, 3), "instances": instances, "all_ok": ok, "budget_s": 30.0,
+                      "within_budget": seconds <= 30.0}), flush=True)
+    items = _answers()
+    ours, right = _grade_ours(items)
+    base, base_right = _grade_naive(items)
+    print(json.dumps({"bench": "exercises", "case": f"grading {len(items)} typed answers",
+                      "ours_s": round(ours, 4), "right": right,
+                      "baseline": "sympy.sympify of the typed text + Matrix.rank up to scale",
+                      "baseline_s": round(base, 3), "baseline_right": base_right, "ratio": round(base / ours)}),
+          flush=True)
+
+
+if __name__ == "__main__":
+    main()

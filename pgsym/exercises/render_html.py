@@ -1,0 +1,86 @@
+"""HTML renderer: one self-contained page per sheet, math typeset by a local copy of MathJax.
+
+The page loads ``mathjax/tex-chtml.js`` relative to itself; :func:`copy_mathjax` copies MathJax's
+``es5`` folder there (from ``--mathjax DIR``, the ``PGSYM_MATHJAX`` variable, or a ``node_modules``/
+``_mathjax`` folder of the project). No CDN is used.
+
+>>> from pgsym.exercises.sheets import build_sheet
+>>> page = render_sheet(build_sheet(["ideal"], "s1", "", 1), solutions=True)
+>>> 'src="mathjax/tex-chtml.js"' in page and "<details>" in page
+True
+"""
+
+from __future__ import annotations
+
+import html
+import os
+import shutil
+from pathlib import Path
+
+from ..errors import MathJaxMissingError
+from ._text import to_html
+from .model import KIND_HINTS, Sheet
+
+MATHJAX_DIR = "mathjax"
+
+
+
+STYLE = """body{font-family:system-ui,sans-serif;max-width:48em;margin:2em auto;padding:0 1em;line-height:1.5}
+.form{color:#555}.part{margin:.6em 0}details{background:#f4f6f8;padding:.4em .8em;border-radius:4px}
+ol.choices{list-style-type:upper-alpha}"""
+
+
+def render_sheet(sheet: Sheet, solutions: bool = False, mathjax: str = f"{MATHJAX_DIR}/tex-chtml.js") -> str:
+    """The HTML page of one sheet; ``mathjax`` is the (relative) address of ``tex-chtml.js``."""
+    who = html.escape(sheet.student_name or sheet.student_id)
+    out = ["<!DOCTYPE html>", '<html lang="en">', "<head>", '<meta charset="utf-8">',
+           f"<title>Exercise sheet: {who}</title>", f"<style>{STYLE}</style>",
+           "<script>window.MathJax = {tex: {inlineMath: [['\\\\(', '\\\\)']], displayMath: [['\\\\[', '\\\\]']]}};"
+           "</script>", f'<script id="MathJax-script" async src="{html.escape(mathjax)}"></script>', "</head>",
+           "<body>", f"<h1>Exercise sheet: {who}</h1>",
+           f'<p class="form">Student id: <code>{html.escape(sheet.student_id)}</code> · Form id: '
+           f"<code>{sheet.form_id}</code></p>",
+           "<p>Give exact answers; homogeneous coordinates are accepted up to a nonzero scale.</p>"]
+    for ex in sheet.exercises:
+        out.append(f"<h2>Exercise {ex.slot}: {html.escape(ex.title)}</h2>")
+        out.append(f"<p>{to_html(ex.statement)}</p>")
+        for part in ex.parts:
+            out.append(f'<div class="part"><b>[{part.label}]</b> {to_html(part.prompt)} '
+                       f"<i>Answer format: {html.escape(KIND_HINTS[part.answer.kind])}.</i>")
+            if part.choices:
+                out.append('<ol class="choices">' + "".join(f"<li>{to_html(c)}</li>" for c in part.choices) + "</ol>")
+            out.append("</div>")
+        if solutions:
+            out.append("<details><summary>Solution</summary><ol>")
+            out += [f"<li>{to_html(step)}</li>" for step in ex.solution]
+            out.append("</ol>")
+            out += [f"<p><b>Answer [{p.label}]:</b> \\({html.escape(p.answer.latex(), quote=False)}\\)</p>"
+                    for p in ex.parts]
+            out.append("</details>")
+    out += ["</body>", "</html>"]
+    return "\n".join(out) + "\n"
+
+
+def find_mathjax(explicit: str | Path | None = None) -> Path:
+    """The folder holding ``tex-chtml.js`` (MathJax 3's ``es5`` folder)."""
+    candidates: list[Path] = []
+    if explicit:
+        candidates.append(Path(explicit))
+    if os.environ.get("PGSYM_MATHJAX"):
+        candidates.append(Path(os.environ["PGSYM_MATHJAX"]))
+    for base in (Path.cwd(), Path(__file__).resolve().parents[2]):
+        candidates += [base / "node_modules" / "mathjax" / "es5", base / "_mathjax" / "_static" / "mathjax"]
+    for c in candidates:
+        if (c / "tex-chtml.js").is_file():
+            return c
+        if explicit and c == Path(explicit):
+            raise MathJaxMissingError(f"{str(c)!r} has no tex-chtml.js; give MathJax 3's es5 folder "
+                                      "(node_modules/mathjax/es5 after 'npm install mathjax@3')")
+    raise MathJaxMissingError("no local MathJax found for the HTML sheets: install it with 'npm install mathjax@3' "
+                              "and pass --mathjax node_modules/mathjax/es5 (or set PGSYM_MATHJAX)")
+
+
+def copy_mathjax(target: Path, source: str | Path | None = None) -> None:
+    """Copy the MathJax files the sheets need (the es5 folder) to ``target/mathjax``."""
+    src = find_mathjax(source)
+    shutil.copytree(src, target / MATHJAX_DIR, dirs_exist_ok=True)

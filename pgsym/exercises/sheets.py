@@ -1,0 +1,175 @@
+"""Building the sheets of a class: topics × students → :class:`~pgsym.exercises.model.Sheet` objects,
+the roster reader and the JSON manifest.
+
+>>> sheets = build_sheets(["join", "meet:2"], [("s1", "Ada"), ("s2", "Alan")], master_seed=7)
+>>> [len(s.exercises) for s in sheets], sheets[0].exercises[1].level
+([2, 2], 2)
+>>> sheets[0].form_id != sheets[1].form_id
+True
+"""
+
+from __future__ import annotations
+
+import csv
+import io
+import json
+from collections.abc import Callable, Iterable, Sequence
+from pathlib import Path
+from typing import Any
+
+from ..errors import ManifestError, RosterError
+from .model import Answer, Sheet
+from .seeds import form_id, slot_keys, variant_seed
+from .template import TemplateError, get_template
+
+MANIFEST_VERSION = 1
+
+
+
+
+def parse_topics(spec: str | Sequence[str], default_level: int = 1) -> list[tuple[str, int]]:
+    """Read ``"join,meet:2"`` (or a list of such items) into (topic, level) pairs; unknown topics raise.
+
+    >>> parse_topics("join, meet:2")
+    [('join', 1), ('meet', 2)]
+    """
+    items = spec.split(",") if isinstance(spec, str) else list(spec)
+    out = []
+    for item in (i.strip() for i in items):
+        if not item:
+            continue
+        name, _, level = item.partition(":")
+        template = get_template(name.strip())
+        try:
+            lvl = int(level) if level else default_level
+        except ValueError:
+            raise TemplateError(f"level {level!r} of topic {name!r} is not an integer") from None
+        if lvl not in template.levels:
+            raise TemplateError(f"topic {name!r} has levels {list(template.levels)}, not {lvl}")
+        out.append((template.name, lvl))
+    if not out:
+        raise TemplateError("no topics given; e.g. --topics join,meet:2")
+    return out
+
+
+def build_sheet(topics: Sequence[tuple[str, int]] | Sequence[str], student_id: str, student_name: str,
+                master_seed: int) -> Sheet:
+    """The sheet of one student.
+
+    >>> build_sheet(["join"], "s1", "Ada", 1).exercises[0].topic
+    'join'
+    """
+    pairs = [parse_topics([t])[0] if isinstance(t, str) else t for t in topics]
+    keys = slot_keys([t for t, _ in pairs])
+    exercises = []
+    for slot, ((topic, level), key) in enumerate(zip(pairs, keys, strict=True), start=1):
+        seed = variant_seed(master_seed, student_id, f"{key}@{level}")
+        exercises.append(get_template(topic).generate(seed, level, slot))
+    return Sheet(student_id, student_name, form_id(master_seed, student_id, [f"{k}@{lv}" for k, (_, lv) in
+                                                                              zip(keys, pairs, strict=True)]),
+                 master_seed, tuple(exercises))
+
+
+def build_sheets(topics: Sequence[tuple[str, int]] | Sequence[str], students: Iterable[tuple[str, str]],
+                 master_seed: int, progress: Callable[[int], None] | None = None) -> list[Sheet]:
+    """The sheets of every student (``progress(1)`` is called after each one).
+
+    >>> [s.student_id for s in build_sheets(["meet"], [("a", ""), ("b", "")], 3)]
+    ['a', 'b']
+    """
+    sheets = []
+    for sid, name in students:
+        sheets.append(build_sheet(topics, sid, name, master_seed))
+        if progress is not None:
+            progress(1)
+    return sheets
+
+
+def anonymous_students(count: int) -> list[tuple[str, str]]:
+    """Ids ``form-001`` … for sheets without a roster.
+
+    >>> anonymous_students(2)
+    [('form-001', ''), ('form-002', '')]
+    """
+    width = max(3, len(str(count)))
+    return [(f"form-{i:0{width}d}", "") for i in range(1, count + 1)]
+
+
+def read_roster(path: str | Path) -> list[tuple[str, str]]:
+    """Read a roster CSV with a header: an ``id`` (or ``student_id``) column and optionally ``name``.
+
+    >>> import tempfile, os
+    >>> with tempfile.TemporaryDirectory() as d:
+    ...     p = os.path.join(d, "r.csv")
+    ...     _ = open(p, "w").write("id,name\\ns1,Ada\\ns2,Alan\\n")
+    ...     read_roster(p)
+    [('s1', 'Ada'), ('s2', 'Alan')]
+    """
+    p = Path(path)
+    try:
+        text = p.read_text(encoding="utf-8-sig")
+    except (OSError, UnicodeDecodeError) as err:
+        raise RosterError(f"cannot read the roster {str(p)!r}: {err}") from None
+    reader = csv.DictReader(io.StringIO(text))
+    fields = [f.strip().lower() for f in (reader.fieldnames or [])]
+    id_col = next((f for f in ("id", "student_id", "student") if f in fields), None)
+    if id_col is None:
+        raise RosterError(f"the roster {p.name!r} needs a header row with an 'id' column (found: {fields or 'none'}); "
+                          "e.g.\n  id,name\n  s001,Ada Lovelace")
+    original = {f.strip().lower(): f for f in reader.fieldnames or []}
+    students, seen = [], set()
+    for row_number, row in enumerate(reader, start=2):
+        sid = (row.get(original[id_col]) or "").strip()
+        if not sid:
+            raise RosterError(f"row {row_number} of {p.name!r} has no student id")
+        if len(sid) > 100:
+            raise RosterError(f"row {row_number} of {p.name!r}: the id is longer than 100 characters")
+        if sid in seen:
+            raise RosterError(f"row {row_number} of {p.name!r}: the id {sid!r} appears twice")
+        seen.add(sid)
+        name = (row.get(original["name"]) or "").strip() if "name" in original else ""
+        students.append((sid, name))
+    if not students:
+        raise RosterError(f"the roster {p.name!r} lists no students")
+    return students
+
+
+def manifest(sheets: Sequence[Sheet], topics: Sequence[tuple[str, int]]) -> dict[str, Any]:
+    """The JSON manifest: parameters and answers of every variant of every student."""
+    return {
+        "format": "pgsym-exercises",
+        "version": MANIFEST_VERSION,
+        "master_seed": sheets[0].master_seed if sheets else None,
+        "topics": [{"topic": t, "level": lv} for t, lv in topics],
+        "students": [
+            {"id": s.student_id, "name": s.student_name, "form_id": s.form_id,
+             "exercises": [e.to_json() for e in s.exercises]}
+            for s in sheets
+        ],
+    }
+
+
+def manifest_json(sheets: Sequence[Sheet], topics: Sequence[tuple[str, int]]) -> str:
+    """The manifest as deterministic JSON text."""
+    return json.dumps(manifest(sheets, topics), indent=1, sort_keys=True, ensure_ascii=False) + "\n"
+
+
+def load_manifest(path: str | Path) -> dict[str, dict[str, Answer]]:
+    """Read a manifest: student id → {question label → expected answer}."""
+    p = Path(path)
+    try:
+        data = json.loads(p.read_text(encoding="utf-8"))
+    except FileNotFoundError:
+        raise ManifestError(f"the manifest {str(p)!r} does not exist") from None
+    except (OSError, UnicodeDecodeError, json.JSONDecodeError) as err:
+        raise ManifestError(f"the manifest {str(p)!r} is not readable JSON: {err}") from None
+    if not isinstance(data, dict) or data.get("format") != "pgsym-exercises":
+        raise ManifestError(f"{str(p)!r} is not a pgsym exercise manifest (written by 'pgsym sheet')")
+    keys: dict[str, dict[str, Answer]] = {}
+    try:
+        for student in data["students"]:
+            keys[str(student["id"])] = {part["label"]: Answer.from_json(part)
+                                        for ex in student["exercises"] for part in ex["parts"]}
+    except (KeyError, TypeError, ValueError) as err:
+        raise ManifestError(f"the manifest {str(p)!r} is damaged: {type(err).__name__}: {err}") from None
+    return keys

@@ -1,0 +1,261 @@
+"""The instructor commands of the ``pgsym`` command line: ``sheet``, ``check`` and ``templates``.
+
+They live apart from :mod:`pgsym.cli` so that ``import pgsym`` never loads the exercise package.
+"""
+
+from __future__ import annotations
+
+import keyword
+import re
+import sys
+from pathlib import Path
+
+import click
+
+from .errors import PgsymError
+
+_EPILOG_SHEET = """\b
+Examples:
+  pgsym sheet --topics join,meet:2,cross-ratio --count 30 --seed 2026 --format md,pdf --out week4
+  pgsym sheet --topics homography4:2,decompose --roster students.csv --seed 7 \\
+              --format html,ipynb,moodle --solutions --out quiz
+  pgsym sheet --templates my_templates --topics midpoint --count 5 --seed 1 --out demo
+
+\b
+Topics are template names, optionally with a level (topic:level); 'pgsym templates list' shows them.
+A variant is fixed by (seed, student id, topic and its occurrence), so reordering or adding topics
+keeps the other exercises. The output folder must be new or empty; it holds manifest.json (the
+answer key, used by 'pgsym check') and md/, html/, ipynb/, sheets.tex, sheets.pdf, moodle.xml."""
+
+_EPILOG_CHECK = """\b
+Examples:
+  pgsym check --manifest week4/manifest.json --answers answers.csv
+  pgsym check --manifest week4/manifest.json --answers answers.csv --out grades.csv
+
+\b
+answers.csv is either wide (header: id,1,2,3a,3b,...; one row per student) or long
+(header: id,question,answer). Homogeneous answers are right up to a nonzero scale; fractions
+such as -2/3, decimals and 0 are read exactly; nothing typed is ever evaluated as code."""
+
+
+def _fail(err: Exception) -> click.ClickException:
+    return click.ClickException(f"{type(err).__name__}: {err}")
+
+
+def _load_folders(folders: tuple[str, ...]) -> None:
+    from .exercises.template import load_template_folder
+
+    for folder in folders:
+        try:
+            load_template_folder(folder)
+        except PgsymError as err:
+            raise _fail(err) from None
+
+
+def _progress(total: int, label: str, show: bool):  # type: ignore[no-untyped-def]
+    if show:
+        return click.progressbar(length=total, label=label, file=sys.stderr)
+    return _NoBar()
+
+
+class _NoBar:
+    def __enter__(self) -> _NoBar:
+        return self
+
+    def __exit__(self, *args: object) -> None:
+        return None
+
+    def update(self, n: int) -> None:
+        return None
+
+
+@click.command("sheet", epilog=_EPILOG_SHEET)
+@click.option("--topics", required=True, help="Comma-separated topics, each optionally topic:level.")
+@click.option("--count", type=click.IntRange(1, 100_000), default=1, show_default=True,
+              help="Number of anonymous forms (ignored with --roster).")
+@click.option("--seed", type=int, default=0, show_default=True, help="Master seed of the whole set.")
+@click.option("--roster", type=click.Path(dir_okay=False), help="CSV with an 'id' column (and optionally 'name').")
+@click.option("--format", "formats", default="md", show_default=True,
+              help="Comma-separated: md,tex,pdf,html,ipynb,moodle.")
+@click.option("--level", type=click.IntRange(1, 9), default=1, show_default=True,
+              help="Level of topics given without one.")
+@click.option("--solutions", is_flag=True, help="Include worked solutions and answers.")
+@click.option("--out", "out", required=True, type=click.Path(file_okay=False), help="New (or empty) output folder.")
+@click.option("--templates", "template_dirs", multiple=True, type=click.Path(file_okay=False),
+              help="Folder of instructor templates (*.py); may be repeated.")
+@click.option("--mathjax", type=click.Path(file_okay=False),
+              help="MathJax 3 es5 folder for HTML (copied next to the pages).")
+@click.option("--progress/--no-progress", default=None, help="Show a progress bar (default: for 50 sheets or more).")
+def sheet_command(topics: str, count: int, seed: int, roster: str | None, formats: str, level: int, solutions: bool,
+                  out: str, template_dirs: tuple[str, ...], mathjax: str | None, progress: bool | None) -> None:
+    """Generate per-student exercise sheets, their answer key and renderings."""
+    from .exercises.output import parse_formats, render_all, write_atomically
+    from .exercises.sheets import anonymous_students, build_sheets, parse_topics, read_roster
+
+    _load_folders(template_dirs)
+    try:
+        fmt = parse_formats(formats)
+    except ValueError as err:
+        raise click.BadParameter(str(err), param_hint="--format") from None
+    try:
+        pairs = parse_topics(topics, level)
+        students = read_roster(roster) if roster else anonymous_students(count)
+        show = progress if progress is not None else len(students) >= 50
+        with _progress(len(students), "building sheets", show) as bar:
+            sheets = build_sheets(pairs, students, seed, progress=bar.update)
+        with _progress(len(students), "rendering", show) as bar:
+            target = write_atomically(out, lambda tmp: render_all(sheets, pairs, fmt, tmp, solutions, mathjax,
+                                                                  progress=bar.update))
+    except PgsymError as err:
+        raise _fail(err) from None
+    click.echo(f"{len(sheets)} sheet(s) × {len(pairs)} exercise(s) → {target} ({', '.join(fmt)}; manifest.json)")
+
+
+@click.command("check", epilog=_EPILOG_CHECK)
+@click.option("--manifest", required=True, type=click.Path(dir_okay=False),
+              help="manifest.json written by 'pgsym sheet'.")
+@click.option("--answers", required=True, type=click.Path(dir_okay=False), help="CSV of typed answers.")
+@click.option("--out", type=click.Path(dir_okay=False), help="Also write every graded answer to this CSV.")
+@click.option("--details", is_flag=True, help="Print every wrong or unreadable answer.")
+def check_command(manifest: str, answers: str, out: str | None, details: bool) -> None:
+    """Grade the answers of every student against the manifest."""
+    from .exercises.grading import grade_rows, read_answers, results_csv, summary
+    from .exercises.sheets import load_manifest
+
+    try:
+        keys = load_manifest(manifest)
+        report = grade_rows(keys, read_answers(answers))
+    except PgsymError as err:
+        raise _fail(err) from None
+    click.echo("student,right,questions")
+    for student, right, total in summary(report):
+        click.echo(f"{student},{right},{total}")
+    unreadable = [r for rs in report.values() for r in rs if r.reason.startswith("cannot read")]
+    for rs in report.values():
+        for r in rs:
+            if r.reason and (details or r.reason.startswith("cannot read") or "manifest" in r.reason):
+                click.echo(f"  {r.student} [{r.label}]: {r.reason}", err=True)
+    if unreadable:
+        click.echo(f"{len(unreadable)} answer(s) could not be read and count as wrong (see above).", err=True)
+    if out:
+        try:
+            Path(out).write_text(results_csv(report), encoding="utf-8")
+        except OSError as err:
+            raise click.ClickException(f"cannot write {out!r}: {err.strerror or err}") from None
+
+
+@click.group("templates")
+def templates_group() -> None:
+    """List, create and stress-test exercise templates."""
+
+
+@templates_group.command("list")
+@click.option("--templates", "template_dirs", multiple=True, type=click.Path(file_okay=False))
+def templates_list(template_dirs: tuple[str, ...]) -> None:
+    """List the known topics with their levels."""
+    from .exercises.template import all_templates
+
+    _load_folders(template_dirs)
+    for name, t in sorted(all_templates().items()):
+        click.echo(f"{name:14s} levels {','.join(map(str, t.levels))}  {t.title}")
+
+
+_SKELETON = '''"""Instructor template {name!r}: the midpoint of two points (a working skeleton to edit).
+
+Use it with:  pgsym sheet --templates {folder} --topics {name} --count 3 --seed 1 --out demo
+Check it with: pgsym templates check {name} --templates {folder}
+"""
+
+from fractions import Fraction
+
+from pgsym.exercises.model import Answer
+from pgsym.exercises.template import Draft, Template, check
+from pgsym.exercises.model import tuple_latex
+from pgsym.projective_plane import Point
+
+
+class {cls}(Template):
+    """The midpoint of two points. Level 1: integer midpoint; level 2: fractions allowed."""
+
+    name = "{name}"
+    title = "The midpoint of two points"
+    levels = (1, 2)
+    max_entry = 100
+
+    def build(self, rng, level):
+        # build backwards from the answer: choose the midpoint m and an offset d, then p = m - d, q = m + d
+        step = Fraction(1) if level == 1 else Fraction(1, 2)
+        m = (rng.randint(-5, 5) * step, rng.randint(-5, 5) * step)
+        d = (rng.randint(1, 4), rng.randint(-4, 4))  # d != 0, so p != q
+        p = (m[0] - d[0], m[1] - d[1])
+        q = (m[0] + d[0], m[1] + d[1])
+        statement = f"Let $p = {{tuple_latex(p)}}$ and $q = {{tuple_latex(q)}}$."
+        prompt = "Give the midpoint of $p$ and $q$."
+        steps = [f"$\\\\tfrac{{1}}{{2}}(p + q) = {{tuple_latex(m)}}$."]
+        return Draft(statement, [(prompt, Answer.vector(m), ())], steps,
+                     {{"p": [str(x) for x in p], "q": [str(x) for x in q]}})
+
+    def verify(self, exercise):
+        # re-check with pgsym, independently of build(): the midpoint lies on the line pq, half-way
+        p = Point(*(Fraction(x) for x in exercise.params["p"]))
+        q = Point(*(Fraction(x) for x in exercise.params["q"]))
+        check(p != q, "the two points coincide")
+        m = exercise.parts[0].answer.value
+        (px, py), (qx, qy) = p.dehomogenize(), q.dehomogenize()
+        check(2 * m[0] == px + qx and 2 * m[1] == py + qy, "wrong midpoint")
+'''
+
+
+@templates_group.command("new")
+@click.argument("name")
+@click.option("--dir", "folder", default="templates", show_default=True, type=click.Path(file_okay=False),
+              help="Folder to write NAME.py into (created if missing).")
+def templates_new(name: str, folder: str) -> None:
+    """Write a working template skeleton NAME.py (the midpoint of two points) to edit.
+
+    Example: pgsym templates new midpoint --dir my_templates
+    """
+    if not re.fullmatch(r"[a-z][a-z0-9_]{0,40}", name) or keyword.iskeyword(name):
+        raise click.BadParameter("use lower-case letters, digits and '_', starting with a letter", param_hint="NAME")
+    path = Path(folder) / f"{name}.py"
+    if path.exists():
+        raise click.ClickException(f"{path} exists already; choose another name or delete it")
+    cls = "".join(part.capitalize() for part in name.split("_")) + "Template"
+    try:
+        path.parent.mkdir(parents=True, exist_ok=True)
+        path.write_text(_SKELETON.format(name=name, cls=cls, folder=folder), encoding="utf-8")
+    except OSError as err:
+        raise click.ClickException(f"cannot write {path}: {err.strerror or err}") from None
+    click.echo(f"wrote {path}; try: pgsym templates check {name} --templates {folder}")
+
+
+@templates_group.command("check")
+@click.argument("name", required=False)
+@click.option("--seeds", type=click.IntRange(1, 1_000_000), default=10_000, show_default=True,
+              help="Number of seeds (one instance each, cycling through the levels).")
+@click.option("--templates", "template_dirs", multiple=True, type=click.Path(file_okay=False))
+@click.option("--progress/--no-progress", default=None, help="Show a progress bar (default: on a terminal).")
+def templates_check(name: str | None, seeds: int, template_dirs: tuple[str, ...], progress: bool | None) -> None:
+    """Stress-test one template (or all): degenerate instances, independent re-verification, answer sizes,
+    multiple-choice key spread.
+
+    Example: pgsym templates check join --seeds 10000
+    """
+    from .exercises.stress import stress
+    from .exercises.template import all_templates, get_template
+
+    _load_folders(template_dirs)
+    try:
+        templates = [get_template(name)] if name else list(all_templates().values())
+    except PgsymError as err:
+        raise _fail(err) from None
+    failed = False
+    for t in templates:
+        show = progress if progress is not None else sys.stderr.isatty()
+        with _progress(seeds, f"{t.name}", show) as bar:
+            report = stress(t, seeds, progress=bar.update)
+        for line in report.lines():
+            click.echo(line)
+        failed = failed or not report.ok
+    if failed:
+        raise click.ClickException("some template checks failed (see above)")

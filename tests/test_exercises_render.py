@@ -1,0 +1,177 @@
+"""Every renderer from one internal representation; byte-identical output for the same seed; the PDF."""
+
+from __future__ import annotations
+
+import json
+import re
+import shutil
+import subprocess
+import zlib
+from pathlib import Path
+from xml.etree import ElementTree
+
+import pytest
+
+from pgsym.exercises import render_html, render_ipynb, render_md, render_moodle, render_tex
+from pgsym.exercises.output import OutputError, render_all, write_atomically
+from pgsym.exercises.render_tex import TeXMissingError, compile_pdf
+from pgsym.exercises.sheets import build_sheets
+
+TOPICS = ["join", "meet:2", "incidence:2", "classify:3", "cross-ratio:3", "decompose:3"]
+STUDENTS = [("s001", "Ada Lovelace"), ("s002", "Alan_Turing & Co")]
+
+
+@pytest.fixture(scope="module")
+def sheets():
+    return build_sheets(TOPICS, STUDENTS, master_seed=2026)
+
+
+def test_markdown_page(sheets):
+    page = render_md.render_sheet(sheets[0], solutions=False)
+    assert page.startswith("# Exercise sheet: Ada Lovelace (s001)")
+    assert sheets[0].form_id in page
+    for ex in sheets[0].exercises:
+        assert ex.statement in page and f"## Exercise {ex.slot}: {ex.title}" in page
+    assert "Solution" not in page and "Answer [" not in page
+    with_solutions = render_md.render_sheet(sheets[0], solutions=True)
+    assert with_solutions.count("```{admonition} Solution") == len(TOPICS)
+    assert ":class: dropdown" in with_solutions
+
+
+def test_latex_document(sheets):
+    tex = render_tex.render_document(sheets, solutions=True)
+    assert tex.count(r"\section*{Exercise sheet:") == 2 and r"\solutionstrue" in tex
+    assert r"Alan\_Turing \& Co" in tex  # prose is escaped
+    assert r"\begin{bmatrix}" in tex  # math is kept
+    assert r"\solutionsfalse" in render_tex.render_document(sheets, solutions=False)
+    assert r"\textbf{Solution.}" not in render_tex.render_document(sheets, solutions=False)
+
+
+def test_html_page_uses_local_mathjax(sheets):
+    page = render_html.render_sheet(sheets[1], solutions=True)
+    assert 'src="mathjax/tex-chtml.js"' in page and "http" not in page
+    assert "Alan_Turing &amp; Co" in page and "<details>" in page
+    assert page.count("<h2>") == len(TOPICS)
+
+
+def test_notebook_is_valid_and_checks_answers(sheets, capsys):
+    nb = json.loads(render_ipynb.render_sheet(sheets[0], solutions=False))
+    # the fields nbformat 4.5 requires (full schema validation is slow to import, so checked by hand)
+    assert (nb["nbformat"], nb["nbformat_minor"]) == (4, 5) and nb["metadata"]["kernelspec"]["name"] == "python3"
+    assert all({"cell_type", "id", "metadata", "source"} <= set(c) for c in nb["cells"])
+    assert all(c["outputs"] == [] for c in nb["cells"] if c["cell_type"] == "code")
+    setup = "".join(nb["cells"][1]["source"])
+    namespace: dict = {}
+    exec(setup, namespace)  # our own generated code (the student's self-check helper), not user input
+    first = sheets[0].exercises[0].parts[0]
+    namespace["check"](first.label, first.answer.display())
+    namespace["check"](first.label, "(1, 2, 3)" if first.answer.display() != "(1, 2, 3)" else "(1, 2, 4)")
+    out = capsys.readouterr().out.splitlines()
+    assert out == [f"{first.label} right", f"{first.label} not right yet"]
+    assert first.answer.display() not in setup  # the key itself is not in the notebook
+
+
+def test_moodle_xml(sheets):
+    xml = render_moodle.render_quiz(sheets, solutions=True)
+    root = ElementTree.fromstring(xml.encode())
+    categories = root.findall("question[@type='category']")
+    questions = root.findall("question[@type='cloze']")
+    assert len(categories) == len(TOPICS) and len(questions) == len(TOPICS) * len(STUDENTS)
+    text = questions[0].find("questiontext/text").text
+    assert "{1:NUMERICAL:=" in text and r"\(" in text
+    choice = root.findall("question[@type='cloze']")[2 * len(STUDENTS)].find("questiontext/text").text
+    assert "{1:MULTICHOICE:" in choice
+
+
+def _render(tmp: Path, formats, sheets, **kw) -> dict[str, bytes]:
+    render_all(sheets, [(t.split(":")[0], int(t.split(":")[1]) if ":" in t else 1) for t in TOPICS], formats, tmp, **kw)
+    return {str(p.relative_to(tmp)): p.read_bytes() for p in sorted(tmp.rglob("*")) if p.is_file()
+            and "mathjax" not in p.parts}
+
+
+def test_same_seed_gives_byte_identical_outputs(tmp_path):
+    formats = ["md", "tex", "html", "ipynb", "moodle"]
+    a = _render(tmp_path / "a", formats, build_sheets(TOPICS, STUDENTS, 2026), solutions=True)
+    b = _render(tmp_path / "b", formats, build_sheets(TOPICS, STUDENTS, 2026), solutions=True)
+    assert a == b and len(a) >= 8
+    c = _render(tmp_path / "c", formats, build_sheets(TOPICS, STUDENTS, 2027), solutions=True)
+    assert a["manifest.json"] != c["manifest.json"]
+
+
+def _pdf_text(data: bytes) -> str:
+    """The text shown by a pdfTeX PDF: inflate every stream and join the strings of its TJ/Tj operators."""
+    chunks = []
+    for m in re.finditer(rb"stream\r?\n(.*?)\r?\nendstream", data, re.S):
+        try:
+            content = zlib.decompress(m.group(1))
+        except zlib.error:
+            continue
+        for s in re.findall(rb"\((?:\\.|[^\\)])*\)", content):
+            body = re.sub(rb"\\([()\\])", rb"\1", s[1:-1])
+            chunks.append(body.decode("latin-1"))
+    return "".join(chunks)
+
+
+@pytest.mark.skipif(shutil.which("pdflatex") is None, reason="pdflatex is not installed (make system-deps)")
+def test_pdf_contains_the_questions(tmp_path, sheets):
+    pdf = compile_pdf(render_tex.render_document(sheets, solutions=False))
+    assert pdf.startswith(b"%PDF")
+    if shutil.which("pdftotext"):
+        (tmp_path / "s.pdf").write_bytes(pdf)
+        text = subprocess.run(["pdftotext", str(tmp_path / "s.pdf"), "-"], capture_output=True, text=True).stdout
+        squeezed = re.sub(r"\s+", "", text)
+    else:
+        squeezed = re.sub(r"\s+", "", _pdf_text(pdf))
+    for sheet in sheets:
+        assert sheet.form_id in squeezed
+        for ex in sheet.exercises:
+            assert f"Exercise{ex.slot}:" in squeezed
+            assert re.sub(r"\s+", "", ex.title) in squeezed
+    assert "Givethematrix" not in squeezed  # a prompt of a topic not on the sheet
+    assert "Givethecross-ratio" in squeezed
+
+
+def test_pdf_is_reproducible(sheets):
+    if shutil.which("pdflatex") is None:
+        pytest.skip("pdflatex is not installed")
+    tex = render_tex.render_document(sheets[:1])
+    assert compile_pdf(tex) == compile_pdf(tex)
+
+
+def test_missing_tex_gives_a_clear_message(monkeypatch):
+    monkeypatch.setattr(render_tex.shutil, "which", lambda name: None)
+    with pytest.raises(TeXMissingError, match="apt-get install texlive"):
+        compile_pdf("\\documentclass{article}\\begin{document}x\\end{document}")
+
+
+def test_atomic_output_leaves_nothing_on_error(tmp_path, sheets, monkeypatch):
+    def boom(tex, timeout=600):
+        raise TeXMissingError("no TeX here")
+
+    monkeypatch.setattr("pgsym.exercises.render_tex.compile_pdf", boom)
+    with pytest.raises(TeXMissingError):
+        write_atomically(tmp_path / "out", lambda d: render_all(sheets, [("join", 1)], ["md", "pdf"], d))
+    assert list(tmp_path.iterdir()) == []
+    (tmp_path / "full").mkdir()
+    (tmp_path / "full" / "x").write_text("old")
+    with pytest.raises(OutputError, match="not empty"):
+        write_atomically(tmp_path / "full", lambda d: None)
+    blocker = tmp_path / "file"
+    blocker.write_text("")
+    with pytest.raises(OutputError, match="cannot write"):
+        write_atomically(blocker / "out", lambda d: None)
+
+
+def test_html_output_copies_mathjax(tmp_path, sheets):
+    render_all(sheets, [("join", 1)], ["html"], tmp_path)
+    assert (tmp_path / "html" / "mathjax" / "tex-chtml.js").is_file()
+    with pytest.raises(render_html.MathJaxMissingError):
+        render_html.find_mathjax(tmp_path / "nowhere")
+
+
+def test_unicode_ids_get_distinct_file_names(tmp_path):
+    sheets = build_sheets(["join"], [("é1", "Émilie"), ("ü1", "Jürgen"), ("../etc", "x")], 1)
+    stems = {s.file_stem for s in sheets}
+    assert len(stems) == 3 and all("/" not in s and "." not in s for s in stems)
+    render_all(sheets, [("join", 1)], ["md"], tmp_path)
+    assert len(list((tmp_path / "md").iterdir())) == 3
