@@ -11,13 +11,15 @@ from __future__ import annotations
 
 import re
 from fractions import Fraction
+from typing import TYPE_CHECKING
 
 import click
-import sympy
 
 from . import __version__
 from .errors import PgsymError
-from .projective_plane import Line, Point, join, meet
+
+if TYPE_CHECKING:
+    from .projective_plane import Line, Point
 
 _MAX_ARGUMENT = 500
 
@@ -54,6 +56,10 @@ COORDS = _Coordinates()
 
 
 def _describe(obj: Point | Line) -> str:
+    import sympy
+
+    from .projective_plane import Line
+
     raw = ", ".join(str(c) for c in obj.coords)
     canonical = ", ".join(str(c) for c in obj.canonical().coords)
     if isinstance(obj, Line):
@@ -92,6 +98,8 @@ def join_command(p: tuple[Fraction, ...], q: tuple[Fraction, ...]) -> None:
 
     Example: pgsym join "0,0" "1,1"
     """
+    from .projective_plane import Point, join  # SymPy loads only when a command runs
+
     _run(lambda: join(Point(*p), Point(*q)))
 
 
@@ -103,6 +111,8 @@ def meet_command(l: tuple[Fraction, ...], m: tuple[Fraction, ...]) -> None:
 
     Example: pgsym meet "1,-1,0" "1,-1,3"   (parallel lines: an ideal point)
     """
+    from .projective_plane import Line, meet
+
     _run(lambda: meet(Line(*l), Line(*m)))
 
 

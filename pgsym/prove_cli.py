@@ -14,7 +14,7 @@ import sys
 
 import click
 
-from .proofs.catalogue import CATALOGUE, UnknownClaimError, catalogue_names, prove
+from .errors import UnknownClaimError
 
 __all__ = ["prove_command"]
 
@@ -44,6 +44,8 @@ def prove_command(names: tuple[str, ...], list_: bool, all_: bool, as_json: bool
 
     Examples: pgsym prove --list; pgsym prove pappus desargues; pgsym prove --all --json
     """
+    from .proofs.catalogue import CATALOGUE, catalogue_names, prove  # SymPy loads only when a command runs
+
     if list_:
         if as_json:
             rows = [{"name": e.name, "title": e.title, "chapter": e.chapter, "expected": e.expected}

@@ -67,3 +67,16 @@ def test_bad_input_gives_a_message_and_nonzero_exit(args, code, message):
     assert result.returncode == code
     assert message in result.stderr
     assert "Traceback" not in result.stderr
+
+
+def test_version_and_help_do_not_load_sympy_or_opencv():
+    code = (
+        "import sys\n"
+        "from click.testing import CliRunner\n"
+        "from pgsym.cli import main\n"
+        "assert CliRunner().invoke(main, ['--help']).exit_code == 0\n"
+        "print(sorted(m for m in ('sympy', 'cv2', 'skimage', 'matplotlib') if m in sys.modules))\n"
+    )
+    result = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=60)
+    assert result.returncode == 0, result.stderr
+    assert result.stdout.strip() == "[]"
