@@ -37,10 +37,9 @@ from .errors import (
     DimensionError,
     InvalidCoordinatesError,
     NotOnConicError,
-    ObjectTypeError,
     ZeroVectorError,
 )
-from .homogeneous import HomogeneousVector, Scalar, _format_entry, is_zero, to_exact
+from .homogeneous import HomogeneousVector, Scalar, _format_entry, is_zero, require, to_exact
 from .projective_plane import Line, Point, collinear, cross
 
 __all__ = [
@@ -278,7 +277,7 @@ class Conic(_SymmetricForm):
         >>> Conic.circle(0, 0, 1).value(Point(2, 0))
         3
         """
-        _require_point(point, "Conic.value")
+        require(point, Point, "Conic.value")
         return _form(self._matrix, point.coords, point.coords)
 
     def contains(self, point: Point) -> bool:
@@ -301,7 +300,7 @@ class Conic(_SymmetricForm):
         >>> Conic.circle(0, 0, 1).polar(Point(2, 0))     # the line x = 1/2
         Line(2, 0, -1)
         """
-        _require_point(point, "Conic.polar")
+        require(point, Point, "Conic.polar")
         coords = tuple(sympy.expand(e) for e in self._matrix * point.vector)
         if all(is_zero(c) for c in coords):
             raise DegenerateConicError(
@@ -319,7 +318,7 @@ class Conic(_SymmetricForm):
         >>> Conic.from_coefficients(1, 0, 0, 0, -1, 0).tangent_at(Point(2, 4))   # y = x² at x = 2
         Line(2, S(-1)/2, -2)
         """
-        _require_point(point, "Conic.tangent_at")
+        require(point, Point, "Conic.tangent_at")
         if not self.contains(point):
             raise NotOnConicError(
                 f"{point!r} is not on the conic {self!r} (xᵀ C x = {self.value(point)}), so it has no tangent "
@@ -333,7 +332,7 @@ class Conic(_SymmetricForm):
         >>> Conic.circle(0, 0, 1).pole(Line(2, 0, -1)) == Point(2, 0)
         True
         """
-        _require_line(line, "Conic.pole")
+        require(line, Line, "Conic.pole")
         self._require_nondegenerate("the pole of a line")
         return Point._from_exact(tuple(sympy.expand(e) for e in _adjugate(self._matrix) * line.vector))
 
@@ -369,7 +368,7 @@ class Conic(_SymmetricForm):
         >>> Conic.circle(0, 0, 1).restricted_form(Line(0, 1, -1))    # the tangent y = 1
         (0, 0, 1)
         """
-        _require_line(line, "Conic.restricted_form")
+        require(line, Line, "Conic.restricted_form")
         p, q = _two_points_on(line)
         m = self._matrix
         return _form(m, p.coords, p.coords), _form(m, p.coords, q.coords), _form(m, q.coords, q.coords)
@@ -410,7 +409,7 @@ class Conic(_SymmetricForm):
         >>> sorted(p.dehomogenize() for p in C.intersections(Line(0, 1, 0)))
         [(-1, 0), (1, 0)]
         """
-        _require_line(line, "Conic.intersections")
+        require(line, Line, "Conic.intersections")
         p, q = _two_points_on(line)
         a, b, c = self.restricted_form(line)
         if is_zero(a) and is_zero(b) and is_zero(c):
@@ -458,7 +457,7 @@ class DualConic(_SymmetricForm):
         >>> dual_conic_at_infinity().value(Line(1, 2, 3))
         5
         """
-        _require_line(line, "DualConic.value")
+        require(line, Line, "DualConic.value")
         return _form(self._matrix, line.coords, line.coords)
 
     def contains_line(self, line: Line) -> bool:
@@ -485,14 +484,8 @@ class DualConic(_SymmetricForm):
         return Conic._from_exact(_adjugate(self._matrix))
 
 
-def _require_point(obj: object, operation: str) -> None:
-    if not isinstance(obj, Point):
-        raise ObjectTypeError(f"{operation} expects a Point of P², got {type(obj).__name__} {obj!r}")
 
 
-def _require_line(obj: object, operation: str) -> None:
-    if not isinstance(obj, Line):
-        raise ObjectTypeError(f"{operation} expects a Line of P², got {type(obj).__name__} {obj!r}")
 
 
 def _monomials(p: Point) -> list[Expr]:
@@ -526,7 +519,7 @@ def conic_through(*points: Point) -> Conic:
             f"conic_through needs exactly five points (a conic has 5 degrees of freedom), got {len(points)}"
         )
     for p in points:
-        _require_point(p, "conic_through")
+        require(p, Point, "conic_through")
     rows = Matrix([_monomials(p) for p in points])
     coeffs = []
     for j in range(6):

@@ -24,7 +24,7 @@ import sympy
 from sympy import Expr, Integer, Matrix, Rational
 from sympy.printing.str import StrPrinter
 
-from .errors import DimensionError, NonNumericError, ZeroVectorError
+from .errors import DimensionError, NonNumericError, ObjectTypeError, ZeroVectorError
 
 __all__ = ["HomogeneousVector", "is_zero", "to_exact"]
 
@@ -97,6 +97,18 @@ class _ReprPrinter(StrPrinter):
 
     def _print_Rational(self, expr: Rational) -> str:
         return f"S({expr.p})/{expr.q}"
+
+
+def require(obj: object, cls: type, operation: str, hint: str = "") -> None:
+    """Raise :class:`ObjectTypeError` unless ``obj`` is a ``cls``; ``hint`` suggests the right call.
+
+    >>> require(3, HomogeneousVector, "join", "; pass points")
+    Traceback (most recent call last):
+    ...
+    pgsym.errors.ObjectTypeError: join expects HomogeneousVectors, got int 3; pass points
+    """
+    if not isinstance(obj, cls):
+        raise ObjectTypeError(f"{operation} expects {cls.__name__}s, got {type(obj).__name__} {obj!r}{hint}")
 
 
 def _format_entry(entry: Expr) -> str:

@@ -62,11 +62,10 @@ from .errors import (
     NotAPencilError,
     NotOnKleinQuadricError,
     NotSkewSymmetricError,
-    ObjectTypeError,
     UndefinedCrossRatioError,
     ZeroVectorError,
 )
-from .homogeneous import HomogeneousVector, Scalar, to_exact
+from .homogeneous import HomogeneousVector, Scalar, is_zero, require, to_exact
 from .projective_line import Point1, cross_ratio
 from .space import Plane, Point3
 
@@ -87,27 +86,13 @@ COORDINATE_ORDER: tuple[str, ...] = ("l12", "l13", "l14", "l23", "l42", "l34")
 _POSITIONS: tuple[tuple[int, int], ...] = ((0, 1), (0, 2), (0, 3), (1, 2), (3, 1), (2, 3))
 
 
-def _expand(expr: Expr) -> Expr:
-    return sympy.expand(expr)
 
 
-def _vanishes(expr: Expr) -> bool:
-    """Exact test that an expression vanishes identically, without the gcd computations of ``is_zero``.
-
-    A rational function ``p/q`` (``q`` a nonzero polynomial) is zero exactly when its numerator
-    ``p`` expands to zero; for the large polynomials of symbolic Plücker coordinates this is much
-    faster than cancelling first.
-    """
-    expr = sympy.sympify(expr)
-    if expr.is_Rational:
-        return bool(expr == 0)
-    numerator, _ = sympy.fraction(sympy.together(expr))
-    return sympy.expand(numerator) == 0
 
 
 def _wedge(u: Sequence[Expr], v: Sequence[Expr]) -> tuple[Expr, ...]:
     """The six entries ``u_i v_j − v_i u_j`` of ``u vᵀ − v uᵀ``, in the order (12, 13, 14, 23, 42, 34)."""
-    return tuple(_expand(u[i] * v[j] - v[i] * u[j]) for i, j in _POSITIONS)
+    return tuple(sympy.expand(u[i] * v[j] - v[i] * u[j]) for i, j in _POSITIONS)
 
 
 def _matrix(coords: Sequence[Expr]) -> ImmutableMatrix:
@@ -121,12 +106,9 @@ def _matrix(coords: Sequence[Expr]) -> ImmutableMatrix:
 
 def _klein(coords: Sequence[Expr]) -> Expr:
     l12, l13, l14, l23, l42, l34 = coords
-    return _expand(l12 * l34 + l13 * l42 + l14 * l23)
+    return sympy.expand(l12 * l34 + l13 * l42 + l14 * l23)
 
 
-def _require(obj: object, cls: type, operation: str, hint: str = "") -> None:
-    if not isinstance(obj, cls):
-        raise ObjectTypeError(f"{operation} expects a {cls.__name__}, got {type(obj).__name__} {obj!r}{hint}")
 
 
 class Line3(HomogeneousVector):
@@ -158,7 +140,7 @@ class Line3(HomogeneousVector):
     def _check(cls, coords: tuple[Expr, ...]) -> tuple[Expr, ...]:
         coords = super()._check(coords)
         value = _klein(coords)
-        if not _vanishes(value):
+        if not is_zero(value):
             raise NotOnKleinQuadricError(
                 f"the six numbers {tuple(coords)} are no Plücker coordinates of a line: the Klein constraint "
                 f"l12*l34 + l13*l42 + l14*l23 = 0 fails (it is {value}); build the line with Line3.join or "
@@ -177,12 +159,6 @@ class Line3(HomogeneousVector):
         obj._coords = coords
         return obj
 
-    def is_proportional(self, other: HomogeneousVector) -> bool:
-        """True when the two coordinate vectors differ by a nonzero factor (all 2×2 minors vanish)."""
-        a, b = self._coords, other.coords
-        if len(a) != len(b):
-            return False
-        return all(_vanishes(a[i] * b[j] - a[j] * b[i]) for i in range(len(a)) for j in range(i + 1, len(a)))
 
     # -- constructions ------------------------------------------------------------------------
     @classmethod
@@ -197,10 +173,10 @@ class Line3(HomogeneousVector):
         >>> L.contains(Point3(5, 0, 0)), L.contains(Point3(1, 0, 0, 0)), L.contains(Point3(0, 1, 0))
         (True, True, False)
         """
-        _require(a, Point3, "Line3.join", "; use Line3.meet for two planes")
-        _require(b, Point3, "Line3.join", "; use Line3.meet for two planes")
+        require(a, Point3, "Line3.join", "; use Line3.meet for two planes")
+        require(b, Point3, "Line3.join", "; use Line3.meet for two planes")
         coords = _wedge(a.coords, b.coords)
-        if all(_vanishes(c) for c in coords):
+        if all(is_zero(c) for c in coords):
             raise CoincidentPointsError(
                 f"cannot join {a!r} and {b!r}: they are the same point, so no unique line passes through them"
             )
@@ -217,10 +193,10 @@ class Line3(HomogeneousVector):
         >>> L.is_at_infinity, L.contains(Point3(1, 1, 0, 0))
         (True, True)
         """
-        _require(p, Plane, "Line3.meet", "; use Line3.join for two points")
-        _require(q, Plane, "Line3.meet", "; use Line3.join for two points")
+        require(p, Plane, "Line3.meet", "; use Line3.join for two points")
+        require(q, Plane, "Line3.meet", "; use Line3.join for two points")
         dual = _wedge(p.coords, q.coords)
-        if all(_vanishes(c) for c in dual):
+        if all(is_zero(c) for c in dual):
             raise DependentPlanesError(
                 f"cannot meet {p!r} and {q!r}: they are the same plane, so they share every line in it"
             )
@@ -337,8 +313,8 @@ class Line3(HomogeneousVector):
         >>> Line3.join(Point3(0, 0, 0), Point3(1, 1, 1)).contains(Point3(2, 2, 2))
         True
         """
-        _require(point, Point3, "Line3.contains", "; use Line3.lies_in for a plane")
-        return all(_vanishes(e) for e in self.dual_matrix * point.vector)
+        require(point, Point3, "Line3.contains", "; use Line3.lies_in for a plane")
+        return all(is_zero(e) for e in self.dual_matrix * point.vector)
 
     def lies_in(self, plane: Plane) -> bool:
         """True when the line lies in ``plane``: ``L π = 0``.
@@ -346,8 +322,8 @@ class Line3(HomogeneousVector):
         >>> Line3.join(Point3(0, 0, 0), Point3(1, 0, 0)).lies_in(Plane(0, 0, 1, 0))
         True
         """
-        _require(plane, Plane, "Line3.lies_in", "; use Line3.contains for a point")
-        return all(_vanishes(e) for e in self.matrix * plane.vector)
+        require(plane, Plane, "Line3.lies_in", "; use Line3.contains for a point")
+        return all(is_zero(e) for e in self.matrix * plane.vector)
 
     def intersect_plane(self, plane: Plane) -> Point3:
         """The point where the line meets ``plane``: ``X = L π``.
@@ -360,9 +336,9 @@ class Line3(HomogeneousVector):
         >>> Line3.join(Point3(0, 0, 0), Point3(1, 1, 1)).intersect_plane(Plane(0, 0, 1, -2))
         Point3(2, 2, 2, 1)
         """
-        _require(plane, Plane, "Line3.intersect_plane", "; use Line3.plane_through_point for a point")
-        coords = tuple(_expand(e) for e in self.matrix * plane.vector)
-        if all(_vanishes(c) for c in coords):
+        require(plane, Plane, "Line3.intersect_plane", "; use Line3.plane_through_point for a point")
+        coords = tuple(sympy.expand(e) for e in self.matrix * plane.vector)
+        if all(is_zero(c) for c in coords):
             raise DependentPlanesError(
                 f"the line {self!r} lies in the plane {plane!r}, so they share every point of the line "
                 f"instead of meeting in one; choose a plane that does not contain the line"
@@ -378,9 +354,9 @@ class Line3(HomogeneousVector):
         >>> Line3.join(Point3(0, 0, 0), Point3(1, 0, 0)).plane_through_point(Point3(0, 1, 0))
         Plane(0, 0, 1, 0)
         """
-        _require(point, Point3, "Line3.plane_through_point", "; use Line3.intersect_plane for a plane")
-        coords = tuple(_expand(e) for e in self.dual_matrix * point.vector)
-        if all(_vanishes(c) for c in coords):
+        require(point, Point3, "Line3.plane_through_point", "; use Line3.intersect_plane for a plane")
+        coords = tuple(sympy.expand(e) for e in self.dual_matrix * point.vector)
+        if all(is_zero(c) for c in coords):
             raise CollinearPointsError(
                 f"the point {point!r} lies on the line {self!r}, so infinitely many planes contain both; "
                 f"choose a point off the line"
@@ -398,7 +374,7 @@ class Line3(HomogeneousVector):
         >>> x_axis.meets(Line3.join(Point3(0, 0, 1), Point3(0, 1, 1)))     # skew
         False
         """
-        return _vanishes(reciprocal_product(self, other))
+        return is_zero(reciprocal_product(self, other))
 
     def points(self) -> tuple[Point3, Point3]:
         """Two distinct points spanning the line: two independent columns of ``L``.
@@ -419,7 +395,7 @@ class Line3(HomogeneousVector):
     @property
     def is_at_infinity(self) -> bool:
         """True for a line in the plane at infinity (its direction ``(l14, l24, l34)`` is zero)."""
-        return all(_vanishes(c) for c in (self._coords[2], self._coords[4], self._coords[5]))
+        return all(is_zero(c) for c in (self._coords[2], self._coords[4], self._coords[5]))
 
     @property
     def direction(self) -> Point3:
@@ -451,9 +427,9 @@ def reciprocal_product(l: Line3, m: Line3) -> Expr:
     >>> reciprocal_product(Line3.join(A, B), Line3.join(C, D)) == Matrix([A, B, C, D]).det()
     True
     """
-    _require(l, Line3, "reciprocal_product")
-    _require(m, Line3, "reciprocal_product")
-    return _expand(sum((a * b for a, b in zip(l.coordinates, m.dual_coordinates, strict=True)), Integer(0)))
+    require(l, Line3, "reciprocal_product")
+    require(m, Line3, "reciprocal_product")
+    return sympy.expand(sum((a * b for a, b in zip(l.coordinates, m.dual_coordinates, strict=True)), Integer(0)))
 
 
 def klein_form(coordinates: Sequence[Scalar]) -> Expr:
@@ -489,7 +465,7 @@ def cross_ratio_planes(p1: Plane, p2: Plane, p3: Plane, p4: Plane) -> Expr:
     """
     planes = (p1, p2, p3, p4)
     for p in planes:
-        _require(p, Plane, "cross_ratio_planes", "; pass four planes of one pencil")
+        require(p, Plane, "cross_ratio_planes", "; pass four planes of one pencil")
     axis = None
     for q in planes[1:]:
         if p1 != q:
@@ -509,7 +485,7 @@ def cross_ratio_planes(p1: Plane, p2: Plane, p3: Plane, p4: Plane) -> Expr:
     # the coordinate line e_i ∨ e_j has the single coordinate l_ij; its reciprocal product with
     # the axis is the axis' complementary coordinate, so pick a nonzero one.
     complementary = tuple(reversed(axis.coordinates))
-    k = next(k for k, c in enumerate(complementary) if not _vanishes(c))
+    k = next(k for k, c in enumerate(complementary) if not is_zero(c))
     i, j = _POSITIONS[k]
     points = [Point1(p.coords[j], -p.coords[i]) for p in planes]
     return cross_ratio(*points)
@@ -523,12 +499,12 @@ def _square4(matrix: Any, what: str) -> ImmutableMatrix:
     if m.shape != (4, 4):
         raise DimensionError(f"a {what} is a 4×4 matrix, got shape {m.shape}")
     m = m.applyfunc(to_exact)
-    if not all(_vanishes(m[i, j] + m[j, i]) for i in range(4) for j in range(i, 4)):
+    if not all(is_zero(m[i, j] + m[j, i]) for i in range(4) for j in range(i, 4)):
         raise NotSkewSymmetricError(
             f"a {what} is skew-symmetric (its transpose is its negative), and this one is not:\n{m}\n"
             f"build it as A*B.T - B*A.T from two points (or P*Q.T - Q*P.T from two planes)"
         )
-    if all(_vanishes(e) for e in m):
+    if all(is_zero(e) for e in m):
         raise ZeroVectorError(f"the zero matrix is no {what}: a line needs a nonzero matrix of rank 2")
     return ImmutableMatrix(m)
 
@@ -538,10 +514,10 @@ def _coords_of(m: ImmutableMatrix) -> tuple[Expr, ...]:
 
 
 def _two_columns(m: ImmutableMatrix, cls: type) -> tuple[Any, Any]:
-    columns = [tuple(_expand(e) for e in m[:, k]) for k in range(4)]
-    nonzero = [c for c in columns if not all(_vanishes(e) for e in c)]
+    columns = [tuple(sympy.expand(e) for e in m[:, k]) for k in range(4)]
+    nonzero = [c for c in columns if not all(is_zero(e) for e in c)]
     first = nonzero[0]
     for c in nonzero[1:]:
-        if not all(_vanishes(first[a] * c[b] - first[b] * c[a]) for a in range(4) for b in range(a + 1, 4)):
+        if not all(is_zero(first[a] * c[b] - first[b] * c[a]) for a in range(4) for b in range(a + 1, 4)):
             return cls._from_exact(first), cls._from_exact(c)
     raise AssertionError("a Plücker matrix of rank 2 has two independent columns")  # pragma: no cover

@@ -31,7 +31,7 @@ from .errors import (
     IdealPointError,
     ObjectTypeError,
 )
-from .homogeneous import HomogeneousVector, Scalar, is_zero, to_exact
+from .homogeneous import HomogeneousVector, Scalar, is_zero, require, to_exact
 
 __all__ = [
     "Line",
@@ -177,9 +177,6 @@ class Line(HomogeneousVector):
         return r"\begin{bmatrix}" + " & ".join(self._latex_entries()) + r"\end{bmatrix}"
 
 
-def _require(obj: object, cls: type, operation: str, hint: str) -> None:
-    if not isinstance(obj, cls):
-        raise ObjectTypeError(f"{operation} expects {cls.__name__}s, got {type(obj).__name__} {obj!r}{hint}")
 
 
 def join(p: Point, q: Point) -> Line:
@@ -191,8 +188,8 @@ def join(p: Point, q: Point) -> Line:
     >>> join(Point(1, 0), Point(0, 1))
     Line(-1, -1, 1)
     """
-    _require(p, Point, "join", "; use meet() for two lines")
-    _require(q, Point, "join", "; use meet() for two lines")
+    require(p, Point, "join", "; use meet() for two lines")
+    require(q, Point, "join", "; use meet() for two lines")
     coords = cross(p.coords, q.coords)
     if all(is_zero(c) for c in coords):
         raise CoincidentPointsError(
@@ -210,8 +207,8 @@ def meet(l: Line, m: Line) -> Point:
     >>> meet(Line(1, 0, -1), Line(0, 1, -2))
     Point(1, 2, 1)
     """
-    _require(l, Line, "meet", "; use join() for two points")
-    _require(m, Line, "meet", "; use join() for two points")
+    require(l, Line, "meet", "; use join() for two points")
+    require(m, Line, "meet", "; use join() for two points")
     coords = cross(l.coords, m.coords)
     if all(is_zero(c) for c in coords):
         raise CoincidentLinesError(f"cannot meet {l!r} and {m!r}: they are the same line, so they share every point")
@@ -228,8 +225,8 @@ def incident(point: Point, line: Line) -> bool:
     """
     if isinstance(point, Line) and isinstance(line, Point):
         point, line = line, point
-    _require(point, Point, "incident", " (a Point and a Line)")
-    _require(line, Line, "incident", " (a Point and a Line)")
+    require(point, Point, "incident", " (a Point and a Line)")
+    require(line, Line, "incident", " (a Point and a Line)")
     return is_zero(sum((a * b for a, b in zip(point.coords, line.coords, strict=False)), Integer(0)))
 
 
@@ -244,7 +241,7 @@ def collinear(p: Point, q: Point, r: Point) -> bool:
     (True, False)
     """
     for x in (p, q, r):
-        _require(x, Point, "collinear", "; use concurrent() for lines")
+        require(x, Point, "collinear", "; use concurrent() for lines")
     return is_zero(_det3((p, q, r)))
 
 
@@ -255,7 +252,7 @@ def concurrent(l: Line, m: Line, n: Line) -> bool:
     True
     """
     for x in (l, m, n):
-        _require(x, Line, "concurrent", "; use collinear() for points")
+        require(x, Line, "concurrent", "; use collinear() for points")
     return is_zero(_det3((l, m, n)))
 
 

@@ -31,7 +31,7 @@ from .errors import (
     IdealPointError,
     ObjectTypeError,
 )
-from .homogeneous import HomogeneousVector, Scalar, is_zero
+from .homogeneous import HomogeneousVector, Scalar, is_zero, require
 
 __all__ = [
     "Plane",
@@ -199,9 +199,6 @@ class Plane(HomogeneousVector):
         return r"\begin{bmatrix}" + " & ".join(self._latex_entries()) + r"\end{bmatrix}"
 
 
-def _require(obj: object, cls: type, operation: str, hint: str) -> None:
-    if not isinstance(obj, cls):
-        raise ObjectTypeError(f"{operation} expects {cls.__name__}s, got {type(obj).__name__} {obj!r}{hint}")
 
 
 def incident(point: Point3, plane: Plane) -> bool:
@@ -214,8 +211,8 @@ def incident(point: Point3, plane: Plane) -> bool:
     """
     if isinstance(point, Plane) and isinstance(plane, Point3):
         point, plane = plane, point
-    _require(point, Point3, "incident", " (a Point3 and a Plane)")
-    _require(plane, Plane, "incident", " (a Point3 and a Plane)")
+    require(point, Point3, "incident", " (a Point3 and a Plane)")
+    require(plane, Plane, "incident", " (a Point3 and a Plane)")
     return is_zero(sum((a * b for a, b in zip(point.coords, plane.coords, strict=True)), Integer(0)))
 
 
@@ -245,7 +242,7 @@ def plane_through(p: Point3, q: Point3, r: Point3) -> Plane:
     pgsym.errors.CollinearPointsError: cannot find the plane through ... lie on one line...
     """
     for x in (p, q, r):
-        _require(x, Point3, "plane_through", "; use point_on_planes() for three planes")
+        require(x, Point3, "plane_through", "; use point_on_planes() for three planes")
     coords = triple_cross(p.coords, q.coords, r.coords)
     if all(is_zero(c) for c in coords):
         pair = _coincident_pair((p, q, r))
@@ -273,7 +270,7 @@ def point_on_planes(a: Plane, b: Plane, c: Plane) -> Point3:
     Point3(0, 1, 0, 0)
     """
     for x in (a, b, c):
-        _require(x, Plane, "point_on_planes", "; use plane_through() for three points")
+        require(x, Plane, "point_on_planes", "; use plane_through() for three points")
     coords = triple_cross(a.coords, b.coords, c.coords)
     if all(is_zero(v) for v in coords):
         pair = _coincident_pair((a, b, c))
@@ -294,7 +291,7 @@ def coplanar(p: Point3, q: Point3, r: Point3, s: Point3) -> bool:
     False
     """
     for x in (p, q, r, s):
-        _require(x, Point3, "coplanar", "")
+        require(x, Point3, "coplanar", "")
     det = Matrix([list(x.coords) for x in (p, q, r, s)]).det(method="bareiss")
     return is_zero(sympy.expand(det))
 

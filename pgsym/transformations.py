@@ -21,6 +21,7 @@ True
 from __future__ import annotations
 
 import numbers
+from itertools import combinations
 from typing import Any
 
 import sympy
@@ -28,7 +29,7 @@ from sympy import Expr, ImmutableMatrix, Matrix
 
 from .errors import CollinearPointsError, DimensionError, ObjectTypeError, SingularTransformationError
 from .homogeneous import _format_entry, is_zero, to_exact
-from .projective_plane import Line, Point
+from .projective_plane import Line, Point, collinear
 
 __all__ = ["Transformation", "adjugate", "as_exact_matrix", "homography_from_points"]
 
@@ -322,18 +323,16 @@ _RULES = {
 }
 
 
-def _basis_map(pts: list[Point]) -> Matrix:
-    """The matrix sending e1, e2, e3 and (1, 1, 1) to the four points (no three collinear)."""
+def _basis_map(pts: list[Point], name: str) -> Matrix:
+    """The matrix sending e1, e2, e3 and (1, 1, 1) to the four points (columns scaled by adj(P) p4)."""
+    for (i, a), (j, b), (k, c) in combinations(enumerate(pts), 3):
+        if collinear(a, b, c):
+            raise CollinearPointsError(
+                f"{name} points {i + 1}, {j + 1} and {k + 1} ({a!r}, {b!r}, {c!r}) are collinear; four "
+                "correspondences determine a homography only when no three of the points lie on one line"
+            )
     P = Matrix([list(p.coords) for p in pts[:3]]).T
-    if is_zero(sympy.expand(P.det())):
-        raise CollinearPointsError(
-            f"the points {pts[:3]} are collinear: four points with no three collinear are needed to fix a homography"
-        )
     lam = (P.adjugate() * Matrix(pts[3].coords)).applyfunc(sympy.expand)  # ∝ P⁻¹ p4
-    if any(is_zero(c) for c in lam):
-        raise CollinearPointsError(
-            f"three of the points {pts} are collinear: four points with no three collinear are needed"
-        )
     return P * sympy.diag(*lam)
 
 
@@ -352,5 +351,5 @@ def homography_from_points(src: list[Point], dst: list[Point]) -> Transformation
     for pts in (src, dst):
         if len(pts) != 4 or not all(isinstance(p, Point) for p in pts):
             raise DimensionError(f"a homography of P² is fixed by exactly four Point correspondences, got {pts!r}")
-    A, B = _basis_map(list(src)), _basis_map(list(dst))
+    A, B = _basis_map(list(src), "source"), _basis_map(list(dst), "destination")
     return Transformation(_expand(B * A.adjugate()))

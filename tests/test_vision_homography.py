@@ -226,3 +226,20 @@ def test_empty_batch_and_apply_homography():
     # a point on the line sent to infinity maps to infinity (no exception)
     out = apply_homography(np.array(H0, float), [[0.0, 0.0]])
     assert not np.isfinite(out).all()
+
+
+def test_numeric_homography_path_does_not_load_sympy():
+    import subprocess
+    import sys
+
+    code = (
+        "import sys\n"
+        "import numpy as np\n"
+        "from pgsym.vision.homography import dlt_homography\n"
+        "src = np.array([[0, 0], [1, 0], [1, 1], [0, 1.0]])\n"
+        "dlt_homography(src, 2 * src + 1)\n"
+        "print('sympy' in sys.modules)\n"
+    )
+    result = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=60)
+    assert result.returncode == 0, result.stderr
+    assert result.stdout.strip() == "False"

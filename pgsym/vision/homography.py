@@ -24,14 +24,17 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 from itertools import combinations
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
-import sympy
 
 from ..errors import CollinearPointsError, DegenerateConfigurationError, DimensionError
-from ..homogeneous import is_zero
-from ..projective_plane import Point, collinear
+from ..numeric.plane import cross
+
+if TYPE_CHECKING:  # the exact four-point path loads SymPy only when it is used
+    import sympy
+
+    from ..projective_plane import Point
 
 __all__ = [
     "apply_homography",
@@ -220,6 +223,8 @@ def dlt_homography(src: Any, dst: Any) -> np.ndarray:
 
 
 def _as_exact_point(value: Any, name: str, i: int) -> Point:
+    from ..projective_plane import Point
+
     if isinstance(value, Point):
         return value
     try:
@@ -229,17 +234,6 @@ def _as_exact_point(value: Any, name: str, i: int) -> Point:
     return Point(*coords)
 
 
-def _basis_matrix(points: Sequence[Point], name: str) -> sympy.Matrix:
-    """The matrix sending e1, e2, e3, (1,1,1) to the four points (columns scaled by adj(M) p4)."""
-    for (i, a), (j, b), (k, c) in combinations(enumerate(points), 3):
-        if collinear(a, b, c):
-            raise CollinearPointsError(
-                f"{name} points {i + 1}, {j + 1} and {k + 1} ({a!r}, {b!r}, {c!r}) are collinear; four "
-                "correspondences determine a homography only when no three of the points lie on one line"
-            )
-    M = sympy.Matrix([list(p.coords) for p in points[:3]]).T
-    lam = M.adjugate() * sympy.Matrix(points[3].coords)
-    return M * sympy.diag(*lam)
 
 
 def exact_homography(src: Sequence[Any], dst: Sequence[Any]) -> sympy.ImmutableMatrix:
@@ -268,15 +262,18 @@ def exact_homography(src: Sequence[Any], dst: Sequence[Any]) -> sympy.ImmutableM
     if len(src) != 4 or len(dst) != 4:
         raise DimensionError(f"exact_homography needs exactly four source and four destination points, "
                              f"got {len(src)} and {len(dst)}; use dlt_homography for more")
+    from ..transformations import homography_from_points
+
     P = [_as_exact_point(v, "source", i) for i, v in enumerate(src)]
     Q = [_as_exact_point(v, "destination", i) for i, v in enumerate(dst)]
-    A = _basis_matrix(P, "source")
-    B = _basis_matrix(Q, "destination")
-    H = (B * A.adjugate()).applyfunc(sympy.expand)
-    return _canonical_matrix(H)
+    return _canonical_matrix(homography_from_points(P, Q).matrix)
 
 
 def _canonical_matrix(H: sympy.Matrix) -> sympy.ImmutableMatrix:
+    import sympy
+
+    from ..homogeneous import is_zero
+
     entries = list(H)
     if all(e.is_Rational for e in entries):
         den = sympy.ilcm(*[sympy.Rational(e).q for e in entries])
@@ -291,13 +288,6 @@ def _canonical_matrix(H: sympy.Matrix) -> sympy.ImmutableMatrix:
     return sympy.ImmutableMatrix(H.applyfunc(lambda e: sympy.cancel(e / first)))
 
 
-def _cross(a: np.ndarray, b: np.ndarray) -> np.ndarray:
-    return np.stack(
-        [a[..., 1] * b[..., 2] - a[..., 2] * b[..., 1],
-         a[..., 2] * b[..., 0] - a[..., 0] * b[..., 2],
-         a[..., 0] * b[..., 1] - a[..., 1] * b[..., 0]],
-        axis=-1,
-    )
 
 
 def _frames(p: np.ndarray) -> np.ndarray:
@@ -307,16 +297,16 @@ def _frames(p: np.ndarray) -> np.ndarray:
     triple products det[p4 p2 p3], det[p1 p4 p3], det[p1 p2 p4].
     """
     p1, p2, p3, p4 = p[:, 0], p[:, 1], p[:, 2], p[:, 3]
-    l1 = np.einsum("ni,ni->n", p4, _cross(p2, p3))
-    l2 = np.einsum("ni,ni->n", p1, _cross(p4, p3))
-    l3 = np.einsum("ni,ni->n", p1, _cross(p2, p4))
+    l1 = np.einsum("ni,ni->n", p4, cross(p2, p3))
+    l2 = np.einsum("ni,ni->n", p1, cross(p4, p3))
+    l3 = np.einsum("ni,ni->n", p1, cross(p2, p4))
     return np.stack([p1 * l1[:, None], p2 * l2[:, None], p3 * l3[:, None]], axis=2)
 
 
 def _adjugate3(M: np.ndarray) -> np.ndarray:
     """Adjugates of a stack of 3×3 matrices: rows of adj(M) are cross products of columns of M."""
     c0, c1, c2 = M[..., :, 0], M[..., :, 1], M[..., :, 2]
-    return np.stack([_cross(c1, c2), _cross(c2, c0), _cross(c0, c1)], axis=-2)
+    return np.stack([cross(c1, c2), cross(c2, c0), cross(c0, c1)], axis=-2)
 
 
 def _normalize_batch(p: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
