@@ -27,9 +27,11 @@ __all__ = [
     "DimensionError",
     "IdealPointError",
     "ImageError",
+    "InputLimitError",
     "InvalidCoordinatesError",
     "ManifestError",
     "MathJaxMissingError",
+    "NonFiniteError",
     "NonNumericError",
     "NonPolynomialClaimError",
     "NotAPencilError",
@@ -46,6 +48,7 @@ __all__ = [
     "TeXFailedError",
     "TeXMissingError",
     "TemplateError",
+    "UndecidableError",
     "UndefinedConstructionError",
     "UndefinedCrossRatioError",
     "UnknownClaimError",
@@ -205,3 +208,19 @@ class TeXMissingError(PgsymError, RuntimeError):
 
 class TeXFailedError(PgsymError, RuntimeError):
     """pdflatex ran but failed; the message holds the end of its log."""
+
+
+class UndecidableError(PgsymError, ValueError):
+    """An exact question (is this expression zero? are these equal?) that pgsym cannot decide.
+
+    Raised for entries outside the rational functions over algebraic numbers, such as ``pi``,
+    ``exp(1)`` or an unknown function, where answering would mean guessing.
+    """
+
+
+class NonFiniteError(InvalidCoordinatesError):
+    """A numeric array holds NaN or an infinity where finite numbers are required."""
+
+
+class InputLimitError(PgsymError, ValueError):
+    """User input exceeds a documented limit (bytes, digits, exponent, nesting, pixels)."""
