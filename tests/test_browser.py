@@ -129,7 +129,14 @@ def test_search_finds_the_cross_product(browser, server):
     problems = PageProblems(page)
     try:
         page.goto(f"{server}/search.html?q=cross+product", wait_until="load")
-        page.wait_for_selector("ul.search li", timeout=20000)
+        # Sphinx fills the result list one item at a time; its summary line changes only at the end
+        page.wait_for_function(
+            """() => {
+                const summary = document.querySelector('.search-summary');
+                return summary && /Search finished|did not match/.test(summary.textContent);
+            }""",
+            timeout=20000,
+        )
         hits = page.locator("ul.search li a").all_inner_texts()
         assert any("Points and lines" in hit for hit in hits), hits
         assert problems.items == [], "\n".join(problems.items)
