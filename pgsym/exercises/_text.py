@@ -199,7 +199,8 @@ def tex_escape(text: str) -> str:
             piece += "{}"
         out.append(piece)
         width += len(piece)
-        if width >= _TEX_LINE and c != " ":  # '%' + newline joins the lines without a space
+        # '%' + newline joins two source lines without a space; never before a space (TeX would drop it)
+        if width >= _TEX_LINE and i + 1 < len(text) and text[i + 1] not in " \t\n":
             out.append("%\n")
             width = 0
     return "".join(out)

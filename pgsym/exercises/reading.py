@@ -74,7 +74,7 @@ def load_json(path: str | os.PathLike[str], what: str, error: type[PgsymError]) 
     check_nesting(text, what, error)
     try:
         return json.loads(text)
-    except (json.JSONDecodeError, RecursionError) as err:
+    except (ValueError, RecursionError) as err:  # ValueError: bad JSON, or an integer of too many digits
         raise error(f"the {what} {str(path)!r} is not readable JSON: {err}") from None
 
 

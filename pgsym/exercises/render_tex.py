@@ -114,7 +114,8 @@ def _tex_environment() -> dict[str, str]:
     # paranoid kpathsea: TeX opens no absolute path, nothing above its folder and no dot file
     env.update({"openin_any": "p", "openout_any": "p", "shell_escape": "f",
                 # fixed dates make the PDF reproducible (pdfTeX honours SOURCE_DATE_EPOCH)
-                "SOURCE_DATE_EPOCH": "0", "FORCE_SOURCE_DATE": "1"})
+                "SOURCE_DATE_EPOCH": "0", "FORCE_SOURCE_DATE": "1",
+                "max_print_line": "1000"})  # unwrapped log lines make readable error messages
     return env
 
 
@@ -162,9 +163,10 @@ def compile_pdf(tex_source: str, timeout: float | None = None) -> bytes:
             raise TeXFailedError(f"pdflatex took longer than {limit:.0f} s (the limit) and was stopped") from None
         if code != 0 or not (Path(tmp) / "sheets.pdf").is_file():
             log = Path(tmp) / "sheets.log"
-            tail = log.read_text(errors="replace")[-1500:] if log.exists() else output[-1500:]
-            raise TeXFailedError(f"pdflatex failed (exit {code}, {time.monotonic() - started:.1f} s); "
-                                 f"end of the log:\n{tail}")
+            text = log.read_text(errors="replace") if log.exists() else output
+            start = text.find("\n! ")  # TeX's first error message, with the lines that locate it
+            excerpt = text[start + 1:start + 800] if start >= 0 else text[-800:]
+            raise TeXFailedError(f"pdflatex failed (exit {code}, {time.monotonic() - started:.1f} s):\n{excerpt}")
         return (Path(tmp) / "sheets.pdf").read_bytes()
 
 
