@@ -38,6 +38,9 @@ PREAMBLE = r"""\documentclass[11pt,a4paper]{article}
 \setlength{\parindent}{0pt}
 \setlength{\parskip}{0.5em}
 \newif\ifsolutions
+% headings as ordinary paragraphs: a very long name or title breaks across lines and pages
+\newcommand{\sheettitle}[1]{\par{\raggedright\Large\bfseries #1\par}\nopagebreak\medskip}
+\newcommand{\exercisetitle}[1]{\par\bigskip{\raggedright\large\bfseries #1\par}\nopagebreak\smallskip}
 """
 
 
@@ -58,7 +61,7 @@ def tex_time_limit(sheets: int) -> float:
 
 
 def _exercise(ex: Exercise) -> list[str]:
-    lines = [rf"\subsection*{{Exercise {ex.slot}: {tex_escape(ex.title)}}}", to_tex(ex.statement), ""]
+    lines = [rf"\exercisetitle{{Exercise {ex.slot}: {tex_escape(ex.title)}}}", to_tex(ex.statement), ""]
     for part in ex.parts:
         label = f"({part.label})" if len(ex.parts) > 1 else f"[{part.label}]"
         lines.append(rf"\textbf{{{tex_escape(label)}}} {to_tex(part.prompt)} \emph{{Answer format: "
@@ -84,7 +87,7 @@ def _solution(ex: Exercise) -> list[str]:
 def render_sheet_body(sheet: Sheet, solutions: bool) -> str:
     """The LaTeX of one sheet (no preamble)."""
     who = tex_escape(sheet.student_name or sheet.student_id)
-    lines = [r"\clearpage", rf"\section*{{Exercise sheet: {who}}}",
+    lines = [r"\clearpage", rf"\sheettitle{{Exercise sheet: {who}}}",
              rf"Student id: \texttt{{{tex_escape(sheet.student_id)}}} \hfill "
              rf"Form id: \texttt{{{tex_escape(sheet.form_id)}}}", "",
              "Give exact answers; homogeneous coordinates are accepted up to a nonzero scale.", ""]
