@@ -3,8 +3,8 @@
 Spreadsheets run a cell that starts with ``=``, ``+``, ``-`` or ``@`` (and, after a tab or
 carriage return, whatever follows) as a formula, which can fetch URLs or run commands. As OWASP
 recommends for CSV injection, such a cell gets a leading single quote, which spreadsheets show as
-text; plain numbers such as ``-3`` or ``-0.5`` are left alone (they cannot be formulas). Every
-CSV pgsym writes goes through :func:`write_csv`.
+text; plain numbers such as ``-3``, ``-0.5`` or ``-1.5e-06`` are left alone (they cannot be
+formulas). Every CSV that pgsym writes should go through :func:`write_csv` or :func:`csv_text`.
 
 >>> safe_cell("=HYPERLINK(\\"http://x\\")"), safe_cell("-3"), safe_cell("-2+3"), safe_cell("(1, -2, 0)")
 ('\\'=HYPERLINK("http://x")', '-3', "'-2+3", '(1, -2, 0)')
@@ -22,7 +22,7 @@ __all__ = ["FORMULA_STARTS", "csv_text", "safe_cell", "write_csv"]
 FORMULA_STARTS = ("=", "+", "-", "@", "\t", "\r")
 """First characters that make a spreadsheet read a cell as a formula."""
 
-_NUMBER = re.compile(r"[+-]?[0-9]+(?:\.[0-9]+)?")
+_NUMBER = re.compile(r"[+-]?(?:[0-9]+(?:\.[0-9]*)?|\.[0-9]+)(?:[eE][+-]?[0-9]+)?")
 
 
 def safe_cell(value: object) -> str:

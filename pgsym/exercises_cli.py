@@ -275,7 +275,10 @@ def templates_new(name: str, folder: str) -> None:
     cls = "".join(part.capitalize() for part in name.split("_")) + "Template"
     try:
         path.parent.mkdir(parents=True, exist_ok=True)
-        path.write_text(_SKELETON.format(name=name, cls=cls, folder=folder), encoding="utf-8")
+        with path.open("x", encoding="utf-8") as stream:  # "x": never through a dangling link or over a file
+            stream.write(_SKELETON.format(name=name, cls=cls, folder=folder))
+    except FileExistsError:
+        raise click.ClickException(f"{path} exists already; choose another name or delete it") from None
     except OSError as err:
         raise click.ClickException(f"cannot write {path}: {err.strerror or err}") from None
     click.echo(f"wrote {path}; try: pgsym templates check {name} --templates {folder}")

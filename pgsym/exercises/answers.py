@@ -27,13 +27,13 @@ from fractions import Fraction
 from typing import Any
 
 from ..errors import UnparsableAnswerError
+from ..limits import MAX_ANSWER_CHARS, MAX_DIGITS
 from ._exact import canonical_ints
 from .model import Answer
 
-MAX_LENGTH = 2000
+MAX_LENGTH = MAX_ANSWER_CHARS
 MAX_DEPTH = 3
 MAX_ENTRIES = 64
-MAX_DIGITS = 40
 
 _ALLOWED = set("0123456789+-/.,;()[] \t")
 _MINUS_SIGNS = {"\u2212": "-", "\u2013": "-"}  # unicode minus and en dash read as minus

@@ -60,7 +60,7 @@ def render_sheet(sheet: Sheet, solutions: bool = False, mathjax: str = f"{MATHJA
             out.append("<details><summary>Solution</summary><ol>")
             out += [f"<li>{to_html(step)}</li>" for step in ex.solution]
             out.append("</ol>")
-            out += [f"<p><b>Answer [{p.label}]:</b> \\({html.escape(p.answer.latex(), quote=False)}\\)</p>"
+            out += [f"<p><b>Answer [{p.label}]:</b> {to_html('$' + p.answer.latex() + '$')}</p>"
                     for p in ex.parts]
             out.append("</details>")
     out += ["</body>", "</html>"]
@@ -87,6 +87,21 @@ def find_mathjax(explicit: str | Path | None = None) -> Path:
 
 
 def copy_mathjax(target: Path, source: str | Path | None = None) -> None:
-    """Copy the MathJax files the sheets need (the es5 folder) to ``target/mathjax``."""
-    src = find_mathjax(source)
-    shutil.copytree(src, target / MATHJAX_DIR, dirs_exist_ok=True)
+    """Copy the MathJax files the sheets need (the es5 folder) to ``target/mathjax``.
+
+    Only regular files and folders inside the MathJax folder are copied: a link leading out of it
+    is skipped, and a pipe or device there is refused instead of being read.
+    """
+    src = find_mathjax(source).resolve()
+
+    def ignore(folder: str, names: list[str]) -> list[str]:
+        skipped = []
+        for name in names:
+            path = Path(folder) / name
+            if path.is_symlink() and not path.resolve().is_relative_to(src):
+                skipped.append(name)
+            elif not (path.is_file() or path.is_dir()):
+                raise MathJaxMissingError(f"{str(path)!r} in the MathJax folder is not a regular file")
+        return skipped
+
+    shutil.copytree(src, target / MATHJAX_DIR, dirs_exist_ok=True, ignore=ignore)

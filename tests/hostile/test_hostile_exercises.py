@@ -594,3 +594,21 @@ def test_hostile_sheets_build_for_every_builtin_topic():
     """Sanity: names with every payload go through the real templates too (build, no rendering error)."""
     sheets = build_sheets(["join", "preserved"], [("a", payloads(Path("/x"))["cloze"])], 1)
     assert "{1:SA:=x}" not in render_moodle.render_quiz(sheets)
+
+
+def test_mathjax_copy_skips_links_out_and_refuses_pipes(tmp_path, secret_file):
+    src = tmp_path / "es5"
+    src.mkdir()
+    (src / "tex-chtml.js").write_text("// MathJax")
+    (src / "leak.js").symlink_to(secret_file)
+    render_html.copy_mathjax(tmp_path / "out", src)
+    assert sorted(p.name for p in (tmp_path / "out" / "mathjax").iterdir()) == ["tex-chtml.js"]
+    os.mkfifo(src / "pipe.js")
+    with pytest.raises(render_html.MathJaxMissingError, match="not a regular file"):
+        render_html.copy_mathjax(tmp_path / "out2", src)
+
+
+def test_answer_keys_in_html_go_through_the_math_check():
+    exercise = Exercise("t", "T", 1, 1, 0, "S", (Part("1", "P", Answer.choice("B}\\input{x")),), ("s",), {})
+    page = render_html.render_sheet(Sheet("s1", "", "F-1", 0, (exercise,)), solutions=True)
+    assert "\\(\\text{B}\\input{x}\\)" not in page and "tex2jax_ignore" in page
