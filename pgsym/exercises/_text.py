@@ -230,18 +230,36 @@ _MD_NEW_LINE = re.compile(r"(?<=\n)" + _MD_BLOCK)
 
 
 def md_escape(text: str) -> str:
-    """Plain text as Markdown/MyST that shows exactly these characters: inline syntax (emphasis,
-    code, roles ``{name}``, math ``$``, links, HTML ``<``/``&``) backslash-escaped, on one line, and a
-    leading block marker (``#``, ``>``, ``-``, ``1.``, ``:::``, ``(label)=``, ``%``) escaped too.
+    """Plain text as Markdown/MyST (pages and notebook cells) that shows exactly these characters.
 
-    >>> md_escape("# {eval-rst} <b>$x$</b>")
-    '\\\\# \\\\{eval-rst\\\\} \\\\<b\\\\>\\\\$x\\\\$\\\\</b\\\\>'
+    Inline syntax (emphasis, code, roles ``{name}``, links, HTML ``<``/``&``) is backslash-escaped
+    and a leading block marker (``#``, ``>``, ``-``, ``1.``, ``:::``, ``(label)=``, ``%``) too, on one
+    line. Text with a backslash or a dollar becomes an inline code span instead: math scanners that
+    read the source before Markdown does (Jupyter's, MyST's ``$``) and MathJax in the page skip code.
+
+    >>> md_escape("# {eval-rst} <b>x</b>")
+    '\\\\# \\\\{eval-rst\\\\} \\\\<b\\\\>x\\\\</b\\\\>'
+    >>> md_escape(r"\\(\\href{javascript:x}{y}\\) `$`")
+    '`` \\\\(\\\\href{javascript:x}{y}\\\\) `$` ``'
     """
     return _md_prose(one_line(text))
 
 
+def _md_code(text: str, line_start: bool) -> str:
+    """``text`` as one inline code span (line breaks as spaces), delimited by more backticks than it holds."""
+    text = " ".join(text.split("\n"))
+    fence = "`" * (max((len(run) for run in re.findall(r"`+", text)), default=0) + 1)
+    # CommonMark strips one space at each end when both ends have one: add it when needed
+    pad = " " if text[:1] == "`" or text[-1:] == "`" or (text[:1] == " " and text[-1:] == " ") else ""
+    # three backticks at the start of a line would open a fenced block
+    lead = "&#32;" if line_start and len(fence) >= 3 else ""
+    return f"{lead}{fence}{pad}{text}{pad}{fence}"
+
+
 def _md_prose(text: str, line_start: bool = True) -> str:
     """Escape Markdown prose; ``line_start`` says whether ``text`` begins a line of the output."""
+    if "\\" in text or "$" in text:
+        return _md_code(text, line_start)
     escaped = "".join("\\" + c if c in _MD_INLINE else c for c in text)
 
     def start(m: re.Match[str]) -> str:
