@@ -15,7 +15,7 @@ from collections.abc import Callable, Iterable, Sequence
 from pathlib import Path
 from typing import Any
 
-from ..errors import ManifestError, RosterError
+from ..errors import ManifestError, PgsymError, RosterError, UnknownTopicError
 from ..limits import MAX_NAME_CHARS
 from ._text import one_line
 from .model import Answer, Sheet
@@ -80,7 +80,15 @@ def build_sheets(topics: Sequence[tuple[str, int]] | Sequence[str], students: It
     """
     sheets = []
     for sid, name in students:
-        sheets.append(build_sheet(topics, sid, name, master_seed))
+        try:
+            sheets.append(build_sheet(topics, sid, name, master_seed))
+        except (UnknownTopicError, OSError):
+            raise
+        except PgsymError as err:  # say whose sheet failed (a template may fail for one variant only)
+            raise TemplateError(f"the sheet of student {one_line(sid)[:120]}: {err}") from None
+        except Exception as err:  # an instructor template's own bug
+            raise TemplateError(f"the sheet of student {one_line(sid)[:120]}: a template failed with "
+                                f"{type(err).__name__}: {str(err)[:300]}") from None
         if progress is not None:
             progress(1)
     return sheets

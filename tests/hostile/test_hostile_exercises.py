@@ -616,3 +616,19 @@ def test_answer_keys_in_html_go_through_the_math_check():
     exercise = Exercise("t", "T", 1, 1, 0, "S", (Part("1", "P", Answer.choice("B}\\input{x")),), ("s",), {})
     page = render_html.render_sheet(Sheet("s1", "", "F-1", 0, (exercise,)), solutions=True)
     assert "\\(\\text{B}\\input{x}\\)" not in page and "tex2jax_ignore" in page
+
+
+def test_a_template_failing_for_one_student_names_the_student(tmp_path):
+    (tmp_path / "boom.py").write_text(
+        "from pgsym.exercises.template import Template, Draft\n"
+        "class Boom(Template):\n"
+        "    name = 'boom-hostile'\n"
+        "    title = 'Boom'\n"
+        "    def build(self, rng, level):\n"
+        "        return 1 / 0\n")
+    (tmp_path / "roster.csv").write_text("id,name\ns1,Ada\n")
+    result = CliRunner().invoke(main, ["sheet", "--templates", str(tmp_path), "--topics", "boom-hostile",
+                                       "--roster", str(tmp_path / "roster.csv"), "--out", str(tmp_path / "out")])
+    assert result.exit_code == 1 and "the sheet of student s1" in result.output
+    assert "ZeroDivisionError" in result.output and "Traceback" not in result.output
+    assert not (tmp_path / "out").exists()
