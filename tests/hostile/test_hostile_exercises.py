@@ -594,10 +594,16 @@ def test_sigterm_during_writing_leaves_nothing(tmp_path):
     assert list(tmp_path.iterdir()) == []
 
 
-def test_hostile_sheets_build_for_every_builtin_topic():
-    """Sanity: names with every payload go through the real templates too (build, no rendering error)."""
-    sheets = build_sheets(["join", "preserved"], [("a", payloads(Path("/x"))["cloze"])], 1)
-    assert "{1:SA:=x}" not in render_moodle.render_quiz(sheets)
+def test_hostile_names_through_real_templates():
+    """The same escaping with the built-in templates' own text around the name."""
+    payload = payloads(Path("/x"))["cloze"] + " " + payloads(Path("/x"))["input-math"]
+    sheet = build_sheets(["join", "preserved"], [("a", payload)], 1)[0]
+    page = render_md.render_sheet(sheet, solutions=True)
+    check_markdown(page, payload, fences=2)  # the two solution dropdowns are ours
+    assert visible(payload) + " (a)" in inline_text(myst_tokens(page))
+    tex = render_tex.render_sheet_body(sheet, solutions=True)
+    assert "\\{1:SA:=x\\}" in tex and "\\textbackslash{}input" in tex and "\\input" not in tex
+    assert visible(payload) in " ".join("".join(parse_page(render_html.render_sheet(sheet)).text).split())
 
 
 def test_mathjax_copy_skips_links_out_and_refuses_pipes(tmp_path, secret_file):
