@@ -187,6 +187,9 @@ def _write_file_atomically(path: Path, text: str) -> None:
     try:
         with os.fdopen(fd, "w", encoding="utf-8", newline="") as stream:
             stream.write(text)
+        mask = os.umask(0)
+        os.umask(mask)
+        os.chmod(tmp, 0o666 & ~mask)  # mkstemp makes the file private; the result should not be
         os.replace(tmp, path)
     except OSError as err:
         Path(tmp).unlink(missing_ok=True)

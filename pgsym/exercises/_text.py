@@ -55,7 +55,7 @@ MATH_COMMANDS = frozenset("""
 MATH_ENVIRONMENTS = frozenset({"matrix", "pmatrix", "bmatrix", "vmatrix", "Vmatrix", "smallmatrix", "cases"})
 
 _MATH_SYMBOLS = frozenset(",;:! \\{}|")  # control symbols \, \; \: \! \  \\ \{ \} \|
-_MATH_CHARS = re.compile(r"[A-Za-z0-9\s+\-*/=<>()\[\]|,.;:!'^_{}&\\]*")
+_MATH_CHARS = re.compile(r"[A-Za-z0-9 \t\n+\-*/=<>()\[\]|,.;:!'^_{}&\\]*")
 _CONTROL = re.compile(r"\\([A-Za-z]+|.)", re.S)
 _ENV = re.compile(r"\\(?:begin|end)\s*\{([A-Za-z*]*)\}")
 
@@ -94,11 +94,11 @@ def math_is_safe(tex: str) -> bool:
 
     >>> math_is_safe(r"\\begin{pmatrix} 1 \\\\ \\tfrac{1}{2} \\end{pmatrix}"), math_is_safe(r"\\input{x}")
     (True, False)
-    >>> math_is_safe("x^^5c"), math_is_safe("{x"), math_is_safe(r"\\def\\x{\\x}\\x")
-    (False, False, False)
+    >>> math_is_safe("x^^5c"), math_is_safe("{x"), math_is_safe(r"\\def\\x{\\x}\\x"), math_is_safe("x\\\\")
+    (False, False, False, False)
     """
-    if not _MATH_CHARS.fullmatch(tex) or "^^" in tex:
-        return False
+    if not _MATH_CHARS.fullmatch(tex) or "^^" in tex or "\\" in _CONTROL.sub("", tex):
+        return False  # (a backslash left over ends the snippet: it would escape the closing delimiter)
     depth = 0
     for m in re.finditer(r"\\.|[{}]", tex, re.S):
         if m.group() == "{":

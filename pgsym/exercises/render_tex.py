@@ -43,9 +43,6 @@ PREAMBLE = r"""\documentclass[11pt,a4paper]{article}
 \newcommand{\exercisetitle}[1]{\par\bigskip{\raggedright\large\bfseries #1\par}\nopagebreak\smallskip}
 """
 
-
-
-
 #: Seconds TeX may take for a document: ``TEX_BASE_SECONDS + TEX_SECONDS_PER_SHEET × sheets``.
 TEX_BASE_SECONDS = 30.0
 TEX_SECONDS_PER_SHEET = 2.0
