@@ -223,7 +223,7 @@ def to_tex(text: str) -> str:
 # ---------------------------------------------------------------- Markdown / MyST
 
 # inline Markdown, MyST roles/substitutions, math and HTML: escaped wherever they appear
-_MD_INLINE = set("\\`*_{}[]<>&$|~!")
+_MD_INLINE = set("\\`*_{}[]<>&$|~!#")  # '#': a heading's closing hashes would be dropped
 _MD_BLOCK = r"([ \t]*)(?:([!-/:-@\[-`{-~])|(\d+)([.)]))"
 _MD_LINE_START = re.compile(r"(?:\A|(?<=\n))" + _MD_BLOCK)
 _MD_NEW_LINE = re.compile(r"(?<=\n)" + _MD_BLOCK)

@@ -638,3 +638,20 @@ def test_a_template_failing_for_one_student_names_the_student(tmp_path):
     assert result.exit_code == 1 and "the sheet of student s1" in result.output
     assert "ZeroDivisionError" in result.output and "Traceback" not in result.output
     assert not (tmp_path / "out").exists()
+
+
+@pytest.mark.parametrize("name", ["Ada #", "Ada ##", "Ada\n===", "x\n- [ ] y", ": term"])
+def test_markdown_headings_keep_every_character(name):
+    page = render_md.render_sheet(Sheet("s1", name, "F-1", 0, ()))
+    tokens = myst_tokens(page)
+    assert [t.type for t in tokens][:3] == ["heading_open", "inline", "heading_close"]
+    assert tokens[1].content.replace("\\", "") == f"Exercise sheet: {one_line(name)} (s1)"
+
+
+@pytest.mark.parametrize("text", ["8¹", "٣", "1/²", "(1, ³, 0)"])
+def test_unicode_digits_are_a_named_error(text):
+    from pgsym.errors import UnparsableAnswerError
+    from pgsym.exercises.answers import parse_answer
+
+    with pytest.raises(UnparsableAnswerError, match="unexpected character"):
+        parse_answer(text)
