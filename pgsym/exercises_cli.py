@@ -13,6 +13,7 @@ from pathlib import Path
 import click
 
 from .errors import PgsymError
+from .limits import MAX_ANSWER_CHARS, MAX_FILE_BYTES
 
 _EPILOG_SHEET = """\b
 Examples:
@@ -25,9 +26,15 @@ Examples:
 Topics are template names, optionally with a level (topic:level); 'pgsym templates list' shows them.
 A variant is fixed by (seed, student id, topic and its occurrence), so reordering or adding topics
 keeps the other exercises. The output folder must be new or empty; it holds manifest.json (the
-answer key, used by 'pgsym check') and md/, html/, ipynb/, sheets.tex, sheets.pdf, moodle.xml."""
+answer key, used by 'pgsym check') and md/, html/, ipynb/, sheets.tex, sheets.pdf, moodle.xml;
+on any error (or Ctrl-C) nothing is left behind.
 
-_EPILOG_CHECK = """\b
+\b
+Names, ids and titles are printed as text in every format, never run as LaTeX, Markdown, HTML
+or Cloze. pdflatex runs without shell escape, with openin_any=p and openout_any=p, in a
+temporary folder, for at most 30 s + 2 s per sheet; a sheet that fails names its student."""
+
+_EPILOG_CHECK = f"""\b
 Examples:
   pgsym check --manifest week4/manifest.json --answers answers.csv
   pgsym check --manifest week4/manifest.json --answers answers.csv --out grades.csv
@@ -35,7 +42,23 @@ Examples:
 \b
 answers.csv is either wide (header: id,1,2,3a,3b,...; one row per student) or long
 (header: id,question,answer). Homogeneous answers are right up to a nonzero scale; fractions
-such as -2/3, decimals and 0 are read exactly; nothing typed is ever evaluated as code."""
+such as -2/3, decimals and 0 are read exactly; nothing typed is ever evaluated as code.
+The file may hold at most {MAX_FILE_BYTES // 1_000_000} MB, one answer at most {MAX_ANSWER_CHARS} characters.
+An answer that cannot be read (too long, not a number, vector or matrix) or a question
+answered twice costs only that answer: it counts as wrong, is listed on stderr and in
+--out, and all others are graded.
+Cells of --out (and of the summary) that a spreadsheet would run as a formula (starting
+with = + - @, tab or carriage return) get a leading ' as OWASP recommends.
+
+\b
+Exit status:
+  0  every answer was read and graded
+  1  the manifest or the answers file could not be used (nothing graded)
+  2  wrong usage (a missing or bad option)
+  3  some answers could not be read or were given twice; every other answer was graded"""
+
+#: Exit status of 'pgsym check' when some answers were unreadable (the others are graded).
+EXIT_UNREADABLE = 3
 
 
 def _fail(err: Exception) -> click.ClickException:
@@ -89,7 +112,7 @@ class _NoBar:
 def sheet_command(topics: str, count: int, seed: int, roster: str | None, formats: str, level: int, solutions: bool,
                   out: str, template_dirs: tuple[str, ...], mathjax: str | None, progress: bool | None) -> None:
     """Generate per-student exercise sheets, their answer key and renderings."""
-    from .exercises.output import parse_formats, render_all, write_atomically
+    from .exercises.output import Terminated, parse_formats, render_all, write_atomically
     from .exercises.sheets import anonymous_students, build_sheets, parse_topics, read_roster
 
     _load_folders(template_dirs)
@@ -108,6 +131,9 @@ def sheet_command(topics: str, count: int, seed: int, roster: str | None, format
                                                                   progress=bar.update))
     except PgsymError as err:
         raise _fail(err) from None
+    except Terminated:
+        click.echo("stopped by SIGTERM; nothing was written", err=True)
+        sys.exit(143)
     click.echo(f"{len(sheets)} sheet(s) × {len(pairs)} exercise(s) → {target} ({', '.join(fmt)}; manifest.json)")
 
 
@@ -117,31 +143,60 @@ def sheet_command(topics: str, count: int, seed: int, roster: str | None, format
 @click.option("--answers", required=True, type=click.Path(dir_okay=False), help="CSV of typed answers.")
 @click.option("--out", type=click.Path(dir_okay=False), help="Also write every graded answer to this CSV.")
 @click.option("--details", is_flag=True, help="Print every wrong or unreadable answer.")
-def check_command(manifest: str, answers: str, out: str | None, details: bool) -> None:
+@click.pass_context
+def check_command(ctx: click.Context, manifest: str, answers: str, out: str | None, details: bool) -> None:
     """Grade the answers of every student against the manifest."""
-    from .exercises.grading import grade_rows, read_answers, results_csv, summary
+    from .csv_cells import csv_text
+    from .exercises._text import clean
+    from .exercises.grading import grade_rows, read_answer_file, results_csv, summary
     from .exercises.sheets import load_manifest
 
     try:
         keys = load_manifest(manifest)
-        report = grade_rows(keys, read_answers(answers))
+        rows, problems = read_answer_file(answers)
+        report = grade_rows(keys, rows)
     except PgsymError as err:
         raise _fail(err) from None
-    click.echo("student,right,questions")
-    for student, right, total in summary(report):
-        click.echo(f"{student},{right},{total}")
-    unreadable = [r for rs in report.values() for r in rs if r.reason.startswith("cannot read")]
+    click.echo(csv_text([["student", "right", "questions"], *summary(report)]), nl=False)
+    unreadable = [r for rs in report.values() for r in rs if r.unreadable]
     for rs in report.values():
         for r in rs:
-            if r.reason and (details or r.reason.startswith("cannot read") or "manifest" in r.reason):
-                click.echo(f"  {r.student} [{r.label}]: {r.reason}", err=True)
-    if unreadable:
-        click.echo(f"{len(unreadable)} answer(s) could not be read and count as wrong (see above).", err=True)
+            if r.reason and (details or r.unreadable or "manifest" in r.reason):
+                click.echo(clean(f"  {r.student} [{r.label}]: {r.reason}")[:1000], err=True)
+    for message in problems:
+        click.echo(clean(f"  {message}")[:1000], err=True)
+    if unreadable or problems:
+        click.echo(f"{len(unreadable)} answer(s) could not be read or were given twice, and {len(problems)} line(s) "
+                   "of the answers file were skipped (see above); every other answer was graded.", err=True)
     if out:
-        try:
-            Path(out).write_text(results_csv(report), encoding="utf-8")
-        except OSError as err:
-            raise click.ClickException(f"cannot write {out!r}: {err.strerror or err}") from None
+        _write_file_atomically(Path(out), results_csv(report, problems))
+    if unreadable or problems:
+        ctx.exit(EXIT_UNREADABLE)
+
+
+def _write_file_atomically(path: Path, text: str) -> None:
+    """Write ``path`` through a temporary file in its folder, so it is either complete or unchanged."""
+    import os
+    import tempfile
+
+    try:
+        fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".partial", dir=path.parent if str(path.parent)
+                                   else ".")
+    except OSError as err:
+        raise click.ClickException(f"cannot write {str(path)!r}: {err.strerror or err}") from None
+    try:
+        with os.fdopen(fd, "w", encoding="utf-8", newline="") as stream:
+            stream.write(text)
+        mask = os.umask(0)
+        os.umask(mask)
+        os.chmod(tmp, 0o666 & ~mask)  # mkstemp makes the file private; the result should not be
+        os.replace(tmp, path)
+    except OSError as err:
+        Path(tmp).unlink(missing_ok=True)
+        raise click.ClickException(f"cannot write {str(path)!r}: {err.strerror or err}") from None
+    except BaseException:
+        Path(tmp).unlink(missing_ok=True)
+        raise
 
 
 @click.group("templates")
@@ -223,7 +278,10 @@ def templates_new(name: str, folder: str) -> None:
     cls = "".join(part.capitalize() for part in name.split("_")) + "Template"
     try:
         path.parent.mkdir(parents=True, exist_ok=True)
-        path.write_text(_SKELETON.format(name=name, cls=cls, folder=folder), encoding="utf-8")
+        with path.open("x", encoding="utf-8") as stream:  # "x": never through a dangling link or over a file
+            stream.write(_SKELETON.format(name=name, cls=cls, folder=folder))
+    except FileExistsError:
+        raise click.ClickException(f"{path} exists already; choose another name or delete it") from None
     except OSError as err:
         raise click.ClickException(f"cannot write {path}: {err.strerror or err}") from None
     click.echo(f"wrote {path}; try: pgsym templates check {name} --templates {folder}")

@@ -29,6 +29,7 @@ __all__ = [
     "MAX_EXPONENT",
     "MAX_FILE_BYTES",
     "MAX_IMAGE_PIXELS",
+    "MAX_NAME_CHARS",
     "MAX_NESTING",
     "read_bounded",
     "read_text_file",
@@ -100,3 +101,6 @@ def _is_regular(fd: int) -> bool:
     import stat
 
     return stat.S_ISREG(os.fstat(fd).st_mode)
+
+MAX_NAME_CHARS = 20_000
+"""One roster field other than the id (a student's name), in characters."""

@@ -39,7 +39,7 @@ def test_markdown_page(sheets):
 
 def test_latex_document(sheets):
     tex = render_tex.render_document(sheets, solutions=True)
-    assert tex.count(r"\section*{Exercise sheet:") == 2 and r"\solutionstrue" in tex
+    assert tex.count(r"\sheettitle{Exercise sheet:") == 2 and r"\solutionstrue" in tex
     assert r"Alan\_Turing \& Co" in tex  # prose is escaped
     assert r"\begin{bmatrix}" in tex  # math is kept
     assert r"\solutionsfalse" in render_tex.render_document(sheets, solutions=False)

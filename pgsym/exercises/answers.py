@@ -27,14 +27,15 @@ from fractions import Fraction
 from typing import Any
 
 from ..errors import UnparsableAnswerError
+from ..limits import MAX_ANSWER_CHARS, MAX_DIGITS
 from ._exact import canonical_ints
 from .model import Answer
 
-MAX_LENGTH = 2000
+MAX_LENGTH = MAX_ANSWER_CHARS
 MAX_DEPTH = 3
 MAX_ENTRIES = 64
-MAX_DIGITS = 40
 
+_DIGITS = frozenset("0123456789")
 _ALLOWED = set("0123456789+-/.,;()[] \t")
 _MINUS_SIGNS = {"\u2212": "-", "\u2013": "-"}  # unicode minus and en dash read as minus
 
@@ -63,14 +64,15 @@ def _tokens(text: str) -> list[tuple[str, str, int]]:
                         "vectors (1, 2, 0) and matrices [[1, 0], [0, 1]]")
         if ch in " \t":
             i += 1
-        elif ch.isdigit() or ch == ".":
+        elif ch in _DIGITS or ch == ".":
             j = i
-            while j < n and (text[j].isdigit() or text[j] == "."):
+            # ASCII digits only: str.isdigit() also accepts '¹' or '٣', which Fraction cannot read
+            while j < n and (text[j] in _DIGITS or text[j] == "."):
                 j += 1
             word = text[i:j]
             if word.count(".") > 1 or word == ".":
                 raise _fail(f"{word!r} at position {i + 1} is not a number")
-            if sum(c.isdigit() for c in word) > MAX_DIGITS:
+            if sum(c in _DIGITS for c in word) > MAX_DIGITS:
                 raise _fail(f"the number at position {i + 1} has more than {MAX_DIGITS} digits")
             tokens.append(("number", word, i))
             i = j

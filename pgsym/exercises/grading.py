@@ -15,51 +15,54 @@ wrong and are reported with the reason.
 
 from __future__ import annotations
 
-import csv
 import io
 from collections.abc import Iterable
 from dataclasses import dataclass
 from pathlib import Path
 
+from ..csv_cells import write_csv
 from ..errors import AnswersFileError, UnparsableAnswerError
+from ..limits import MAX_ANSWER_CHARS, MAX_FILE_BYTES
 from .answers import grade
 from .model import Answer
+from .reading import csv_rows, read_user_text
 
-MAX_CSV_BYTES = 20_000_000
+MAX_CSV_BYTES = MAX_FILE_BYTES
 
-__all__ = ["AnswersFileError", "Result", "grade_rows", "read_answers", "results_csv", "summary"]
+__all__ = ["AnswersFileError", "Result", "grade_rows", "read_answer_file", "read_answers", "results_csv", "summary"]
 
+_SHOWN = 200  # characters of a given answer kept in a report
 
 
 @dataclass(frozen=True)
 class Result:
-    """The grade of one answer: ``reason`` says why it is wrong or unreadable (empty if right)."""
+    """The grade of one answer: ``reason`` says why it is wrong or unreadable (empty if right).
+
+    ``unreadable`` marks answers that were not graded as written: text that cannot be read as an
+    answer (too long, not a number, vector or matrix) and questions answered more than once.
+    """
 
     student: str
     label: str
     given: str
     correct: bool
     reason: str
+    unreadable: bool = False
 
 
-def read_answers(path: str | Path) -> list[tuple[str, str, str]]:
-    """Read an answers CSV (wide or long) into (student id, question label, answer text) triples."""
+def read_answer_file(path: str | Path) -> tuple[list[tuple[str, str, str]], list[str]]:
+    """Read an answers CSV (wide or long): the (student id, question label, answer text) triples, and
+    the lines that are not valid CSV (one message each; the other lines are still read).
+
+    The whole file is limited to :data:`pgsym.limits.MAX_FILE_BYTES`; single cells are not limited
+    here (the grader refuses an overlong answer on its own, so it costs only that answer).
+    """
     p = Path(path)
-    try:
-        if p.stat().st_size > MAX_CSV_BYTES:
-            raise AnswersFileError(f"the answers file {p.name!r} is larger than {MAX_CSV_BYTES // 1_000_000} MB")
-        text = p.read_text(encoding="utf-8-sig")
-    except FileNotFoundError:
-        raise AnswersFileError(f"the answers file {str(p)!r} does not exist") from None
-    except (OSError, UnicodeDecodeError) as err:
-        raise AnswersFileError(f"cannot read the answers file {str(p)!r}: {err}") from None
-    try:
-        rows = list(csv.reader(io.StringIO(text)))
-    except csv.Error as err:
-        raise AnswersFileError(f"the answers file {p.name!r} is not valid CSV: {err}") from None
+    rows, problems = csv_rows(read_user_text(p, "answers file", AnswersFileError))
+    messages = [f"line {line} of {p.name!r} is not valid CSV and was skipped: {reason}" for line, reason in problems]
     if not rows:
         raise AnswersFileError(f"the answers file {p.name!r} is empty")
-    header = [h.strip() for h in rows[0]]
+    header = [h.strip() for h in rows[0][1]]
     lower = [h.lower() for h in header]
     id_col = next((lower.index(n) for n in ("id", "student_id", "student") if n in lower), None)
     if id_col is None:
@@ -68,44 +71,70 @@ def read_answers(path: str | Path) -> list[tuple[str, str, str]]:
     out = []
     if "question" in lower and "answer" in lower:
         q, a = lower.index("question"), lower.index("answer")
-        for row in rows[1:]:
+        for line, row in rows[1:]:
             if len(row) > max(id_col, q, a):
                 out.append((row[id_col].strip(), row[q].strip(), row[a]))
-        return out
-    for row in rows[1:]:
+            elif any(cell.strip() for cell in row):
+                messages.append(f"line {line} of {p.name!r} has fewer than {max(id_col, q, a) + 1} columns; skipped")
+        return out, messages
+    for _, row in rows[1:]:
         if len(row) <= id_col or not row[id_col].strip():
             continue
         for j, label in enumerate(header):
             if j != id_col and label and j < len(row):
                 out.append((row[id_col].strip(), label, row[j]))
-    return out
+    return out, messages
+
+
+def read_answers(path: str | Path) -> list[tuple[str, str, str]]:
+    """The (student id, question label, answer text) triples of an answers CSV (see :func:`read_answer_file`)."""
+    return read_answer_file(path)[0]
+
+
+def _shown(text: str) -> str:
+    return text if len(text) <= _SHOWN else text[:_SHOWN] + "…"
 
 
 def grade_rows(keys: dict[str, dict[str, Answer]], rows: Iterable[tuple[str, str, str]]) -> dict[str, list[Result]]:
-    """Grade (student, label, text) triples against the keys; students without a row get 'no answer'."""
-    given: dict[str, dict[str, str]] = {}
+    """Grade (student, label, text) triples against the keys; students without a row get 'no answer'.
+
+    Every answer is graded on its own: an answer that cannot be read (or is longer than
+    :data:`pgsym.limits.MAX_ANSWER_CHARS`) is marked ``unreadable`` and the others are still graded;
+    a question answered twice is reported and not graded.
+    """
+    given: dict[str, dict[str, list[str]]] = {}
     unknown: dict[str, list[Result]] = {}
     for student, label, text in rows:
         if student not in keys:
-            unknown.setdefault(student, []).append(Result(student, label, text, False, "student not in the manifest"))
+            unknown.setdefault(student, []).append(Result(student, label, _shown(text), False,
+                                                          "student not in the manifest"))
             continue
-        given.setdefault(student, {})[label] = text
+        given.setdefault(student, {}).setdefault(label, []).append(text)
     report: dict[str, list[Result]] = {}
     for student, answers in keys.items():
         results = []
         typed = given.get(student, {})
         for label, expected in answers.items():
-            text = typed.get(label, "")
-            if not text.strip():
-                results.append(Result(student, label, text, False, "no answer"))
-                continue
-            try:
-                ok = grade(expected, text)
-                results.append(Result(student, label, text, ok, "" if ok else "wrong"))
-            except UnparsableAnswerError as err:
-                results.append(Result(student, label, text, False, str(err)))
+            texts = [t for t in typed.get(label, []) if t.strip()]
+            if not texts:
+                results.append(Result(student, label, "", False, "no answer"))
+            elif len(texts) > 1:
+                results.append(Result(student, label, _shown(" | ".join(texts)), False,
+                                      f"answered {len(texts)} times; not graded (keep one answer per question)",
+                                      unreadable=True))
+            elif len(texts[0]) > MAX_ANSWER_CHARS:
+                results.append(Result(student, label, _shown(texts[0]), False,
+                                      f"cannot read the answer: it is {len(texts[0])} characters long; "
+                                      f"at most {MAX_ANSWER_CHARS} are read", unreadable=True))
+            else:
+                try:
+                    ok = grade(expected, texts[0])
+                    results.append(Result(student, label, texts[0], ok, "" if ok else "wrong"))
+                except UnparsableAnswerError as err:
+                    results.append(Result(student, label, texts[0], False, str(err), unreadable=True))
         for label in sorted(set(typed) - set(answers)):
-            results.append(Result(student, label, typed[label], False, "no such question on this student's sheet"))
+            results.append(Result(student, label, _shown(" | ".join(typed[label])), False,
+                                  "no such question on this student's sheet"))
         report[student] = results
     report.update(unknown)
     return report
@@ -122,12 +151,19 @@ def summary(report: dict[str, list[Result]]) -> list[tuple[str, int, int]]:
             for s, rs in report.items()]
 
 
-def results_csv(report: dict[str, list[Result]]) -> str:
-    """Every graded answer as CSV: student, question, answer, correct, reason."""
-    buf = io.StringIO()
-    writer = csv.writer(buf, lineterminator="\n")
-    writer.writerow(["student", "question", "answer", "correct", "reason"])
+def results_csv(report: dict[str, list[Result]], problems: Iterable[str] = ()) -> str:
+    """Every graded answer as CSV: student, question, answer, correct, reason (then one row per line of
+    the answers file that could not be read). Cells a spreadsheet would run as a formula are
+    neutralised (:func:`pgsym.csv_cells.safe_cell`).
+
+    >>> print(results_csv({"=1+1": [Result("=1+1", "1", "-2+3", False, "wrong")]}), end="")
+    student,question,answer,correct,reason
+    '=1+1,1,'-2+3,0,wrong
+    """
+    rows: list[list[object]] = [["student", "question", "answer", "correct", "reason"]]
     for results in report.values():
-        for r in results:
-            writer.writerow([r.student, r.label, r.given[:200], int(r.correct), r.reason])
+        rows += [[r.student, r.label, _shown(r.given), int(r.correct), r.reason] for r in results]
+    rows += [["", "", "", 0, message] for message in problems]
+    buf = io.StringIO()
+    write_csv(buf, rows)
     return buf.getvalue()

@@ -1,15 +1,19 @@
 """Writing a set of sheets to disk in the requested formats, atomically.
 
 Everything is written into a temporary folder next to the target and moved into place only when
-every format succeeded, so an error (for example TeX failing) leaves no partial output.
+every format succeeded, so an error (for example TeX failing), Ctrl-C or SIGTERM leaves no partial
+output: the target is either complete or untouched.
 """
 
 from __future__ import annotations
 
 import os
 import shutil
+import signal
 import tempfile
-from collections.abc import Callable, Sequence
+import threading
+from collections.abc import Callable, Iterator, Sequence
+from contextlib import contextmanager
 from pathlib import Path
 
 from ..errors import OutputError
@@ -66,7 +70,7 @@ def render_all(sheets: Sequence[Sheet], topics: Sequence[tuple[str, int]], forma
         if "tex" in formats:
             write("sheets.tex", tex)
         if "pdf" in formats:
-            write("sheets.pdf", render_tex.compile_pdf(tex))
+            write("sheets.pdf", render_tex.compile_sheets(sheets, solutions))
     if "moodle" in formats:
         write("moodle.xml", render_moodle.render_quiz(sheets, solutions))
     return written
@@ -90,11 +94,34 @@ def write_atomically(out: str | Path, fill: Callable[[Path], object]) -> Path:
     except OSError as err:
         raise OutputError(f"cannot write into {str(parent)!r}: {err.strerror or err}") from None
     try:
-        fill(tmp)
-        if target.exists():
-            target.rmdir()
-        os.replace(tmp, target)
+        with _terminate_as_exception():
+            fill(tmp)
+            if target.exists():
+                target.rmdir()
+            os.replace(tmp, target)
     except BaseException:
         shutil.rmtree(tmp, ignore_errors=True)
         raise
     return target
+
+
+class Terminated(BaseException):
+    """SIGTERM arrived while writing (raised so the temporary folder is removed before exiting)."""
+
+
+@contextmanager
+def _terminate_as_exception() -> Iterator[None]:
+    """Turn SIGTERM into :class:`Terminated` while writing (a killed run leaves no ``.partial`` folder);
+    only in the main thread, where Python can install signal handlers."""
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+
+    def handler(signum: int, frame: object) -> None:
+        raise Terminated(f"stopped by signal {signum}")
+
+    previous = signal.signal(signal.SIGTERM, handler)
+    try:
+        yield
+    finally:
+        signal.signal(signal.SIGTERM, previous)

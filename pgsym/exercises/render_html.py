@@ -1,5 +1,9 @@
 """HTML renderer: one self-contained page per sheet, math typeset by a local copy of MathJax.
 
+Names, ids and titles go through :func:`~pgsym.exercises._text.html_escape` and exercise text through
+:func:`~pgsym.exercises._text.to_html`: no user text becomes a tag, an entity or math (text with a
+backslash or dollar sits in a span MathJax is told to ignore).
+
 The page loads ``mathjax/tex-chtml.js`` relative to itself; :func:`copy_mathjax` copies MathJax's
 ``es5`` folder there (from ``--mathjax DIR``, the ``PGSYM_MATHJAX`` variable, or a ``node_modules``/
 ``_mathjax`` folder of the project). No CDN is used.
@@ -18,7 +22,7 @@ import shutil
 from pathlib import Path
 
 from ..errors import MathJaxMissingError
-from ._text import to_html
+from ._text import NO_MATH_CLASS, html_escape, one_line, to_html
 from .model import KIND_HINTS, Sheet
 
 MATHJAX_DIR = "mathjax"
@@ -32,17 +36,19 @@ ol.choices{list-style-type:upper-alpha}"""
 
 def render_sheet(sheet: Sheet, solutions: bool = False, mathjax: str = f"{MATHJAX_DIR}/tex-chtml.js") -> str:
     """The HTML page of one sheet; ``mathjax`` is the (relative) address of ``tex-chtml.js``."""
-    who = html.escape(sheet.student_name or sheet.student_id)
+    who = html_escape(sheet.student_name or sheet.student_id)
+    title = html.escape(one_line(sheet.student_name or sheet.student_id))  # <title> shows text only, never math
     out = ["<!DOCTYPE html>", '<html lang="en">', "<head>", '<meta charset="utf-8">',
-           f"<title>Exercise sheet: {who}</title>", f"<style>{STYLE}</style>",
-           "<script>window.MathJax = {tex: {inlineMath: [['\\\\(', '\\\\)']], displayMath: [['\\\\[', '\\\\]']]}};"
-           "</script>", f'<script id="MathJax-script" async src="{html.escape(mathjax)}"></script>', "</head>",
+           f"<title>Exercise sheet: {title}</title>", f"<style>{STYLE}</style>",
+           "<script>window.MathJax = {tex: {inlineMath: [['\\\\(', '\\\\)']], displayMath: [['\\\\[', '\\\\]']]}, "
+           f"options: {{ignoreHtmlClass: '{NO_MATH_CLASS}'}}}};</script>",
+           f'<script id="MathJax-script" async src="{html.escape(mathjax)}"></script>', "</head>",
            "<body>", f"<h1>Exercise sheet: {who}</h1>",
-           f'<p class="form">Student id: <code>{html.escape(sheet.student_id)}</code> · Form id: '
-           f"<code>{sheet.form_id}</code></p>",
+           f'<p class="form">Student id: <code>{html_escape(sheet.student_id)}</code> · Form id: '
+           f"<code>{html_escape(sheet.form_id)}</code></p>",
            "<p>Give exact answers; homogeneous coordinates are accepted up to a nonzero scale.</p>"]
     for ex in sheet.exercises:
-        out.append(f"<h2>Exercise {ex.slot}: {html.escape(ex.title)}</h2>")
+        out.append(f"<h2>Exercise {ex.slot}: {html_escape(ex.title)}</h2>")
         out.append(f"<p>{to_html(ex.statement)}</p>")
         for part in ex.parts:
             out.append(f'<div class="part"><b>[{part.label}]</b> {to_html(part.prompt)} '
@@ -54,7 +60,7 @@ def render_sheet(sheet: Sheet, solutions: bool = False, mathjax: str = f"{MATHJA
             out.append("<details><summary>Solution</summary><ol>")
             out += [f"<li>{to_html(step)}</li>" for step in ex.solution]
             out.append("</ol>")
-            out += [f"<p><b>Answer [{p.label}]:</b> \\({html.escape(p.answer.latex(), quote=False)}\\)</p>"
+            out += [f"<p><b>Answer [{p.label}]:</b> {to_html('$' + p.answer.latex() + '$')}</p>"
                     for p in ex.parts]
             out.append("</details>")
     out += ["</body>", "</html>"]
@@ -81,6 +87,21 @@ def find_mathjax(explicit: str | Path | None = None) -> Path:
 
 
 def copy_mathjax(target: Path, source: str | Path | None = None) -> None:
-    """Copy the MathJax files the sheets need (the es5 folder) to ``target/mathjax``."""
-    src = find_mathjax(source)
-    shutil.copytree(src, target / MATHJAX_DIR, dirs_exist_ok=True)
+    """Copy the MathJax files the sheets need (the es5 folder) to ``target/mathjax``.
+
+    Only regular files and folders inside the MathJax folder are copied: a link leading out of it
+    is skipped, and a pipe or device there is refused instead of being read.
+    """
+    src = find_mathjax(source).resolve()
+
+    def ignore(folder: str, names: list[str]) -> list[str]:
+        skipped = []
+        for name in names:
+            path = Path(folder) / name
+            if path.is_symlink() and not path.resolve().is_relative_to(src):
+                skipped.append(name)
+            elif not (path.is_file() or path.is_dir()):
+                raise MathJaxMissingError(f"{str(path)!r} in the MathJax folder is not a regular file")
+        return skipped
+
+    shutil.copytree(src, target / MATHJAX_DIR, dirs_exist_ok=True, ignore=ignore)

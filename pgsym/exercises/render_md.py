@@ -1,5 +1,8 @@
 """Markdown/MyST renderer: one page per sheet, solutions in dropdown admonitions on request.
 
+Names, ids and titles go through :func:`~pgsym.exercises._text.md_escape`, exercise text through
+:func:`~pgsym.exercises._text.to_md`: no user text becomes a role, directive, link, HTML or math.
+
 >>> from pgsym.exercises.sheets import build_sheet
 >>> page = render_sheet(build_sheet(["join"], "s1", "Ada", 1), solutions=True)
 >>> page.startswith("# Exercise sheet") and ":class: dropdown" in page
@@ -8,25 +11,27 @@ True
 
 from __future__ import annotations
 
+from ._text import md_escape, to_md
 from .model import KIND_HINTS, Exercise, Sheet
 
 
 def _exercise(ex: Exercise, solutions: bool) -> list[str]:
-    lines = [f"## Exercise {ex.slot}: {ex.title}", "", ex.statement, ""]
+    lines = [f"## Exercise {ex.slot}: {md_escape(ex.title)}", "", to_md(ex.statement), ""]
     for part in ex.parts:
-        label = f"**({part.label})** " if len(ex.parts) > 1 else f"**[{part.label}]** "
-        lines.append(f"{label}{part.prompt} *Answer format: {KIND_HINTS[part.answer.kind]}.*")
+        label = f"**({part.label})** " if len(ex.parts) > 1 else f"**[{part.label}]** "  # labels are ours
+        lines.append(f"{label}{to_md(part.prompt)} *Answer format: {KIND_HINTS[part.answer.kind]}.*")
         lines.append("")
         for letter, choice in zip("ABCDEFGH", part.choices, strict=False):
-            lines.append(f"- **{letter}.** {choice}")
+            lines.append(f"- **{letter}.** {to_md(choice)}")
         if part.choices:
             lines.append("")
     if solutions:
         lines += ["````{admonition} Solution", ":class: dropdown", ""]
-        lines += [f"{i}. {step}" for i, step in enumerate(ex.solution, start=1)]
+        lines += [f"{i}. {to_md(step)}" for i, step in enumerate(ex.solution, start=1)]
         lines.append("")
         for part in ex.parts:
-            lines.append(f"**Answer [{part.label}]:** ${part.answer.latex()}$  (typed: `{part.answer.display()}`)")
+            lines.append(f"**Answer [{part.label}]:** {to_md('$' + part.answer.latex() + '$')}  "
+                         f"(typed: `{part.answer.display()}`)")
             lines.append("")
         lines += ["````", ""]
     return lines
@@ -35,7 +40,7 @@ def _exercise(ex: Exercise, solutions: bool) -> list[str]:
 def render_sheet(sheet: Sheet, solutions: bool = False) -> str:
     """The MyST Markdown page of one sheet."""
     who = f"{sheet.student_name} ({sheet.student_id})" if sheet.student_name else sheet.student_id
-    lines = [f"# Exercise sheet: {who}", "", f"Form id: **{sheet.form_id}**", "",
+    lines = [f"# Exercise sheet: {md_escape(who)}", "", f"Form id: **{md_escape(sheet.form_id)}**", "",
              "Give exact answers: integers and fractions such as `-2/3`; homogeneous coordinates are accepted up "
              "to a nonzero scale.", ""]
     for ex in sheet.exercises:

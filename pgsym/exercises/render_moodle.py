@@ -5,6 +5,10 @@ quiz: every attempt draws a variant. Numbers are asked in canonical form (homoge
 primitive integers with the first nonzero entry positive), since Cloze compares each field on its own;
 integer fields are NUMERICAL, fractions SHORTANSWER in lowest terms, choices MULTICHOICE.
 
+Exercise text goes through :func:`~pgsym.exercises._text.to_moodle`: HTML-escaped, with the Cloze
+characters ``{ } ~ = # :`` (and ``$ [ ] \\`` of Moodle's TeX filter) as numeric entities, so the only
+Cloze fields are the ones made here from the answer key; question names are XML-escaped text.
+
 >>> from pgsym.exercises.sheets import build_sheet
 >>> xml = render_quiz([build_sheet(["join"], "s1", "", 1)])
 >>> xml.startswith('<?xml version="1.0"') and "{1:NUMERICAL:=" in xml
@@ -13,11 +17,12 @@ True
 
 from __future__ import annotations
 
+import re
 from collections.abc import Sequence
 from fractions import Fraction
 from xml.sax.saxutils import escape
 
-from ._text import to_html
+from ._text import one_line, to_moodle
 from .model import Answer, Exercise, Sheet
 
 
@@ -39,6 +44,11 @@ def _cloze(answer: Answer, choices: Sequence[str]) -> str:
     return "<table>" + "".join(rows) + "</table>"
 
 
+def _cdata(text: str) -> str:
+    """A CDATA section holding ``text`` (a ``]]>`` inside is split over two sections)."""
+    return "<![CDATA[" + text.replace("]]>", "]]]]><![CDATA[>") + "]]>"
+
+
 _CANONICAL = {"projective": " (canonical form: coprime integers, first nonzero entry positive)",
               "matrix": " (canonical form: coprime integers, first nonzero entry positive)",
               "vector": " (fractions in lowest terms, e.g. -2/3)", "scalar": " (a fraction in lowest terms, e.g. -2/3)",
@@ -46,20 +56,19 @@ _CANONICAL = {"projective": " (canonical form: coprime integers, first nonzero e
 
 
 def _question(sheet: Sheet, ex: Exercise, solutions: bool) -> str:
-    text = [f"<p>{to_html(ex.statement)}</p>"]
+    text = [f"<p>{to_moodle(ex.statement)}</p>"]
     for p in ex.parts:
-        text.append(f"<p><b>[{p.label}]</b> {to_html(p.prompt)}{_CANONICAL[p.answer.kind]}</p>")
+        text.append(f"<p><b>[{p.label}]</b> {to_moodle(p.prompt)}{_CANONICAL[p.answer.kind]}</p>")
         if p.choices:
-            text.append("<ol type=\"A\">" + "".join(f"<li>{to_html(c)}</li>" for c in p.choices) + "</ol>")
-        text.append(f"<p>{_cloze(p.answer, p.choices)}</p>")
+            text.append("<ol type=\"A\">" + "".join(f"<li>{to_moodle(c)}</li>" for c in p.choices) + "</ol>")
+        text.append(f"<p>{_cloze(p.answer, p.choices)}</p>")  # the only Cloze fields: made here from the key
     feedback = ""
     if solutions:
-        feedback = "<ol>" + "".join(f"<li>{to_html(s)}</li>" for s in ex.solution) + "</ol>"
-    name = f"{ex.slot}. {ex.title} [{sheet.form_id} / {sheet.student_id}]"
-    body = "".join(text).replace("]]>", "]]]]><![CDATA[>")
+        feedback = "<ol>" + "".join(f"<li>{to_moodle(s)}</li>" for s in ex.solution) + "</ol>"
+    name = one_line(f"{ex.slot}. {ex.title} [{sheet.form_id} / {sheet.student_id}]")
     return (f'  <question type="cloze">\n    <name><text>{escape(name)}</text></name>\n'
-            f'    <questiontext format="html"><text><![CDATA[{body}]]></text></questiontext>\n'
-            f'    <generalfeedback format="html"><text><![CDATA[{feedback}]]></text></generalfeedback>\n'
+            f'    <questiontext format="html"><text>{_cdata("".join(text))}</text></questiontext>\n'
+            f'    <generalfeedback format="html"><text>{_cdata(feedback)}</text></generalfeedback>\n'
             "    <penalty>0.3333333</penalty>\n    <hidden>0</hidden>\n  </question>\n")
 
 
@@ -69,7 +78,8 @@ def render_quiz(sheets: Sequence[Sheet], solutions: bool = False, course: str = 
     if not sheets:
         return "".join(out) + "</quiz>\n"
     for index, first in enumerate(sheets[0].exercises):
-        category = f"$course$/{course}/{first.slot:02d}-{first.topic}-level{first.level}"
+        topic = re.sub(r"[^A-Za-z0-9_-]", "_", first.topic)  # a path in Moodle: no '/' from a template name
+        category = f"$course$/{one_line(course)}/{first.slot:02d}-{topic}-level{first.level}"
         out.append(f'  <question type="category">\n    <category><text>{escape(category)}</text></category>\n'
                    "  </question>\n")
         out += [_question(sheet, sheet.exercises[index], solutions) for sheet in sheets]

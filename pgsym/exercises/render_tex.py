@@ -1,4 +1,11 @@
-"""LaTeX renderer (one document with every sheet, one sheet per page group) and PDF through latexmk/pdflatex.
+"""LaTeX renderer (one document with every sheet, one sheet per page group) and PDF through pdflatex.
+
+User text never reaches TeX as code: names, ids and titles go through
+:func:`~pgsym.exercises._text.tex_escape`, exercise text through :func:`~pgsym.exercises._text.to_tex`
+(math only from an allowed set of commands). TeX itself runs confined (:func:`compile_pdf`): shell
+escape off (``-no-shell-escape``), kpathsea's paranoid ``openin_any=p`` and ``openout_any=p`` (no
+absolute paths, no ``..``, no dot files), inside a fresh temporary folder, in its own process group
+killed as a whole after :func:`tex_time_limit` seconds.
 
 >>> from pgsym.exercises.sheets import build_sheet
 >>> tex = render_document([build_sheet(["meet"], "s1", "", 1)], solutions=False)
@@ -10,13 +17,15 @@ from __future__ import annotations
 
 import os
 import shutil
+import signal
 import subprocess
 import tempfile
+import time
 from collections.abc import Sequence
 from pathlib import Path
 
 from ..errors import TeXFailedError, TeXMissingError
-from ._text import to_tex
+from ._text import one_line, tex_escape, to_tex
 from .model import KIND_HINTS, Exercise, Sheet
 
 PREAMBLE = r"""\documentclass[11pt,a4paper]{article}
@@ -29,17 +38,31 @@ PREAMBLE = r"""\documentclass[11pt,a4paper]{article}
 \setlength{\parindent}{0pt}
 \setlength{\parskip}{0.5em}
 \newif\ifsolutions
+% headings as ordinary paragraphs: a very long name or title breaks across lines and pages
+\newcommand{\sheettitle}[1]{\par{\raggedright\Large\bfseries #1\par}\nopagebreak\medskip}
+\newcommand{\exercisetitle}[1]{\par\bigskip{\raggedright\large\bfseries #1\par}\nopagebreak\smallskip}
 """
 
+#: Seconds TeX may take for a document: ``TEX_BASE_SECONDS + TEX_SECONDS_PER_SHEET × sheets``.
+TEX_BASE_SECONDS = 30.0
+TEX_SECONDS_PER_SHEET = 2.0
 
+
+def tex_time_limit(sheets: int) -> float:
+    """The time limit of TeX for a document of ``sheets`` sheets, in seconds.
+
+    >>> tex_time_limit(1), tex_time_limit(100)
+    (32.0, 230.0)
+    """
+    return TEX_BASE_SECONDS + TEX_SECONDS_PER_SHEET * max(1, sheets)
 
 
 def _exercise(ex: Exercise) -> list[str]:
-    lines = [rf"\subsection*{{Exercise {ex.slot}: {to_tex(ex.title)}}}", to_tex(ex.statement), ""]
+    lines = [rf"\exercisetitle{{Exercise {ex.slot}: {tex_escape(ex.title)}}}", to_tex(ex.statement), ""]
     for part in ex.parts:
         label = f"({part.label})" if len(ex.parts) > 1 else f"[{part.label}]"
-        lines.append(rf"\textbf{{{label}}} {to_tex(part.prompt)} \emph{{Answer format: "
-                     rf"{to_tex(KIND_HINTS[part.answer.kind])}.}}")
+        lines.append(rf"\textbf{{{tex_escape(label)}}} {to_tex(part.prompt)} \emph{{Answer format: "
+                     rf"{tex_escape(KIND_HINTS[part.answer.kind])}.}}")
         if part.choices:
             lines.append(r"\begin{enumerate}[label=\textbf{\Alph*.},itemsep=0pt]")
             lines += [rf"\item {to_tex(c)}" for c in part.choices]
@@ -52,16 +75,18 @@ def _solution(ex: Exercise) -> list[str]:
     lines = [r"\ifsolutions", r"\par\textbf{Solution.}", r"\begin{enumerate}[itemsep=0pt]"]
     lines += [rf"\item {to_tex(step)}" for step in ex.solution]
     lines.append(r"\end{enumerate}")
-    lines += [rf"\textbf{{Answer [{p.label}]:}} ${p.answer.latex()}$\par" for p in ex.parts]
+    lines += [rf"\textbf{{Answer {tex_escape('[' + p.label + ']')}:}} {to_tex('$' + p.answer.latex() + '$')}\par"
+              for p in ex.parts]
     lines.append(r"\fi")
     return lines
 
 
 def render_sheet_body(sheet: Sheet, solutions: bool) -> str:
     """The LaTeX of one sheet (no preamble)."""
-    who = to_tex(sheet.student_name or sheet.student_id)
-    lines = [r"\clearpage", rf"\section*{{Exercise sheet: {who}}}",
-             rf"Student id: \texttt{{{to_tex(sheet.student_id)}}} \hfill Form id: \texttt{{{sheet.form_id}}}", "",
+    who = tex_escape(sheet.student_name or sheet.student_id)
+    lines = [r"\clearpage", rf"\sheettitle{{Exercise sheet: {who}}}",
+             rf"Student id: \texttt{{{tex_escape(sheet.student_id)}}} \hfill "
+             rf"Form id: \texttt{{{tex_escape(sheet.form_id)}}}", "",
              "Give exact answers; homogeneous coordinates are accepted up to a nonzero scale.", ""]
     for ex in sheet.exercises:
         lines += _exercise(ex)
@@ -84,32 +109,102 @@ def tex_available() -> bool:
     return shutil.which("pdflatex") is not None
 
 
-def compile_pdf(tex_source: str, timeout: float = 600) -> bytes:
-    """Compile LaTeX source in a temporary folder (latexmk when present, else pdflatex twice); the PDF bytes.
+def _tex_environment() -> dict[str, str]:
+    env = {k: v for k, v in os.environ.items() if k not in ("TEXMFOUTPUT", "shell_escape", "shell_escape_commands")}
+    # paranoid kpathsea: TeX opens no absolute path, nothing above its folder and no dot file
+    env.update({"openin_any": "p", "openout_any": "p", "shell_escape": "f",
+                # fixed dates make the PDF reproducible (pdfTeX honours SOURCE_DATE_EPOCH)
+                "SOURCE_DATE_EPOCH": "0", "FORCE_SOURCE_DATE": "1",
+                "max_print_line": "1000"})  # unwrapped log lines make readable error messages
+    return env
 
-    Raises :class:`TeXMissingError` if TeX is not installed and :class:`TeXFailedError` if it fails.
+
+def _run_confined(cmd: list[str], cwd: str, timeout: float) -> tuple[int, str]:
+    """Run ``cmd`` in its own process group; kill the whole group after ``timeout`` s (or on any error)."""
+    with tempfile.TemporaryFile() as out:
+        proc = subprocess.Popen(cmd, cwd=cwd, stdin=subprocess.DEVNULL, stdout=out, stderr=subprocess.STDOUT,
+                                env=_tex_environment(), start_new_session=True)
+        try:
+            code = proc.wait(timeout=timeout)
+        finally:
+            _kill_group(proc)  # on time-out, on interruption and after a normal end: nothing TeX started survives
+        out.seek(0)
+        return code, out.read()[-4000:].decode("utf-8", "replace")
+
+
+def _kill_group(proc: subprocess.Popen[bytes]) -> None:
+    try:
+        os.killpg(proc.pid, signal.SIGKILL)
+    except (ProcessLookupError, PermissionError):
+        pass
+    proc.wait()
+
+
+def compile_pdf(tex_source: str, timeout: float | None = None) -> bytes:
+    """Compile LaTeX source with pdflatex in a temporary folder, confined as the module says; the PDF bytes.
+
+    ``timeout`` defaults to :func:`tex_time_limit` of one sheet. Raises :class:`TeXMissingError` if TeX
+    is not installed and :class:`TeXFailedError` if it fails or runs out of time.
     """
     if not tex_available():
         raise TeXMissingError("pdflatex is not installed, so no PDF can be made. On Debian/Ubuntu run: "
                               "sudo apt-get install texlive-latex-extra texlive-fonts-recommended lmodern latexmk "
                               "(or 'make system-deps'); the other formats do not need TeX.")
-    # fixed dates make the PDF reproducible (pdfTeX honours SOURCE_DATE_EPOCH)
-    env = {**os.environ, "SOURCE_DATE_EPOCH": "0", "FORCE_SOURCE_DATE": "1"}
+    limit = tex_time_limit(1) if timeout is None else timeout
     with tempfile.TemporaryDirectory(prefix="pgsym-tex-") as tmp:
         src = Path(tmp) / "sheets.tex"
         src.write_text(tex_source, encoding="utf-8")
-        if shutil.which("latexmk"):
-            commands = [["latexmk", "-pdf", "-interaction=nonstopmode", "-halt-on-error", "-quiet", "sheets.tex"]]
-        else:
-            commands = [["pdflatex", "-interaction=nonstopmode", "-halt-on-error", "sheets.tex"]] * 2
-        for cmd in commands:
-            try:
-                result = subprocess.run(cmd, cwd=tmp, capture_output=True, text=True, timeout=timeout,
-                                        stdin=subprocess.DEVNULL, errors="replace", env=env)
-            except subprocess.TimeoutExpired:
-                raise TeXFailedError(f"{cmd[0]} took longer than {timeout:.0f} s") from None
-            if result.returncode != 0:
-                log = Path(tmp) / "sheets.log"
-                tail = log.read_text(errors="replace")[-1500:] if log.exists() else result.stdout[-1500:]
-                raise TeXFailedError(f"{cmd[0]} failed (exit {result.returncode}); end of the log:\n{tail}")
+        # one run: the sheets have no cross-references; -no-shell-escape whatever texmf.cnf says
+        cmd = ["pdflatex", "-no-shell-escape", "-interaction=nonstopmode", "-halt-on-error", "sheets.tex"]
+        started = time.monotonic()
+        try:
+            code, output = _run_confined(cmd, tmp, limit)
+        except subprocess.TimeoutExpired:
+            raise TeXFailedError(f"pdflatex took longer than {limit:.0f} s (the limit) and was stopped") from None
+        if code != 0 or not (Path(tmp) / "sheets.pdf").is_file():
+            log = Path(tmp) / "sheets.log"
+            text = log.read_text(errors="replace") if log.exists() else output
+            start = text.find("\n! ")  # TeX's first error message, with the lines that locate it
+            excerpt = text[start + 1:start + 800] if start >= 0 else text[-800:]
+            raise TeXFailedError(f"pdflatex failed (exit {code}, {time.monotonic() - started:.1f} s):\n{excerpt}")
         return (Path(tmp) / "sheets.pdf").read_bytes()
+
+
+def compile_sheets(sheets: Sequence[Sheet], solutions: bool = False) -> bytes:
+    """The PDF of every sheet (one pdflatex run, limited to :func:`tex_time_limit` of the number of sheets).
+
+    If TeX fails, the sheets are compiled again in halves, each under its own proportional limit,
+    until the failing sheet is found: the :class:`TeXFailedError` then names its student.
+    """
+    try:
+        return compile_pdf(render_document(sheets, solutions), tex_time_limit(len(sheets)))
+    except TeXFailedError as err:
+        if len(sheets) > 1:
+            culprit = _failing_sheet(list(sheets), solutions)
+            if culprit is not None:
+                raise _named(culprit[0], culprit[1]) from None
+        elif sheets:
+            raise _named(sheets[0], err) from None
+        raise
+
+
+def _named(sheet: Sheet, err: TeXFailedError) -> TeXFailedError:
+    who = one_line(f"{sheet.student_id} ({sheet.student_name})" if sheet.student_name else sheet.student_id)
+    return TeXFailedError(f"the sheet of student {who[:120]} could not be typeset: {err}")
+
+
+def _failing_sheet(sheets: list[Sheet], solutions: bool) -> tuple[Sheet, TeXFailedError] | None:
+    """Bisect for one sheet that does not compile on its own (None if every half compiles)."""
+    while len(sheets) > 1:
+        half = len(sheets) // 2
+        for group in (sheets[:half], sheets[half:]):
+            try:
+                compile_pdf(render_document(group, solutions), tex_time_limit(len(group)))
+            except TeXFailedError as err:
+                if len(group) == 1:
+                    return group[0], err
+                sheets = group
+                break
+        else:
+            return None
+    return None

@@ -10,15 +10,16 @@ True
 
 from __future__ import annotations
 
-import csv
-import io
 import json
 from collections.abc import Callable, Iterable, Sequence
 from pathlib import Path
 from typing import Any
 
-from ..errors import ManifestError, RosterError
+from ..errors import ManifestError, PgsymError, RosterError, UnknownTopicError
+from ..limits import MAX_NAME_CHARS
+from ._text import one_line
 from .model import Answer, Sheet
+from .reading import csv_rows, load_json, read_user_text
 from .seeds import form_id, slot_keys, variant_seed
 from .template import TemplateError, get_template
 
@@ -79,7 +80,15 @@ def build_sheets(topics: Sequence[tuple[str, int]] | Sequence[str], students: It
     """
     sheets = []
     for sid, name in students:
-        sheets.append(build_sheet(topics, sid, name, master_seed))
+        try:
+            sheets.append(build_sheet(topics, sid, name, master_seed))
+        except (UnknownTopicError, OSError):
+            raise
+        except PgsymError as err:  # say whose sheet failed (a template may fail for one variant only)
+            raise TemplateError(f"the sheet of student {one_line(sid)[:120]}: {err}") from None
+        except Exception as err:  # an instructor template's own bug
+            raise TemplateError(f"the sheet of student {one_line(sid)[:120]}: a template failed with "
+                                f"{type(err).__name__}: {str(err)[:300]}") from None
         if progress is not None:
             progress(1)
     return sheets
@@ -106,28 +115,36 @@ def read_roster(path: str | Path) -> list[tuple[str, str]]:
     [('s1', 'Ada'), ('s2', 'Alan')]
     """
     p = Path(path)
-    try:
-        text = p.read_text(encoding="utf-8-sig")
-    except (OSError, UnicodeDecodeError) as err:
-        raise RosterError(f"cannot read the roster {str(p)!r}: {err}") from None
-    reader = csv.DictReader(io.StringIO(text))
-    fields = [f.strip().lower() for f in (reader.fieldnames or [])]
-    id_col = next((f for f in ("id", "student_id", "student") if f in fields), None)
+    rows, problems = csv_rows(read_user_text(p, "roster", RosterError))
+    if problems:
+        line, reason = problems[0]
+        raise RosterError(f"line {line} of the roster {p.name!r} is not valid CSV: {reason}")
+    if not rows:
+        raise RosterError(f"the roster {p.name!r} is empty; it needs a header row such as\n"
+                          "  id,name\n  s001,Ada Lovelace")
+    fields = [f.strip().lower() for f in rows[0][1]]
+    id_col = next((fields.index(f) for f in ("id", "student_id", "student") if f in fields), None)
     if id_col is None:
-        raise RosterError(f"the roster {p.name!r} needs a header row with an 'id' column (found: {fields or 'none'}); "
+        shown = ", ".join(repr(one_line(f)[:40]) for f in fields[:10]) or "none"
+        raise RosterError(f"the roster {p.name!r} needs a header row with an 'id' column (found: {shown}); "
                           "e.g.\n  id,name\n  s001,Ada Lovelace")
-    original = {f.strip().lower(): f for f in reader.fieldnames or []}
+    name_col = fields.index("name") if "name" in fields else None
     students, seen = [], set()
-    for row_number, row in enumerate(reader, start=2):
-        sid = (row.get(original[id_col]) or "").strip()
+    for line, row in rows[1:]:
+        if not any(cell.strip() for cell in row):
+            continue  # a blank line
+        sid = row[id_col].strip() if id_col < len(row) else ""
         if not sid:
-            raise RosterError(f"row {row_number} of {p.name!r} has no student id")
+            raise RosterError(f"line {line} of {p.name!r} has no student id")
         if len(sid) > 100:
-            raise RosterError(f"row {row_number} of {p.name!r}: the id is longer than 100 characters")
+            raise RosterError(f"line {line} of {p.name!r}: the id is longer than 100 characters")
         if sid in seen:
-            raise RosterError(f"row {row_number} of {p.name!r}: the id {sid!r} appears twice")
+            raise RosterError(f"line {line} of {p.name!r}: the id {one_line(sid)!r} appears twice")
         seen.add(sid)
-        name = (row.get(original["name"]) or "").strip() if "name" in original else ""
+        name = row[name_col].strip() if name_col is not None and name_col < len(row) else ""
+        if len(name) > MAX_NAME_CHARS:
+            raise RosterError(f"line {line} of {p.name!r}: the name is longer than {MAX_NAME_CHARS} characters "
+                              "(the limit)")
         students.append((sid, name))
     if not students:
         raise RosterError(f"the roster {p.name!r} lists no students")
@@ -157,19 +174,14 @@ def manifest_json(sheets: Sequence[Sheet], topics: Sequence[tuple[str, int]]) ->
 def load_manifest(path: str | Path) -> dict[str, dict[str, Answer]]:
     """Read a manifest: student id → {question label → expected answer}."""
     p = Path(path)
-    try:
-        data = json.loads(p.read_text(encoding="utf-8"))
-    except FileNotFoundError:
-        raise ManifestError(f"the manifest {str(p)!r} does not exist") from None
-    except (OSError, UnicodeDecodeError, json.JSONDecodeError) as err:
-        raise ManifestError(f"the manifest {str(p)!r} is not readable JSON: {err}") from None
+    data = load_json(p, "manifest", ManifestError)
     if not isinstance(data, dict) or data.get("format") != "pgsym-exercises":
         raise ManifestError(f"{str(p)!r} is not a pgsym exercise manifest (written by 'pgsym sheet')")
     keys: dict[str, dict[str, Answer]] = {}
     try:
         for student in data["students"]:
-            keys[str(student["id"])] = {part["label"]: Answer.from_json(part)
+            keys[str(student["id"])] = {str(part["label"]): Answer.from_json(part)
                                         for ex in student["exercises"] for part in ex["parts"]}
-    except (KeyError, TypeError, ValueError) as err:
+    except (KeyError, TypeError, ValueError, ArithmeticError) as err:
         raise ManifestError(f"the manifest {str(p)!r} is damaged: {type(err).__name__}: {err}") from None
     return keys

@@ -13,16 +13,17 @@ from a nice answer, and knows how to re-verify an instance independently of the 
 
 from __future__ import annotations
 
-import importlib.util
 import random
 import string
 import sys
+import types
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
 from ..errors import TemplateError, UnknownTopicError
 from .model import Answer, Exercise, Part
+from .reading import read_user_text
 
 
 @dataclass
@@ -123,7 +124,8 @@ def load_template_folder(folder: str | Path) -> list[str]:
     """Load instructor templates: every ``*.py`` file in ``folder`` defining subclasses of :class:`Template`.
 
     Returns the names registered. The files are ordinary Python written by the instructor and are
-    imported as modules (this is the only place the exercise package runs outside code).
+    run as modules (this is the only place the exercise package runs outside code); each file is read
+    within :data:`pgsym.limits.MAX_FILE_BYTES`, and a pipe or device is refused.
     """
     path = Path(folder)
     if not path.is_dir():
@@ -131,15 +133,17 @@ def load_template_folder(folder: str | Path) -> list[str]:
     names = []
     for file in sorted(path.glob("*.py")):
         module_name = f"pgsym_user_templates.{file.stem}"
-        spec = importlib.util.spec_from_file_location(module_name, file)
-        if spec is None or spec.loader is None:  # pragma: no cover - defensive
-            continue
-        module = importlib.util.module_from_spec(spec)
+        # read within the limits (a FIFO or device named *.py is refused, not waited on), then run it
+        source = read_user_text(file, "template file", TemplateError)
+        module = types.ModuleType(module_name)
+        module.__file__ = str(file)
         sys.modules[module_name] = module
         try:
-            spec.loader.exec_module(module)
+            exec(compile(source, str(file), "exec"), module.__dict__)  # the instructor's own code, run as before
         except Exception as err:
-            raise TemplateError(f"could not load template file {file.name}: {type(err).__name__}: {err}") from None
+            sys.modules.pop(module_name, None)
+            raise TemplateError(f"could not load template file {file.name}: {type(err).__name__}: "
+                                f"{str(err)[:300]}") from None
         for value in vars(module).values():
             if isinstance(value, type) and issubclass(value, Template) and value is not Template and value.name:
                 if value.__module__ != module_name:
