@@ -28,6 +28,7 @@ __all__ = [
     "MAX_DIGITS",
     "MAX_EXPONENT",
     "MAX_FILE_BYTES",
+    "MAX_IMAGE_BYTES",
     "MAX_IMAGE_PIXELS",
     "MAX_NESTING",
     "read_bounded",
@@ -100,3 +101,7 @@ def _is_regular(fd: int) -> bool:
     import stat
 
     return stat.S_ISREG(os.fstat(fd).st_mode)
+
+
+MAX_IMAGE_BYTES = 200_000_000
+"""Bytes of one image file read (an uncompressed 8-bit RGBA image of MAX_IMAGE_PIXELS pixels is 160 MB)."""
