@@ -112,6 +112,8 @@ def _make_folder(folder: Path) -> list[Path]:
     while not _exists(f) and f != f.parent:
         missing.append(f)
         f = f.parent
+    if _exists(f) and not f.is_dir():
+        raise OutputError(f"cannot write into {str(f)!r}: it is a file, not a folder")
     folder.mkdir(parents=True, exist_ok=True)
     return missing[::-1]
 
@@ -152,6 +154,8 @@ def _write_into_folder(out: Path, files: dict[str, object]) -> None:
             shutil.rmtree(tmp, ignore_errors=True)
             tmp = None
         _remove_created(created)
+        if isinstance(err, OutputError):  # already named (OutputError is an OSError too)
+            raise
         raise _os_error(err, out) from None
     finally:
         if tmp is not None:
@@ -283,6 +287,8 @@ def _write_file(out: Path, image) -> None:  # type: ignore[no-untyped-def]
             os.unlink(tmp_name)
             tmp_name = None
         _remove_created(created)
+        if isinstance(err, OutputError):  # already named (OutputError is an OSError too)
+            raise
         raise _os_error(err, out) from None
     finally:
         if tmp_name is not None and os.path.exists(tmp_name):

@@ -80,3 +80,41 @@ def test_version_and_help_do_not_load_sympy_or_opencv():
     result = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=60)
     assert result.returncode == 0, result.stderr
     assert result.stdout.strip() == "[]"
+
+
+def test_an_unexpected_exception_is_one_line_not_a_traceback(monkeypatch):
+    # the last resort for bugs: no hostile input reaches it (tests/hostile), so provoke it by hand
+    from click.testing import CliRunner
+
+    import pgsym.cli
+
+    def broken(obj):  # type: ignore[no-untyped-def]
+        raise RuntimeError("a bug\nsecond line")
+
+    monkeypatch.setattr(pgsym.cli, "_describe", broken)
+    result = CliRunner().invoke(pgsym.cli.main, ["join", "0,0", "1,1"])
+    assert result.exit_code == 1 and isinstance(result.exception, SystemExit)
+    assert result.stderr == ("Error: internal error (RuntimeError: a bug); "
+                             "please report it with the command that caused it\n")
+
+
+def test_a_pgsym_error_anywhere_in_a_command_is_one_clean_line(monkeypatch):
+    from click.testing import CliRunner
+
+    import pgsym.cli
+    from pgsym.errors import UndecidableError
+
+    def undecidable(obj):  # type: ignore[no-untyped-def]
+        raise UndecidableError("cannot decide")
+
+    monkeypatch.setattr(pgsym.cli, "_describe", undecidable)
+    result = CliRunner().invoke(pgsym.cli.main, ["meet", "1,0,0", "0,1,0"])
+    assert (result.exit_code, result.stderr) == (1, "Error: UndecidableError: cannot decide\n")
+
+
+def test_the_exact_commands_read_the_one_number_grammar():
+    # 1.5e-3 = 3/2000 and -2/3 exactly: the line through (3/2000, -2/3) and (0, 1) is
+    # (-2/3 - 1, 0 - 3/2000, 3/2000 * 1 - 0 * (-2/3)) = (-5/3, -3/2000, 3/2000) ~ (10000, 9, -9)
+    result = run("join", "1.5e-3, -2/3", "0 1")
+    assert result.returncode == 0, result.stderr
+    assert "canonical: (10000, 9, -9)" in result.stdout
