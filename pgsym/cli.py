@@ -53,8 +53,19 @@ def _run(build):  # type: ignore[no-untyped-def]
         raise click.ClickException(f"{type(err).__name__}: {err}") from None
 
 
+_MAX_MESSAGE = 300
+
+
+def _shorten(err: click.ClickException) -> click.ClickException:
+    """Cut the middle out of an error message that quotes a huge input (click quotes values whole)."""
+    if len(err.message) > _MAX_MESSAGE:
+        n = len(err.message)
+        err.message = f"{err.message[:200]}[... {n - 260} characters left out ...]{err.message[-60:]}"
+    return err
+
+
 class _GuardedGroup(click.Group):
-    """A click group whose commands never show a Python traceback to the user."""
+    """A click group whose commands never show a Python traceback, and whose errors are one short line."""
 
     def parse_args(self, ctx: click.Context, args: list[str]) -> list[str]:
         # a real command line cannot hold NUL (C strings), but a caller in Python can: refuse it
@@ -62,15 +73,20 @@ class _GuardedGroup(click.Group):
         for i, arg in enumerate(args):
             if "\x00" in arg:
                 raise click.UsageError(f"argument {i + 1} contains a NUL character", ctx=ctx)
-        return super().parse_args(ctx, args)
+        try:
+            return super().parse_args(ctx, args)
+        except click.ClickException as err:
+            raise _shorten(err) from None
 
     def invoke(self, ctx: click.Context):  # type: ignore[no-untyped-def]
         try:
             return super().invoke(ctx)
-        except (click.ClickException, click.exceptions.Exit, click.Abort):
+        except click.ClickException as err:
+            raise _shorten(err) from None
+        except (click.exceptions.Exit, click.Abort):
             raise
         except PgsymError as err:
-            raise click.ClickException(f"{type(err).__name__}: {err}") from None
+            raise _shorten(click.ClickException(f"{type(err).__name__}: {err}")) from None
         except MemoryError:
             raise click.ClickException("MemoryError: not enough memory for this input; make it smaller") from None
         except Exception as err:  # the last resort: a bug, reported in one line with the exception type
