@@ -5,11 +5,17 @@ from __future__ import annotations
 import shutil
 import subprocess
 import sys
+from fractions import Fraction
 from pathlib import Path
 
 import pytest
+from hypothesis import given
+from hypothesis import strategies as st
 
 import pgsym
+from pgsym.cli_parsing import parse_coordinates, parse_number, parse_points
+from pgsym.errors import InputLimitError, PgsymError
+from pgsym.limits import MAX_DIGITS, MAX_EXPONENT
 
 PGSYM = shutil.which("pgsym", path=str(Path(sys.executable).parent))
 
@@ -118,3 +124,58 @@ def test_the_exact_commands_read_the_one_number_grammar():
     result = run("join", "1.5e-3, -2/3", "0 1")
     assert result.returncode == 0, result.stderr
     assert "canonical: (10000, 9, -9)" in result.stdout
+
+
+# The one grammar of numbers (pgsym.cli_parsing), as properties: exact values, limits on the text.
+MANTISSAS = st.integers(-(10**MAX_DIGITS) + 1, 10**MAX_DIGITS - 1)
+EXPONENTS = st.integers(-MAX_EXPONENT, MAX_EXPONENT)
+
+
+@given(MANTISSAS, EXPONENTS)
+def test_scientific_notation_is_read_exactly(m, e):
+    # m e e means m * 10**e, computed here with integers only
+    expected = Fraction(m * 10**e) if e >= 0 else Fraction(m, 10**-e)
+    assert parse_number(f"{m}e{e}") == expected
+    assert parse_number(f"{m}E+{e}" if e >= 0 else f"{m}E{e}") == expected
+
+
+@given(MANTISSAS, st.integers(1, 10**MAX_DIGITS - 1))
+def test_fractions_are_read_exactly(p, q):
+    assert parse_number(f"{p}/{q}") == Fraction(p, q)
+
+
+@given(st.integers(0, 10**20), st.integers(0, 20))
+def test_decimals_are_read_exactly(n, places):
+    # the digits of n with a point `places` from the right: n / 10**places
+    text = str(n).rjust(places + 1, "0")
+    decimal = f"{text[:len(text) - places]}.{text[len(text) - places:]}"
+    assert parse_number(decimal) == Fraction(n, 10**places)
+
+
+@given(st.integers(MAX_EXPONENT + 1, 10**12), st.sampled_from(["", "-", "+"]))
+def test_an_exponent_beyond_the_limit_is_refused_on_the_text(e, sign):
+    with pytest.raises(InputLimitError, match="exponent"):
+        parse_number(f"1e{sign}{e}")
+
+
+@given(st.integers(10**MAX_DIGITS, 10**(3 * MAX_DIGITS)))
+def test_too_many_digits_are_refused(n):
+    for text in (str(n), f"1/{n}", f"{str(n)[:1]}.{str(n)[1:]}"):
+        with pytest.raises(InputLimitError, match="digits"):
+            parse_number(text)
+
+
+@given(st.text(max_size=30))
+def test_any_text_is_a_number_list_or_a_named_error(text):
+    try:
+        values = parse_coordinates(text)
+    except PgsymError:
+        return
+    assert values and all(isinstance(v, Fraction) for v in values)
+
+
+@given(st.lists(st.tuples(st.integers(-999, 999), st.integers(-999, 999)), min_size=1, max_size=8))
+def test_points_and_coordinates_share_the_grammar(pairs):
+    text = " ".join(f"{x},{y}" for x, y in pairs)
+    assert parse_points(text) == [(float(x), float(y)) for x, y in pairs]
+    assert parse_coordinates(text) == tuple(Fraction(v) for pair in pairs for v in pair)
