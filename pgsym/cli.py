@@ -15,6 +15,7 @@ one line ``Error: internal error (...)`` with status 1, never as a traceback.
 
 from __future__ import annotations
 
+import errno
 from fractions import Fraction
 from typing import TYPE_CHECKING
 
@@ -90,6 +91,8 @@ class _GuardedGroup(click.Group):
         except MemoryError:
             raise click.ClickException("MemoryError: not enough memory for this input; make it smaller") from None
         except Exception as err:  # the last resort: a bug, reported in one line with the exception type
+            if isinstance(err, OSError) and err.errno == errno.EPIPE:
+                raise  # the reader of our output went away (| head): click ends quietly
             first = (str(err).splitlines() or [""])[0][:200]
             raise click.ClickException(f"internal error ({type(err).__name__}: {first}); "
                                        "please report it with the command that caused it") from None

@@ -158,7 +158,8 @@ def run_example(args: list[str]) -> None:
     """Run one argument list in a fresh working folder and check the rules of the module docstring."""
     here = os.getcwd()
     with tempfile.TemporaryDirectory() as d:
-        folder = Path(d)
+        folder = Path(d) / "cwd"  # one level down, so that "../escape" still lands in the temporary folder
+        folder.mkdir()
         _fill(folder)
         os.chdir(folder)
         old = signal.signal(signal.SIGALRM, _time_out)
