@@ -3,8 +3,11 @@
 Heavy libraries (NumPy, OpenCV) are imported inside the commands, so that
 ``pgsym --version`` and the exact commands start quickly. Every command checks
 its input and computes its result completely before it writes anything; files are
-written to a temporary name next to the destination and then moved into place,
-so a failed run leaves no partial output.
+written under a temporary name inside the output folder and then renamed into place
+(a symlink in the way is replaced, never written through), so a failed run leaves no
+partial output and nothing is ever written outside the output folder. Images are read
+with the limits of :func:`pgsym.vision.images.read_image`; points, lines and sizes with
+the one grammar of :mod:`pgsym.cli_parsing`.
 """
 
 from __future__ import annotations
