@@ -262,6 +262,8 @@ CASES = [
     ("templates-check-seeds-nan", ("templates", "check", "join", "--seeds", "nan"), 2, r"'--seeds'"),
     ("templates-check-unknown", ("templates", "check", "no-such-topic"), 1, r"no-such-topic"),
     ("templates-list-dev-zero", ("templates", "list", "--templates", "/dev/zero"), 1, r"TemplateError: .*not a folder"),
+    ("templates-list-name-too-long", ("templates", "list", "--templates", "t" * 300), 1,
+     r"TemplateError: .*(name too long|does not exist|not a folder)"),
     ("templates-list-broken-file", ("templates", "list", "--templates", "templates_bad"), 1,
      r"TemplateError: could not load template file broken.py"),
 ]
