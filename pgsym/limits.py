@@ -28,6 +28,7 @@ __all__ = [
     "MAX_DIGITS",
     "MAX_EXPONENT",
     "MAX_FILE_BYTES",
+    "MAX_IMAGE_BYTES",
     "MAX_IMAGE_PIXELS",
     "MAX_NAME_CHARS",
     "MAX_NESTING",
@@ -55,6 +56,12 @@ MAX_NESTING = 32
 
 MAX_IMAGE_PIXELS = 40_000_000
 """Pixels of a decoded image (checked from the header, before decoding)."""
+
+MAX_IMAGE_BYTES = 200_000_000
+"""Bytes of one image file read (an uncompressed 8-bit RGBA image of MAX_IMAGE_PIXELS pixels is 160 MB)."""
+
+MAX_NAME_CHARS = 20_000
+"""One roster field other than the id (a student's name), in characters."""
 
 _CHUNK = 1 << 16
 
@@ -101,6 +108,3 @@ def _is_regular(fd: int) -> bool:
     import stat
 
     return stat.S_ISREG(os.fstat(fd).st_mode)
-
-MAX_NAME_CHARS = 20_000
-"""One roster field other than the id (a student's name), in characters."""

@@ -14,7 +14,9 @@ import sys
 
 import click
 
+from .cli_parsing import DecimalRange
 from .errors import UnknownClaimError
+from .limits import MAX_ARGUMENT_CHARS
 
 __all__ = ["prove_command"]
 
@@ -37,8 +39,8 @@ def _line(verdict) -> str:  # type: ignore[no-untyped-def]
 @click.option("--list", "list_", is_flag=True, help="List the catalogue's claims and exit.")
 @click.option("--all", "all_", is_flag=True, help="Prove every claim of the catalogue.")
 @click.option("--json", "as_json", is_flag=True, help="Print the verdicts as a JSON array.")
-@click.option("--timeout", type=click.FloatRange(min=0, min_open=True), default=10.0, show_default=True,
-              help="Seconds per claim; a claim that takes longer is reported as unknown.")
+@click.option("--timeout", type=DecimalRange(min=0, max=86400, min_open=True), default=10.0, show_default=True,
+              help="Seconds per claim (at most a day); a claim that takes longer is reported as unknown.")
 def prove_command(names: tuple[str, ...], list_: bool, all_: bool, as_json: bool, timeout: float) -> None:
     """Prove claims of the catalogue by exact polynomial arithmetic.
 
@@ -60,6 +62,10 @@ def prove_command(names: tuple[str, ...], list_: bool, all_: bool, as_json: bool
         raise click.UsageError("give claim names or --all, not both")
     if not all_ and not names:
         raise click.UsageError("give claim names, --all or --list (see pgsym prove --help)")
+    long = [n for n in names if len(n) > MAX_ARGUMENT_CHARS]
+    if long:
+        raise click.BadParameter(f"a claim name of {len(long[0])} characters; names have at most "
+                                 f"{MAX_ARGUMENT_CHARS} (see pgsym prove --list)", param_hint="NAMES")
     selected = catalogue_names() if all_ else list(names)
     unknown = [n for n in selected if n not in CATALOGUE]
     if unknown:

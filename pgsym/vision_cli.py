@@ -3,112 +3,29 @@
 Heavy libraries (NumPy, OpenCV) are imported inside the commands, so that
 ``pgsym --version`` and the exact commands start quickly. Every command checks
 its input and computes its result completely before it writes anything; files are
-written to a temporary name next to the destination and then moved into place,
-so a failed run leaves no partial output.
+written under a temporary name inside the output folder and then renamed into place
+(a symlink in the way is replaced, never written through), so a failed run leaves no
+partial output and nothing is ever written outside the output folder. Images are read
+with the limits of :func:`pgsym.vision.images.read_image`; points, lines and sizes with
+the one grammar of :mod:`pgsym.cli_parsing`.
 """
 
 from __future__ import annotations
 
-import math
 import os
-import re
 import shutil
 import tempfile
 from pathlib import Path
 
 import click
 
-from .errors import PgsymError
+from .cli_parsing import LINES, POINTS, SIZE, DecimalRange, IntegerRange, parse_lines, parse_points, parse_size
+from .errors import OutputError, PgsymError
 
 __all__ = ["harris_command", "parse_lines", "parse_points", "parse_size", "rectify_command"]
 
-_MAX_ARGUMENT = 2000
 _IMAGE_SUFFIXES = {".png", ".jpg", ".jpeg", ".bmp", ".tif", ".tiff"}
 _CONTEXT = {"help_option_names": ["-h", "--help"]}
-_NUMBER = re.compile(r"[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?")
-
-
-def _number(token: str) -> float:
-    if not _NUMBER.fullmatch(token):
-        raise click.BadParameter(f"{token!r} is not a number (write decimals like 12 or 12.5)")
-    value = float(token)
-    if not math.isfinite(value):
-        raise click.BadParameter(f"{token!r} is too large")
-    return value
-
-
-def parse_points(text: str, count: int | None = None) -> list[tuple[float, float]]:
-    """Read ``"x1,y1 x2,y2 ..."`` into a list of (x, y) pairs; never evaluates code.
-
-    >>> parse_points("10,20 30.5,40")
-    [(10.0, 20.0), (30.5, 40.0)]
-    >>> parse_points("1,2 3", 2)
-    Traceback (most recent call last):
-    ...
-    click.exceptions.BadParameter: '3' is not a point: write each point as x,y
-    """
-    if len(text) > _MAX_ARGUMENT:
-        raise click.BadParameter(f"the argument is longer than {_MAX_ARGUMENT} characters")
-    tokens = text.split()
-    points = []
-    for token in tokens:
-        parts = token.split(",")
-        if len(parts) != 2:
-            raise click.BadParameter(f"{token!r} is not a point: write each point as x,y")
-        points.append((_number(parts[0]), _number(parts[1])))
-    if count is not None and len(points) != count:
-        raise click.BadParameter(f"expected {count} points 'x,y' separated by spaces, got {len(points)}")
-    return points
-
-
-def parse_lines(text: str) -> list[tuple[tuple[float, float], tuple[float, float]]]:
-    """Read lines given by two points each, separated by semicolons: ``"x1,y1 x2,y2; x3,y3 x4,y4"``.
-
-    >>> parse_lines("0,0 10,0; 0,5 10,6")
-    [((0.0, 0.0), (10.0, 0.0)), ((0.0, 5.0), (10.0, 6.0))]
-    """
-    lines = []
-    for i, chunk in enumerate(c for c in text.split(";") if c.strip()):
-        try:
-            p, q = parse_points(chunk, 2)
-        except click.BadParameter as err:
-            raise click.BadParameter(f"line {i + 1} ({chunk.strip()!r}): {err.message}") from None
-        lines.append((p, q))
-    return lines
-
-
-def parse_size(text: str) -> tuple[int, int]:
-    """Read ``"WxH"`` (e.g. ``"400x300"``) into ``(width, height)``.
-
-    >>> parse_size("400x300")
-    (400, 300)
-    """
-    m = re.fullmatch(r"\s*(\d{1,5})\s*[xX×]\s*(\d{1,5})\s*", text)
-    if not m:
-        raise click.BadParameter(f"{text!r} is not a size: write it as WIDTHxHEIGHT, e.g. 400x300")
-    w, h = int(m.group(1)), int(m.group(2))
-    if not (2 <= w <= 16384 and 2 <= h <= 16384):
-        raise click.BadParameter(f"the size {w}x{h} is out of range: each side must be 2 to 16384 pixels")
-    return w, h
-
-
-class _Parsed(click.ParamType):
-    def __init__(self, name: str, parser) -> None:  # type: ignore[no-untyped-def]
-        self.name = name
-        self._parser = parser
-
-    def convert(self, value, param, ctx):  # type: ignore[no-untyped-def]
-        if not isinstance(value, str):
-            return value
-        try:
-            return self._parser(value)
-        except click.BadParameter as err:
-            self.fail(err.message, param, ctx)
-
-
-POINTS = _Parsed("POINTS", parse_points)
-LINES = _Parsed("LINES", parse_lines)
-SIZE = _Parsed("WxH", parse_size)
 
 
 def _fail(err: PgsymError) -> click.ClickException:
@@ -121,7 +38,7 @@ def _check_output_file(out: Path) -> None:
             f"cannot tell the image format from {out.name!r}: use one of {', '.join(sorted(_IMAGE_SUFFIXES))}",
             param_hint="'--out'",
         )
-    if out.is_dir():
+    if _exists(out) and out.is_dir():
         raise click.BadParameter(f"{str(out)!r} is a directory; give a file name", param_hint="'--out'")
 
 
@@ -133,13 +50,13 @@ def _check_output_file(out: Path) -> None:
 @click.argument("image", type=click.Path(dir_okay=False, path_type=Path))
 @click.option("--out", "out", required=True, type=click.Path(file_okay=False, path_type=Path),
               help="Directory for the results (created if missing; existing files of the same names are replaced).")
-@click.option("--k", "k", default=0.05, show_default=True, type=click.FloatRange(0, 0.25, max_open=True),
+@click.option("--k", "k", default=0.05, show_default=True, type=DecimalRange(0, 0.25, max_open=True),
               help="Sensitivity k in R = det M - k (trace M)^2.")
-@click.option("--sigma", default=1.0, show_default=True, type=click.FloatRange(0, 50, min_open=True),
+@click.option("--sigma", default=1.0, show_default=True, type=DecimalRange(0, 50, min_open=True),
               help="Standard deviation of the Gaussian window, in pixels.")
-@click.option("--threshold", default=0.01, show_default=True, type=click.FloatRange(0, 1, max_open=True),
+@click.option("--threshold", default=0.01, show_default=True, type=DecimalRange(0, 1, max_open=True),
               help="Keep pixels with R > threshold * max R (relative to the strongest response).")
-@click.option("--min-distance", default=5, show_default=True, type=click.IntRange(1, 500),
+@click.option("--min-distance", default=5, show_default=True, type=IntegerRange(1, 500),
               help="Half-width of the non-maximum-suppression window, in pixels.")
 def harris_command(image: Path, out: Path, k: float, sigma: float, threshold: float, min_distance: int) -> None:
     """Harris corners of IMAGE, with every intermediate result written to --out.
@@ -165,33 +82,87 @@ def harris_command(image: Path, out: Path, k: float, sigma: float, threshold: fl
       pgsym harris photo.png --out harris-out --sigma 1.5 --threshold 0.05
     """
     out = Path(out)
-    if out.exists() and not out.is_dir():
+    if _exists(out) and not out.is_dir():
         raise click.BadParameter(f"{str(out)!r} exists and is not a directory", param_hint="'--out'")
     try:
         from .vision.harris import harris
         from .vision.images import read_image
 
         result = harris(read_image(image), k=k, sigma=sigma, threshold=threshold, min_distance=min_distance)
+        files = _harris_files(result)
+        _write_into_folder(out, files)
     except PgsymError as err:
         raise _fail(err) from None
-    files = _harris_files(result)
-    out.parent.mkdir(parents=True, exist_ok=True)
-    tmp = Path(tempfile.mkdtemp(prefix=".pgsym-harris-", dir=out.parent))
-    try:
-        _write_harris(tmp, files)
-        if not out.exists():
-            os.rename(tmp, out)
-        else:
-            for name in files:
-                os.replace(tmp / name, out / name)
-            tmp.rmdir()
-    finally:
-        if tmp.exists():
-            shutil.rmtree(tmp, ignore_errors=True)
     click.echo(
         f"{len(result.corners)} corners (k={k:g}, sigma={sigma:g}, threshold={threshold:g} * max R, "
         f"min distance {min_distance}) written to {out}/corners.csv; {len(files) - 1} images in {out}"
     )
+
+
+def _exists(path: Path) -> bool:
+    """``path.exists()``, but False where it cannot even be looked at (name too long, no permission):
+    writing there then fails with a named error."""
+    try:
+        return path.exists()
+    except OSError:
+        return False
+
+
+def _make_folder(folder: Path) -> list[Path]:
+    """Create ``folder`` and its missing parents; return the folders created, outermost first."""
+    missing = []
+    f = folder
+    while not _exists(f) and f != f.parent:
+        missing.append(f)
+        f = f.parent
+    if _exists(f) and not f.is_dir():
+        raise OutputError(f"cannot write into {str(f)!r}: it is a file, not a folder")
+    folder.mkdir(parents=True, exist_ok=True)
+    return missing[::-1]
+
+
+def _remove_created(created: list[Path]) -> None:
+    for f in reversed(created):
+        try:
+            f.rmdir()  # only if still empty: never deletes anything the user put there meanwhile
+        except OSError:
+            return
+
+
+def _os_error(err: OSError, target: Path) -> OutputError:
+    where = err.filename if isinstance(err.filename, str) else str(target)
+    return OutputError(f"cannot write {where!r}: {err.strerror or err}")
+
+
+def _write_into_folder(out: Path, files: dict[str, object]) -> None:
+    """Write every file into a temporary folder inside ``out``, then move each into place.
+
+    Nothing is written outside ``out``; a run that fails leaves neither partial files nor
+    folders it created behind (existing files are replaced only after all were written).
+    """
+    created: list[Path] = []
+    tmp: Path | None = None
+    try:
+        taken = [name for name in files if _exists(out / name) and (out / name).is_dir()
+                 and not (out / name).is_symlink()]
+        if taken:
+            raise OutputError(f"cannot write {str(out / taken[0])!r}: a folder of that name is in the way")
+        created = _make_folder(out)
+        tmp = Path(tempfile.mkdtemp(prefix=".pgsym-harris-", dir=out))
+        _write_harris(tmp, files)
+        for name in files:
+            os.replace(tmp / name, out / name)  # replaces a symlink itself, never the file it points to
+    except OSError as err:
+        if tmp is not None:
+            shutil.rmtree(tmp, ignore_errors=True)
+            tmp = None
+        _remove_created(created)
+        if isinstance(err, OutputError):  # already named (OutputError is an OSError too)
+            raise
+        raise _os_error(err, out) from None
+    finally:
+        if tmp is not None:
+            shutil.rmtree(tmp, ignore_errors=True)
 
 
 def _harris_files(result) -> dict[str, object]:  # type: ignore[no-untyped-def]
@@ -288,25 +259,43 @@ def rectify_command(image: Path, out: Path, method: str, points, lines, size) ->
     out = Path(out)
     _check_output_file(out)
     try:
-        from .vision.images import read_image, write_image
+        from .vision.images import read_image
 
         img = read_image(image)
         H, out_size = _rectifying_homography(img.shape, method, points, lines, size)
         from .vision.warp import warp
 
         rectified = warp(img, H, out_size)
+        _write_file(out, rectified)
     except PgsymError as err:
         raise _fail(err) from None
-    out.parent.mkdir(parents=True, exist_ok=True)
-    fd, tmp_name = tempfile.mkstemp(prefix=".pgsym-rectify-", suffix=out.suffix, dir=out.parent)
-    os.close(fd)
-    try:
-        write_image(tmp_name, rectified)
-        os.replace(tmp_name, out)
-    finally:
-        if os.path.exists(tmp_name):
-            os.unlink(tmp_name)
     click.echo(f"rectified ({method}) {out_size[0]}x{out_size[1]} image written to {out}")
+
+
+def _write_file(out: Path, image) -> None:  # type: ignore[no-untyped-def]
+    """Write an image to a temporary file next to ``out``, then rename it to ``out`` (atomic)."""
+    from .vision.images import write_image
+
+    created: list[Path] = []
+    tmp_name: str | None = None
+    try:
+        created = _make_folder(out.parent)
+        fd, tmp_name = tempfile.mkstemp(prefix=".pgsym-rectify-", suffix=out.suffix, dir=out.parent)
+        os.close(fd)
+        write_image(tmp_name, image)
+        os.replace(tmp_name, out)  # replaces a symlink itself, never the file it points to
+        tmp_name = None
+    except OSError as err:
+        if tmp_name is not None:
+            os.unlink(tmp_name)
+            tmp_name = None
+        _remove_created(created)
+        if isinstance(err, OutputError):  # already named (OutputError is an OSError too)
+            raise
+        raise _os_error(err, out) from None
+    finally:
+        if tmp_name is not None and os.path.exists(tmp_name):
+            os.unlink(tmp_name)
 
 
 def _rectifying_homography(shape, method, points, lines, size):  # type: ignore[no-untyped-def]

@@ -5,11 +5,17 @@ from __future__ import annotations
 import shutil
 import subprocess
 import sys
+from fractions import Fraction
 from pathlib import Path
 
 import pytest
+from hypothesis import given
+from hypothesis import strategies as st
 
 import pgsym
+from pgsym.cli_parsing import parse_coordinates, parse_number, parse_points
+from pgsym.errors import InputLimitError, PgsymError
+from pgsym.limits import MAX_DIGITS, MAX_EXPONENT
 
 PGSYM = shutil.which("pgsym", path=str(Path(sys.executable).parent))
 
@@ -80,3 +86,96 @@ def test_version_and_help_do_not_load_sympy_or_opencv():
     result = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=60)
     assert result.returncode == 0, result.stderr
     assert result.stdout.strip() == "[]"
+
+
+def test_an_unexpected_exception_is_one_line_not_a_traceback(monkeypatch):
+    # the last resort for bugs: no hostile input reaches it (tests/hostile), so provoke it by hand
+    from click.testing import CliRunner
+
+    import pgsym.cli
+
+    def broken(obj):  # type: ignore[no-untyped-def]
+        raise RuntimeError("a bug\nsecond line")
+
+    monkeypatch.setattr(pgsym.cli, "_describe", broken)
+    result = CliRunner().invoke(pgsym.cli.main, ["join", "0,0", "1,1"])
+    assert result.exit_code == 1 and isinstance(result.exception, SystemExit)
+    assert result.stderr == ("Error: internal error (RuntimeError: a bug); "
+                             "please report it with the command that caused it\n")
+
+
+def test_a_pgsym_error_anywhere_in_a_command_is_one_clean_line(monkeypatch):
+    from click.testing import CliRunner
+
+    import pgsym.cli
+    from pgsym.errors import UndecidableError
+
+    def undecidable(obj):  # type: ignore[no-untyped-def]
+        raise UndecidableError("cannot decide")
+
+    monkeypatch.setattr(pgsym.cli, "_describe", undecidable)
+    result = CliRunner().invoke(pgsym.cli.main, ["meet", "1,0,0", "0,1,0"])
+    assert (result.exit_code, result.stderr) == (1, "Error: UndecidableError: cannot decide\n")
+
+
+def test_the_exact_commands_read_the_one_number_grammar():
+    # 1.5e-3 = 3/2000 and -2/3 exactly: the line through (3/2000, -2/3) and (0, 1) is
+    # (-2/3 - 1, 0 - 3/2000, 3/2000 * 1 - 0 * (-2/3)) = (-5/3, -3/2000, 3/2000) ~ (10000, 9, -9)
+    result = run("join", "1.5e-3, -2/3", "0 1")
+    assert result.returncode == 0, result.stderr
+    assert "canonical: (10000, 9, -9)" in result.stdout
+
+
+# The one grammar of numbers (pgsym.cli_parsing), as properties: exact values, limits on the text.
+MANTISSAS = st.integers(-(10**MAX_DIGITS) + 1, 10**MAX_DIGITS - 1)
+EXPONENTS = st.integers(-MAX_EXPONENT, MAX_EXPONENT)
+
+
+@given(MANTISSAS, EXPONENTS)
+def test_scientific_notation_is_read_exactly(m, e):
+    # m e e means m * 10**e, computed here with integers only
+    expected = Fraction(m * 10**e) if e >= 0 else Fraction(m, 10**-e)
+    assert parse_number(f"{m}e{e}") == expected
+    assert parse_number(f"{m}E+{e}" if e >= 0 else f"{m}E{e}") == expected
+
+
+@given(MANTISSAS, st.integers(1, 10**MAX_DIGITS - 1))
+def test_fractions_are_read_exactly(p, q):
+    assert parse_number(f"{p}/{q}") == Fraction(p, q)
+
+
+@given(st.integers(0, 10**20), st.integers(0, 20))
+def test_decimals_are_read_exactly(n, places):
+    # the digits of n with a point `places` from the right: n / 10**places
+    text = str(n).rjust(places + 1, "0")
+    decimal = f"{text[:len(text) - places]}.{text[len(text) - places:]}"
+    assert parse_number(decimal) == Fraction(n, 10**places)
+
+
+@given(st.integers(MAX_EXPONENT + 1, 10**12), st.sampled_from(["", "-", "+"]))
+def test_an_exponent_beyond_the_limit_is_refused_on_the_text(e, sign):
+    with pytest.raises(InputLimitError, match="exponent"):
+        parse_number(f"1e{sign}{e}")
+
+
+@given(st.integers(10**MAX_DIGITS, 10**(3 * MAX_DIGITS)))
+def test_too_many_digits_are_refused(n):
+    for text in (str(n), f"1/{n}", f"{str(n)[:1]}.{str(n)[1:]}"):
+        with pytest.raises(InputLimitError, match="digits"):
+            parse_number(text)
+
+
+@given(st.text(max_size=30))
+def test_any_text_is_a_number_list_or_a_named_error(text):
+    try:
+        values = parse_coordinates(text)
+    except PgsymError:
+        return
+    assert values and all(isinstance(v, Fraction) for v in values)
+
+
+@given(st.lists(st.tuples(st.integers(-999, 999), st.integers(-999, 999)), min_size=1, max_size=8))
+def test_points_and_coordinates_share_the_grammar(pairs):
+    text = " ".join(f"{x},{y}" for x, y in pairs)
+    assert parse_points(text) == [(float(x), float(y)) for x, y in pairs]
+    assert parse_coordinates(text) == tuple(Fraction(v) for pair in pairs for v in pair)

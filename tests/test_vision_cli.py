@@ -142,7 +142,7 @@ ERROR_CASES = [
     (("rectify", "square.png", "--points", "__import__('os'),1 1,1 2,2 9,1", "--size", "5x4", "--out", "OUT.png"),
      2, "not a number"),
     (("rectify", "square.png", "--points", "1e999,1 1,1 2,2 9,1", "--size", "5x4", "--out", "OUT.png"), 2,
-     "too large"),
+     "InputLimitError: the exponent of '1e999' is out of range"),
     (("rectify", "square.png", "--points", "0,0 10,0 10,10 0,10", "--size", "50by40", "--out", "OUT.png"), 2,
      "WIDTHxHEIGHT"),
     (("rectify", "square.png", "--points", "0,0 10,0 10,10 0,10", "--out", "OUT.png"), 2, "--size"),
@@ -207,3 +207,96 @@ def test_the_command_line_does_not_import_opencv_until_a_vision_command_runs():
     code = "import sys\nfrom pgsym.cli import main\nprint('cv2' in sys.modules, 'pgsym.vision.harris' in sys.modules)"
     result = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=60)
     assert result.stdout.split() == ["False", "False"]
+
+
+def test_outputs_replace_symlinks_and_never_write_through_them(square_png, tmp_path):
+    # a symlink in the output place pointing outside the output folder: the link is replaced,
+    # the file it pointed to is left exactly as it was
+    from click.testing import CliRunner
+
+    from pgsym.cli import main
+
+    outside = tmp_path / "outside.txt"
+    outside.write_text("precious")
+    out = tmp_path / "results"
+    out.mkdir()
+    (out / "corners.csv").symlink_to(outside)
+    (tmp_path / "flat.png").symlink_to(outside)
+    result = CliRunner().invoke(main, ["harris", str(square_png), "--out", str(out)])
+    assert result.exit_code == 0, result.output
+    result = CliRunner().invoke(main, ["rectify", str(square_png), "--points", "30,20 79,20 79,59 30,59",
+                                       "--size", "50x40", "--out", str(tmp_path / "flat.png")])
+    assert result.exit_code == 0, result.output
+    assert outside.read_text() == "precious"
+    assert not (out / "corners.csv").is_symlink() and (out / "corners.csv").read_text().startswith("x,y,response")
+    assert not (tmp_path / "flat.png").is_symlink() and cv2.imread(str(tmp_path / "flat.png")).shape == (40, 50, 3)
+
+
+def test_a_failed_write_leaves_the_folder_as_it_was(square_png, tmp_path):
+    from click.testing import CliRunner
+
+    from pgsym.cli import main
+
+    out = tmp_path / "results"
+    out.mkdir()
+    (out / "image.png").write_bytes(b"old")
+    (out / "corners.csv").mkdir()  # a folder where a file must go
+    result = CliRunner().invoke(main, ["harris", str(square_png), "--out", str(out)])
+    assert result.exit_code == 1
+    assert result.stderr.startswith("Error: OutputError: cannot write") and "folder of that name" in result.stderr
+    assert listing(out) == {"image.png", "corners.csv"} and (out / "image.png").read_bytes() == b"old"
+    # below a file: named, nothing created
+    (tmp_path / "blocked").write_text("a file")
+    result = CliRunner().invoke(main, ["harris", str(square_png), "--out", str(tmp_path / "blocked" / "x" / "y")])
+    assert result.exit_code == 1 and "it is a file, not a folder" in result.stderr
+    assert listing(tmp_path) == {"square.png", "results", "blocked"}
+
+
+def test_a_full_disk_leaves_no_folder_and_no_temporary_file(square_png, tmp_path, monkeypatch):
+    import errno
+
+    from click.testing import CliRunner
+
+    import pgsym.vision.images
+    from pgsym.cli import main
+
+    def full(path, image):  # type: ignore[no-untyped-def]
+        raise OSError(errno.ENOSPC, "No space left on device", str(path))
+
+    monkeypatch.setattr(pgsym.vision.images, "write_image", full)
+    for args in (["harris", str(square_png), "--out", str(tmp_path / "new" / "deeper")],
+                 ["rectify", str(square_png), "--points", "30,20 79,20 79,59 30,59", "--size", "50x40",
+                  "--out", str(tmp_path / "new" / "flat.png")]):
+        result = CliRunner().invoke(main, args)
+        assert result.exit_code == 1 and "OutputError: cannot write" in result.stderr, result.output
+        assert "No space left on device" in result.stderr
+        assert listing(tmp_path) == {"square.png"}  # the folders made for the run are gone again
+
+
+def test_the_image_reader_checks_the_header_before_decoding(tmp_path):
+    from pgsym.errors import ImageError, InputLimitError
+    from pgsym.limits import MAX_IMAGE_PIXELS
+    from pgsym.vision.images import image_size, read_image
+
+    # a header announcing 8000 x 6000 = 48e6 > 40e6 pixels, with a pixel stream far too short for it:
+    # refused from the size alone, so the decoder never sees it
+    side = struct_png_header(8000, 6000)
+    (tmp_path / "big.png").write_bytes(side)
+    assert image_size(side) == (8000, 6000) and 8000 * 6000 > MAX_IMAGE_PIXELS
+    with pytest.raises(InputLimitError, match="8000x6000 = 48000000 pixels"):
+        read_image(tmp_path / "big.png")
+    (tmp_path / "small.png").write_bytes(struct_png_header(10, 10))
+    with pytest.raises(ImageError, match="truncated or damaged"):
+        read_image(tmp_path / "small.png")
+
+
+def struct_png_header(width: int, height: int) -> bytes:
+    """The signature and IHDR chunk of a grey 8-bit PNG, an empty IDAT and IEND (no pixels)."""
+    import struct
+    import zlib
+
+    def chunk(kind: bytes, data: bytes) -> bytes:
+        return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data))
+
+    ihdr = struct.pack(">IIBBBBB", width, height, 8, 0, 0, 0, 0)
+    return b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", ihdr) + chunk(b"IDAT", zlib.compress(b"")) + chunk(b"IEND", b"")

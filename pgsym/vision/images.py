@@ -12,13 +12,17 @@ Convention: an image for the numeric routines is a ``float32`` array of shape
 
 from __future__ import annotations
 
+import os
+import stat
 from pathlib import Path
 
 import numpy as np
 
-from ..errors import ImageError
+from ..errors import ImageError, InputLimitError
+from ..limits import MAX_IMAGE_BYTES, MAX_IMAGE_PIXELS, read_bounded
 
-__all__ = ["check_image", "display_uint8", "read_image", "to_float_image", "write_image"]
+__all__ = ["check_image", "display_uint8", "image_size", "read_image", "read_image_bytes", "to_float_image",
+           "write_image"]
 
 
 def check_image(image: object, name: str = "image") -> np.ndarray:
@@ -85,26 +89,103 @@ def to_float_image(array: object) -> np.ndarray:
 def read_image(path: str | Path) -> np.ndarray:
     """Read an image file as a float32 grey image in ``[0, 1]``.
 
-    Raises :class:`~pgsym.errors.ImageError` when the file is missing or is not an
-    image OpenCV can decode.
+    The file is read with its limits checked while reading: it must be a regular file
+    (not a folder, pipe or device) of at most :data:`~pgsym.limits.MAX_IMAGE_BYTES` bytes,
+    and its header must announce at most :data:`~pgsym.limits.MAX_IMAGE_PIXELS` pixels,
+    checked before anything is decoded (a small compressed file can decode to gigabytes).
+    Raises :class:`~pgsym.errors.ImageError` when the file is missing or is not an image
+    OpenCV can decode, and :class:`~pgsym.errors.InputLimitError` past a limit.
 
     >>> read_image("no-such-file.png")
     Traceback (most recent call last):
     ...
     pgsym.errors.ImageError: cannot read image 'no-such-file.png': the file does not exist
     """
-    p = Path(path)
-    if not p.is_file():
-        raise ImageError(f"cannot read image {str(path)!r}: the file does not exist")
+    data = read_image_bytes(path)
+    width, height = image_size(data, str(path))
+    if width * height > MAX_IMAGE_PIXELS:
+        raise InputLimitError(f"the image {str(path)!r} has {width}x{height} = {width * height} pixels; "
+                              f"at most {MAX_IMAGE_PIXELS} are read (scale it down first)")
     import cv2
 
-    data = np.fromfile(str(p), dtype=np.uint8)
-    image = cv2.imdecode(data, cv2.IMREAD_UNCHANGED) if data.size else None
-    if image is None:
-        raise ImageError(f"cannot read image {str(path)!r}: not an image format OpenCV can decode (use PNG or JPEG)")
+    old = cv2.utils.logging.setLogLevel(cv2.utils.logging.LOG_LEVEL_SILENT)  # damage is reported below, once
+    try:
+        image = cv2.imdecode(np.frombuffer(data, dtype=np.uint8), cv2.IMREAD_UNCHANGED)
+    finally:
+        cv2.utils.logging.setLogLevel(old)
+    if image is None or image.size == 0 or image.shape[0] * image.shape[1] > MAX_IMAGE_PIXELS:
+        raise ImageError(f"cannot read image {str(path)!r}: OpenCV cannot decode it (truncated or damaged?); "
+                         "use PNG or JPEG")
     if image.ndim == 3:  # OpenCV stores colour as BGR(A)
         image = image[..., [2, 1, 0]] if image.shape[2] >= 3 else image
     return to_float_image(image)
+
+
+def read_image_bytes(path: str | Path) -> bytes:
+    """The bytes of an image file, read with the limits of :func:`read_image` (no decoding).
+
+    >>> import tempfile
+    >>> with tempfile.TemporaryDirectory() as d:
+    ...     read_image_bytes(d)  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    pgsym.errors.ImageError: cannot read image '...': it is a folder, not a file
+    """
+    name = str(path)
+    try:
+        # without blocking: a FIFO with no writer would block a plain open; the type is checked next
+        fd = os.open(path, os.O_RDONLY | getattr(os, "O_NONBLOCK", 0))
+    except FileNotFoundError:
+        raise ImageError(f"cannot read image {name!r}: the file does not exist") from None
+    except IsADirectoryError:
+        raise ImageError(f"cannot read image {name!r}: it is a folder, not a file") from None
+    except (OSError, ValueError) as err:  # ValueError: a NUL byte in the name
+        reason = err.strerror if isinstance(err, OSError) and err.strerror else str(err)
+        raise ImageError(f"cannot read image {name!r}: {reason}") from None
+    try:
+        mode = os.fstat(fd).st_mode
+        if stat.S_ISDIR(mode):
+            raise ImageError(f"cannot read image {name!r}: it is a folder, not a file")
+        if not stat.S_ISREG(mode):
+            raise ImageError(f"cannot read image {name!r}: it is not a regular file (a pipe or a device)")
+        with os.fdopen(fd, "rb", closefd=False) as stream:
+            data = read_bounded(stream, MAX_IMAGE_BYTES, f"image {name!r}")
+    except OSError as err:
+        raise ImageError(f"cannot read image {name!r}: {err.strerror or err}") from None
+    finally:
+        os.close(fd)
+    if not data:
+        raise ImageError(f"cannot read image {name!r}: the file is empty")
+    return data
+
+
+def image_size(data: bytes, name: str = "image") -> tuple[int, int]:
+    """``(width, height)`` announced by the header of an encoded image, without decoding its pixels.
+
+    >>> import cv2, numpy as np
+    >>> image_size(cv2.imencode(".png", np.zeros((3, 5), np.uint8))[1].tobytes())
+    (5, 3)
+    >>> image_size(b"not an image")
+    Traceback (most recent call last):
+    ...
+    pgsym.errors.ImageError: cannot read image 'image': not an image format pgsym reads (use PNG or JPEG)
+    """
+    import io
+    import warnings
+
+    from PIL import Image  # Pillow (a Matplotlib dependency) reads only the header here
+
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", Image.DecompressionBombWarning)
+            with Image.open(io.BytesIO(data)) as header:
+                width, height = header.size
+    except Image.DecompressionBombError:
+        raise InputLimitError(f"the image {name!r} has more than {MAX_IMAGE_PIXELS} pixels; "
+                              "at most that many are read (scale it down first)") from None
+    except Exception:  # Pillow raises many types for broken headers (OSError, SyntaxError, struct.error, ...)
+        raise ImageError(f"cannot read image {name!r}: not an image format pgsym reads (use PNG or JPEG)") from None
+    return int(width), int(height)
 
 
 def display_uint8(array: np.ndarray, signed: bool = False) -> np.ndarray:
