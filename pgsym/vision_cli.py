@@ -20,6 +20,7 @@ from pathlib import Path
 import click
 
 from .cli_parsing import LINES, POINTS, SIZE, DecimalRange, IntegerRange, parse_lines, parse_points, parse_size
+from .csv_cells import csv_text
 from .errors import OutputError, PgsymError
 
 __all__ = ["harris_command", "parse_lines", "parse_points", "parse_size", "rectify_command"]
@@ -180,9 +181,8 @@ def _harris_files(result) -> dict[str, object]:  # type: ignore[no-untyped-def]
     files["candidates.png"] = np.where(result.candidates, 255, 0).astype(np.uint8)
     files["maxima.png"] = np.where(result.maxima, 255, 0).astype(np.uint8)
     files["corners.png"] = corner_overlay(result.image, result.corners)
-    rows = ["x,y,response"] + [f"{int(x)},{int(y)},{r:.6g}" for (x, y), r in zip(result.corners, result.strengths,
-                                                                                      strict=True)]
-    files["corners.csv"] = "\n".join(rows) + "\n"
+    rows = [(int(x), int(y), f"{r:.6g}") for (x, y), r in zip(result.corners, result.strengths, strict=True)]
+    files["corners.csv"] = csv_text([("x", "y", "response"), *rows])
     return files
 
 

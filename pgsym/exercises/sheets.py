@@ -11,6 +11,7 @@ True
 from __future__ import annotations
 
 import json
+import unicodedata
 from collections.abc import Callable, Iterable, Sequence
 from pathlib import Path
 from typing import Any
@@ -138,6 +139,9 @@ def read_roster(path: str | Path) -> list[tuple[str, str]]:
             raise RosterError(f"line {line} of {p.name!r} has no student id")
         if len(sid) > 100:
             raise RosterError(f"line {line} of {p.name!r}: the id is longer than 100 characters")
+        if any(unicodedata.category(c) == "Cc" for c in sid):
+            # an id names files and matches answers: a control character there is a broken roster
+            raise RosterError(f"line {line} of {p.name!r}: the id {one_line(sid)!r} contains a control character")
         if sid in seen:
             raise RosterError(f"line {line} of {p.name!r}: the id {one_line(sid)!r} appears twice")
         seen.add(sid)

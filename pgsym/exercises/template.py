@@ -22,6 +22,7 @@ from pathlib import Path
 from typing import Any
 
 from ..errors import TemplateError, UnknownTopicError
+from ._text import one_line
 from .model import Answer, Exercise, Part
 from .reading import read_user_text
 
@@ -128,8 +129,12 @@ def load_template_folder(folder: str | Path) -> list[str]:
     within :data:`pgsym.limits.MAX_FILE_BYTES`, and a pipe or device is refused.
     """
     path = Path(folder)
-    if not path.is_dir():
-        raise TemplateError(f"template folder {str(path)!r} does not exist or is not a folder")
+    try:
+        is_folder = path.is_dir()
+    except OSError as err:  # e.g. a name longer than the file system allows
+        raise TemplateError(f"template folder {one_line(str(path))!r} cannot be opened: {err.strerror}") from None
+    if not is_folder:
+        raise TemplateError(f"template folder {one_line(str(path))!r} does not exist or is not a folder")
     names = []
     for file in sorted(path.glob("*.py")):
         module_name = f"pgsym_user_templates.{file.stem}"
