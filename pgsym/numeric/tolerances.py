@@ -21,6 +21,7 @@ __all__ = [
     "DLT_EIGEN_GAP_RTOL",
     "DLT_RTOL",
     "INCIDENT_RTOL",
+    "RANK_EPS",
     "SINGULAR_RTOL",
 ]
 
@@ -39,11 +40,12 @@ than 13 of the 16 significant digits. Used by :func:`pgsym.hierarchy.classify`, 
 CLASS_RTOL = 1e-9
 """The default ``tol`` of float classification (:func:`pgsym.hierarchy.classify`).
 
-Measures: relative deviations of a balanced matrix from a class, each a ratio that does
-not change under a change of units: ``|v| |t| / (|A| |w|)`` for "the last row is
-``(0, …, 0, w)``" (affine), ``max|AᵀA − g I| / g`` for "``A`` is a multiple of a rotation"
-(similarity), and ``|√g − |w|| / |w|`` for "that multiple is one" (isometry), with ``A`` the
-linear block, ``t`` the translation, ``vᵀ`` the projective row and ``w`` the corner entry.
+Measures: relative deviations from a class, each a ratio that neither a change of units
+(conjugation by ``diag(s, …, s, 1)``) nor the overall scale alters. With ``H = [[A, t], [vᵀ, w]]``
+and ``α, τ, ν, ω`` the largest entries of ``|A|, |t|, |v|, |w|``: ``ν τ / (α ω)`` for "the last
+row is ``(0, …, 0, w)``" (affine; with ``t = 0`` only ``v = 0`` is affine, since units can make
+any other ``v`` as large as ``A``), ``max|ÂᵀÂ − g I| / g`` with ``Â = A / α`` for "``A`` is a
+multiple of a rotation" (similarity), and ``|r² − 1|`` for its ratio ``r = √g α / ω`` (isometry).
 Why 1e-9: matrices built from measured or rounded data (a rotation from an angle in
 degrees, a homography from a DLT) agree with their class to 1e-12 … 1e-15, while a
 genuinely different matrix differs by far more; 1e-9 separates the two with margin on
@@ -85,4 +87,14 @@ DLT_EIGEN_GAP_RTOL = 1e-13
 Measures: the forward error bound ``ε λ_max / λ₂`` of the eigenvector of ``AᵀA`` (forming
 ``AᵀA`` squares the condition number of ``A``). Why 1e-13: above it the faster eigenvector
 path would lose more than three digits relative to the SVD of ``A``.
+"""
+
+RANK_EPS = 2.0**-52
+"""Numerical rank (:mod:`pgsym.linalg`): singular values ``≤ max(m, n) · RANK_EPS · σ_max`` count as zero.
+
+Measures: the ratio ``σ / σ_max``, after the rows of homogeneous points or planes are scaled to
+unit size and the homogeneous column is balanced against the others (both by powers of two, a
+change of units that keeps the null space). Why ``max(m, n) ε``: it is the size of the rounding
+error of the SVD of an ``m × n`` matrix (the rule of :func:`numpy.linalg.matrix_rank`), so only
+singular values that rounding alone could produce are taken for zero.
 """
