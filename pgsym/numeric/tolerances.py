@@ -20,6 +20,7 @@ __all__ = [
     "COLLINEAR_RTOL",
     "DLT_EIGEN_GAP_RTOL",
     "DLT_RTOL",
+    "DLT_SNAP_RTOL",
     "INCIDENT_RTOL",
     "RANK_EPS",
     "SINGULAR_RTOL",
@@ -97,4 +98,14 @@ unit size and the homogeneous column is balanced against the others (both by pow
 change of units that keeps the null space). Why ``max(m, n) ε``: it is the size of the rounding
 error of the SVD of an ``m × n`` matrix (the rule of :func:`numpy.linalg.matrix_rank`), so only
 singular values that rounding alone could produce are taken for zero.
+"""
+
+DLT_SNAP_RTOL = 2.0**-46
+"""Entries of a normalised DLT solution ``Ĥ`` with ``|ĥ| ≤ DLT_SNAP_RTOL · max|Ĥ|`` are set to zero.
+
+Measures: an entry against the largest, in the normalised frames where the data has unit
+scale. Why 2⁻⁴⁶ (64 ε ≈ 1.4e-14): the computed ``Ĥ`` carries rounding errors of a few ε
+times its largest entry, so smaller entries are indistinguishable from zero; leaving that
+noise in would let denormalisation multiply it by the data's scale (``1e-17 · 1e200``) and
+swamp the true entries, as happens for an affine map of points near ``1e-200``.
 """
