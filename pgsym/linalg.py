@@ -371,9 +371,14 @@ def svd_steps(A: Any) -> SVDSteps:
     >>> bool(np.allclose(U @ S @ V.T, [[3, 0], [0, -2]]))
     True
     """
-    array = _float_matrix(A)
-    if array.shape != (2, 2):
-        raise DimensionError(f"svd_steps takes a 2×2 matrix, got shape {array.shape}")
+    given = _float_matrix(A)
+    if given.shape != (2, 2):
+        raise DimensionError(f"svd_steps takes a 2×2 matrix, got shape {given.shape}")
+    # factor the matrix scaled by a power of two to unit size (exact), so that A v / σ stays a unit
+    # vector even for entries near the ends of the float64 range; Σ is scaled back at the end
+    largest = float(np.abs(given).max())
+    exponent = int(np.frexp(largest)[1]) if largest > 0 else 0
+    array = np.ldexp(given, -exponent)
     _, s, vt = np.linalg.svd(array)
     tol = _tolerance(s, (2, 2), None)
     v1 = vt[0] if vt[0][np.argmax(np.abs(vt[0]))] > 0 else -vt[0]  # a deterministic sign
@@ -384,4 +389,4 @@ def svd_steps(A: Any) -> SVDSteps:
     perpendicular = np.array([-u[1, 0], u[0, 0]])
     flip = s[1] > tol and float(perpendicular @ (array @ v[:, 1])) < 0
     u[:, 1] = -perpendicular if flip else perpendicular  # σ2 = 0: U a rotation too
-    return SVDSteps(V=v, Sigma=np.diag(s), U=u)
+    return SVDSteps(V=v, Sigma=np.diag(np.ldexp(s, exponent)), U=u)
