@@ -278,21 +278,24 @@ def _smallest_right_singular_vector(rows: Any, name: str, error: type[Exception]
     array = _float_matrix(rows, name)
     if array.shape[1] != 4 or array.shape[0] < 3:
         raise DimensionError(f"{name} must have shape (n, 4) with n >= 3 {what}, got {array.shape}")
-    # Change of units, exactly (powers of two): each row (a point or plane, defined up to scale) to
-    # largest entry of order one, then the homogeneous column against the other three. Neither
-    # changes the null space after the column scaling is undone, and the rank decision no longer
+    # The rank is decided after a change of units, exactly (powers of two): each row (a point or plane,
+    # defined up to scale) to largest entry of order one, then the homogeneous column against the other
+    # three. That keeps the null space (once the column scaling is undone), and the decision no longer
     # depends on whether coordinates are in millimetres or kilometres.
     rows_max = np.abs(array).max(axis=1, keepdims=True)
-    array = np.ldexp(array, -np.frexp(np.where(rows_max > 0, rows_max, 1.0))[1])
-    head, last = float(np.abs(array[:, :3]).max()), float(np.abs(array[:, 3]).max())
+    balanced = np.ldexp(array, -np.frexp(np.where(rows_max > 0, rows_max, 1.0))[1])
+    head, last = float(np.abs(balanced[:, :3]).max()), float(np.abs(balanced[:, 3]).max())
     shift = int(np.frexp(head)[1] - np.frexp(last)[1]) if head > 0 and last > 0 else 0
-    array[:, 3] = np.ldexp(array[:, 3], shift)
-    _, singular_values, vt = np.linalg.svd(array, full_matrices=True)
-    rank = int(np.sum(singular_values > _tolerance(singular_values, array.shape, rtol)))
+    balanced[:, 3] = np.ldexp(balanced[:, 3], shift)
+    _, singular_values, vt = np.linalg.svd(balanced, full_matrices=True)
+    rank = int(np.sum(singular_values > _tolerance(singular_values, balanced.shape, rtol)))
     if rank < 3:
         raise error(rank)
-    v = vt[-1].copy()
-    v[3] = np.ldexp(v[3], shift)  # back to the given units: x·π = x'·π' with x'_4 = 2^shift x_4
+    if array.shape[0] == 3:  # the exact null vector: the balanced matrix gives it to full relative accuracy
+        v = vt[-1].copy()
+        v[3] = np.ldexp(v[3], shift)  # back to the given units: x·π = x'·π' with x'_4 = 2^shift x_4
+    else:  # least squares: min ‖A π‖ for the rows as given (weights are part of the problem), scaled exactly
+        v = np.linalg.svd(_unit_scaled(array), full_matrices=True)[2][-1]
     return _sign_normalised(np.ldexp(v, -int(np.frexp(np.abs(v).max())[1])))
 
 
