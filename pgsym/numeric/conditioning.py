@@ -18,6 +18,8 @@ from singular as the identity, and a rank-2 matrix is singular at any scale.
 
 from __future__ import annotations
 
+import functools
+
 import numpy as np
 
 from ..errors import NonFiniteError
@@ -61,6 +63,11 @@ def _block_exponents(h: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     return np.frexp(largest)[1].astype(np.float64), largest > 0
 
 
+@functools.cache
+def _pinv(present: tuple[bool, ...]) -> np.ndarray:
+    return np.linalg.pinv(_DESIGN * np.array(present)[:, None])
+
+
 def balance(H: np.ndarray) -> np.ndarray:
     """``2^λ diag(2^a I, 1) H diag(2^(−b) I, 1)``: ``H`` (or a stack) in units where its nonzero blocks are of order 1.
 
@@ -73,9 +80,12 @@ def balance(H: np.ndarray) -> np.ndarray:
            [0.        , 0.        , 0.5       ]])
     """
     e, present = _block_exponents(H)
-    design = _DESIGN * present[..., None]
     # least squares  design @ (a, b, λ) ≈ −e  over the nonzero blocks (the pseudo-inverse handles absent ones)
-    z = np.rint(np.einsum("...ij,...j->...i", np.linalg.pinv(design), -e * present)).astype(np.int64)
+    if H.ndim == 2:  # one matrix: the pseudo-inverse of its pattern of nonzero blocks, computed once
+        z = np.rint(_pinv(tuple(present.tolist())) @ (-e * present)).astype(np.int64)
+    else:
+        design = _DESIGN * present[..., None]
+        z = np.rint(np.einsum("...ij,...j->...i", np.linalg.pinv(design), -e * present)).astype(np.int64)
     a, b, lam = z[..., 0], z[..., 1], z[..., 2]
     n = H.shape[-1]
     row = np.zeros((*H.shape[:-2], n), np.int64) + (a + lam)[..., None]

@@ -135,14 +135,17 @@ def _matvec(M: np.ndarray, x: Any, function: str, what: str, out: np.ndarray | N
             f"got an array of shape {a.shape}"
         )
     if M.ndim == 2 and a.ndim == 2 and axis in (0, -2):
-        # component-major (k, N): one matrix product, already in the right layout, then one BLAS dot
-        # product of the output with itself (blocks would cost a Python call each for no gain here)
+        # component-major (k, N): matrix products over column blocks, each checked while in cache
         result = np.empty(a.shape) if out is None else out
         if result.shape != a.shape:
             raise DimensionError(f"{function}: out has shape {result.shape}, the result has shape {a.shape}")
+        suspect = False
         with np.errstate(over="ignore", invalid="ignore"):
-            np.matmul(M, a, out=result)
-        return result, not _sum_finite(result.T)
+            for start in range(0, a.shape[1], CHUNK):
+                block = result[:, start : start + CHUNK]
+                np.matmul(M, a[:, start : start + CHUNK], out=block)
+                suspect = suspect or not _sum_finite(block.T)  # components on the last axis
+        return result, suspect
     a = np.moveaxis(a, axis, -1)
     fast_out = out is None or out.flags.c_contiguous
     if M.ndim == 2 and a.ndim == 2 and a.flags.c_contiguous and fast_out:

@@ -36,10 +36,10 @@ from ..errors import (
     NonFiniteError,
     SingularTransformationError,
 )
-from ..numeric.conditioning import require_finite, singular
+from ..numeric.conditioning import require_finite
 from ..numeric.homogeneous import dehomogenize
 from ..numeric.plane import cross
-from ..numeric.tolerances import COLLINEAR_RTOL, DLT_EIGEN_GAP_RTOL, DLT_RTOL, DLT_SNAP_RTOL
+from ..numeric.tolerances import COLLINEAR_RTOL, DLT_EIGEN_GAP_RTOL, DLT_RTOL, DLT_SNAP_RTOL, SINGULAR_RTOL
 
 if TYPE_CHECKING:  # the exact four-point path loads SymPy only when it is used
     import sympy
@@ -271,7 +271,8 @@ def dlt_homography(src: Any, dst: Any) -> np.ndarray:
     # Entries of Ĥ below its rounding error are noise; zero them, which changes Ĥ by less than its own
     # error, so that denormalising cannot blow noise up (v̂ = 1e-17 becomes 1e183 for data near 1e-200).
     Hn = np.where(np.abs(Hn) <= DLT_SNAP_RTOL * np.abs(Hn).max(), 0.0, Hn)
-    if singular(Hn):  # judged in the normalised frames, where the units are those of the data
+    s_n = np.linalg.svd(Hn, compute_uv=False)  # Ĥ is in the normalised frames: balanced already
+    if s_n[-1] <= SINGULAR_RTOL * s_n[0]:
         raise DegenerateConfigurationError("the estimated homography is singular; the correspondences are degenerate")
     T = np.array([[s, 0.0, -s * cx], [0.0, s, -s * cy], [0.0, 0.0, 1.0]])
     Tp_inv = np.array([[1.0 / sd, 0.0, cu], [0.0, 1.0 / sd, cv], [0.0, 0.0, 1.0]])
