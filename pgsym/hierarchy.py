@@ -571,6 +571,7 @@ def _classify_numeric(H: Any, tol: float) -> TransformationClass:
     import numpy as np
 
     from .numeric.conditioning import require_finite, singular
+    from .numeric.tolerances import SINGULAR_RTOL
 
     if isinstance(H, Transformation):
         H = H.matrix
@@ -583,7 +584,7 @@ def _classify_numeric(H: Any, tol: float) -> TransformationClass:
     require_finite(M, "H", "classify")
     if not np.abs(M).max() > 0 or singular(M):
         raise SingularTransformationError(
-            f"the matrix {M.tolist()} is singular (σ_min ≤ 1e-13 σ_max in balanced units): no projective "
+            f"the matrix {M.tolist()} is singular (σ_min ≤ {SINGULAR_RTOL} σ_max in balanced units): no projective "
             "transformation"
         )
     n = M.shape[0]
