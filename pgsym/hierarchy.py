@@ -76,13 +76,37 @@ __all__ = [
 def rotation_2d(t: Any) -> list[list[Any]]:
     """The 2×2 rotation with Cayley parameter ``t = tan(θ/2)``: ``c = (1−t²)/(1+t²)``, ``s = 2t/(1+t²)``.
 
-    Works for numbers, SymPy expressions and exact fractions alike.
+    Works for numbers, SymPy expressions and exact fractions alike. For a float ``t`` the
+    result is finite and right to rounding for every finite ``t`` (beyond ``|t| = 1`` it is
+    computed from ``1/t``, so ``t²`` never overflows: ``t = 1e200`` is the half turn less
+    ``2e-200`` rad); a NaN or infinite ``t`` raises :class:`~pgsym.errors.NonFiniteError`.
 
     >>> rotation_2d(Rational(1, 2))      # cos θ = 3/5, sin θ = 4/5
     [[3/5, -4/5], [4/5, 3/5]]
+    >>> rotation_2d(1e200)
+    [[-1.0, -2e-200], [2e-200, -1.0]]
     """
+    if isinstance(t, float) or type(t).__module__ == "numpy":
+        return _rotation_2d_float(float(t))
     d = 1 + t * t
     c, s = (1 - t * t) / d, 2 * t / d
+    return [[c, -s], [s, c]]
+
+
+def _rotation_2d_float(t: float) -> list[list[float]]:
+    import math
+
+    from .errors import NonFiniteError
+
+    if not math.isfinite(t):
+        raise NonFiniteError(f"rotation_2d: the Cayley parameter must be finite, got {t}; the half turn is t → ∞")
+    if abs(t) <= 1:
+        d = 1 + t * t
+        c, s = (1 - t * t) / d, 2 * t / d
+    else:  # divide numerator and denominator by t²: no overflow, and 1/t² → 0 gives the half turn
+        u = 1 / t
+        d = u * u + 1
+        c, s = (u * u - 1) / d, 2 * u / d
     return [[c, -s], [s, c]]
 
 
@@ -534,7 +558,20 @@ def classify(H: Any, tol: float | None = None) -> TransformationClass:
 
 
 def _classify_numeric(H: Any, tol: float) -> TransformationClass:
+    """Float classification that no change of units can alter (see :mod:`pgsym.numeric.tolerances`).
+
+    With ``H = [[A, t], [vᵀ, w]]`` (max-norms ``α, τ, ν, ω``): singular when the balanced
+    matrix has ``σ_min ≤ SINGULAR_RTOL σ_max``; affine when ``ν τ ≤ tol α ω`` (and ``ν = 0`` if
+    ``τ = 0``: with no translation, units can make any ``v ≠ 0`` as large as ``A``); a similarity when
+    ``AᵀA`` is within ``tol`` of a multiple of ``I``; an isometry when that multiple is ``w²``.
+    Every test is a ratio that conjugating ``H`` by ``diag(s, …, s, 1)`` or scaling it leaves unchanged.
+    """
+    import math
+
     import numpy as np
+
+    from .numeric.conditioning import require_finite, singular
+    from .numeric.tolerances import SINGULAR_RTOL
 
     if isinstance(H, Transformation):
         H = H.matrix
@@ -544,29 +581,38 @@ def _classify_numeric(H: Any, tol: float) -> TransformationClass:
         raise DimensionError(f"classify needs a square 3×3 or 4×4 matrix of numbers, got {H!r}") from err
     if M.shape not in ((3, 3), (4, 4)):
         raise DimensionError(f"classify needs a 3×3 or 4×4 matrix, got shape {M.shape}")
-    n = M.shape[0]
-    scale = np.abs(M).max()
-    if scale == 0 or abs(np.linalg.det(M / scale)) <= tol:
+    require_finite(M, "H", "classify")
+    if not np.abs(M).max() > 0 or singular(M):
         raise SingularTransformationError(
-            f"the matrix {M.tolist()} is singular within tolerance {tol}: no projective transformation"
+            f"the matrix {M.tolist()} is singular (σ_min ≤ {SINGULAR_RTOL} σ_max in balanced units): no projective "
+            "transformation"
         )
-    M = M / scale
+    n = M.shape[0]
+    k = n - 1
+    M = np.ldexp(M, -int(np.frexp(np.abs(M).max())[1]))  # exact power-of-two scale: no overflow below
+    A, t, v, w = M[:k, :k], M[:k, k], M[k, :k], float(M[k, k])
+    alpha, tau, nu, omega = float(np.abs(A).max()), float(np.abs(t).max()), float(np.abs(v).max()), abs(w)
     classes = CLASSES_2D if n == 3 else CLASSES_3D
-    if np.abs(M[n - 1, : n - 1]).max() > tol or abs(M[n - 1, n - 1]) <= tol:
-        return classes[-1]
-    A = M[: n - 1, : n - 1] / M[n - 1, n - 1]
-    G = A.T @ A
-    g = np.trace(G) / (n - 1)
-    if np.abs(G - g * np.eye(n - 1)).max() > tol * max(g, 1.0):
+    if nu > 0:
+        if tau == 0 or omega == 0:
+            return classes[-1]
+        if math.log(nu) + math.log(tau) > math.log(tol) + math.log(alpha) + math.log(omega):
+            return classes[-1]
+    G = (A / alpha).T @ (A / alpha)
+    g = float(np.trace(G)) / k
+    if np.abs(G - g * np.eye(k)).max() > tol * g:
         return classes[-2]
-    proper = np.linalg.det(A) > 0
+    proper = bool(np.linalg.det(A / alpha) * w > 0)
+    # the similarity ratio r = √g α / |w|; an isometry when |r² − 1| ≤ tol (computed in logarithms)
+    log_r2 = math.log(g) + 2 * (math.log(alpha) - math.log(omega))
+    isometry = abs(log_r2) < 1 and abs(math.expm1(log_r2)) <= tol
     if n == 3:
-        if abs(g - 1) > tol:
+        if not isometry:
             return SIMILARITY_2D
         return EUCLIDEAN_2D if proper else ISOMETRY_2D
     if not proper:
         return AFFINE_3D
-    return EUCLIDEAN_3D if abs(g - 1) <= tol else SIMILARITY_3D
+    return EUCLIDEAN_3D if isometry else SIMILARITY_3D
 
 
 def as_matrix(H: Any) -> ImmutableMatrix:

@@ -40,6 +40,7 @@ from .errors import (
     DependentPlanesError,
     DimensionError,
     InvalidCoordinatesError,
+    NonFiniteError,
     ZeroCoordinateError,
 )
 from .homogeneous import HomogeneousVector, is_zero, to_exact
@@ -207,14 +208,26 @@ def _float_matrix(A: Any, name: str = "A") -> np.ndarray:
     if array.ndim != 2 or 0 in array.shape:
         raise DimensionError(f"{name} must be a non-empty 2D array, got shape {array.shape}")
     if not np.all(np.isfinite(array)):
-        raise InvalidCoordinatesError(f"{name} contains NaN or infinite entries; remove or repair those rows")
+        raise NonFiniteError(f"{name} contains NaN or infinite entries; remove or repair those rows")
     return array
 
 
+def _unit_scaled(array: np.ndarray) -> np.ndarray:
+    """``array`` times the power of two that brings its largest entry to [0.5, 1).
+
+    The scaling is exact, so the SVD sees no overflow or underflow and the ratios of singular
+    values, which are all that rank decisions use, are unchanged.
+    """
+    largest = float(np.abs(array).max())
+    return np.ldexp(array, -int(np.frexp(largest)[1])) if largest > 0 else array
+
+
 def _tolerance(singular_values: np.ndarray, shape: tuple[int, int], rtol: float | None) -> float:
+    from .numeric.tolerances import RANK_EPS
+
     largest = float(singular_values.max()) if singular_values.size else 0.0
     if rtol is None:
-        rtol = max(shape) * np.finfo(float).eps
+        rtol = max(shape) * RANK_EPS
     elif not (isinstance(rtol, numbers.Real) and math.isfinite(rtol) and rtol >= 0):
         raise InvalidCoordinatesError(f"rtol must be a finite number >= 0, got {rtol!r}")
     return float(rtol) * largest
@@ -229,7 +242,7 @@ def numeric_rank(A: Any, rtol: float | None = None) -> int:
     >>> numeric_rank([[1.0, 2.0], [2.0, 4.0 + 1e-17]])
     1
     """
-    array = _float_matrix(A)
+    array = _unit_scaled(_float_matrix(A))
     singular_values = np.linalg.svd(array, compute_uv=False)
     return int(np.sum(singular_values > _tolerance(singular_values, array.shape, rtol)))
 
@@ -249,7 +262,7 @@ def nullspace_svd(A: Any, rtol: float | None = None) -> np.ndarray:
     >>> N.shape, bool(np.allclose(N[:, 0] / N[3, 0], [1, 2, 3, 1]))
     ((4, 1), True)
     """
-    array = _float_matrix(A)
+    array = _unit_scaled(_float_matrix(A))
     _, singular_values, vt = np.linalg.svd(array, full_matrices=True)
     rank = int(np.sum(singular_values > _tolerance(singular_values, array.shape, rtol)))
     return vt[rank:].T.copy()
@@ -265,11 +278,25 @@ def _smallest_right_singular_vector(rows: Any, name: str, error: type[Exception]
     array = _float_matrix(rows, name)
     if array.shape[1] != 4 or array.shape[0] < 3:
         raise DimensionError(f"{name} must have shape (n, 4) with n >= 3 {what}, got {array.shape}")
-    _, singular_values, vt = np.linalg.svd(array, full_matrices=True)
-    rank = int(np.sum(singular_values > _tolerance(singular_values, array.shape, rtol)))
+    # The rank is decided after a change of units, exactly (powers of two): each row (a point or plane,
+    # defined up to scale) to largest entry of order one, then the homogeneous column against the other
+    # three. That keeps the null space (once the column scaling is undone), and the decision no longer
+    # depends on whether coordinates are in millimetres or kilometres.
+    rows_max = np.abs(array).max(axis=1, keepdims=True)
+    balanced = np.ldexp(array, -np.frexp(np.where(rows_max > 0, rows_max, 1.0))[1])
+    head, last = float(np.abs(balanced[:, :3]).max()), float(np.abs(balanced[:, 3]).max())
+    shift = int(np.frexp(head)[1] - np.frexp(last)[1]) if head > 0 and last > 0 else 0
+    balanced[:, 3] = np.ldexp(balanced[:, 3], shift)
+    _, singular_values, vt = np.linalg.svd(balanced, full_matrices=True)
+    rank = int(np.sum(singular_values > _tolerance(singular_values, balanced.shape, rtol)))
     if rank < 3:
         raise error(rank)
-    return _sign_normalised(vt[-1])
+    if array.shape[0] == 3:  # the exact null vector: the balanced matrix gives it to full relative accuracy
+        v = vt[-1].copy()
+        v[3] = np.ldexp(v[3], shift)  # back to the given units: x·π = x'·π' with x'_4 = 2^shift x_4
+    else:  # least squares: min ‖A π‖ for the rows as given (weights are part of the problem), scaled exactly
+        v = np.linalg.svd(_unit_scaled(array), full_matrices=True)[2][-1]
+    return _sign_normalised(np.ldexp(v, -int(np.frexp(np.abs(v).max())[1])))
 
 
 def plane_through_numeric(points: Any, rtol: float | None = None) -> np.ndarray:
@@ -347,9 +374,14 @@ def svd_steps(A: Any) -> SVDSteps:
     >>> bool(np.allclose(U @ S @ V.T, [[3, 0], [0, -2]]))
     True
     """
-    array = _float_matrix(A)
-    if array.shape != (2, 2):
-        raise DimensionError(f"svd_steps takes a 2×2 matrix, got shape {array.shape}")
+    given = _float_matrix(A)
+    if given.shape != (2, 2):
+        raise DimensionError(f"svd_steps takes a 2×2 matrix, got shape {given.shape}")
+    # factor the matrix scaled by a power of two to unit size (exact), so that A v / σ stays a unit
+    # vector even for entries near the ends of the float64 range; Σ is scaled back at the end
+    largest = float(np.abs(given).max())
+    exponent = int(np.frexp(largest)[1]) if largest > 0 else 0
+    array = np.ldexp(given, -exponent)
     _, s, vt = np.linalg.svd(array)
     tol = _tolerance(s, (2, 2), None)
     v1 = vt[0] if vt[0][np.argmax(np.abs(vt[0]))] > 0 else -vt[0]  # a deterministic sign
@@ -360,4 +392,4 @@ def svd_steps(A: Any) -> SVDSteps:
     perpendicular = np.array([-u[1, 0], u[0, 0]])
     flip = s[1] > tol and float(perpendicular @ (array @ v[:, 1])) < 0
     u[:, 1] = -perpendicular if flip else perpendicular  # σ2 = 0: U a rotation too
-    return SVDSteps(V=v, Sigma=np.diag(s), U=u)
+    return SVDSteps(V=v, Sigma=np.diag(np.ldexp(s, exponent)), U=u)

@@ -11,7 +11,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 import pgsym.numeric as pn
-from pgsym.errors import DimensionError, NonNumericError, ObjectTypeError, ZeroVectorError
+from pgsym.errors import DimensionError, NonFiniteError, NonNumericError, ObjectTypeError, ZeroVectorError
 
 small = st.integers(-20, 20)
 
@@ -80,7 +80,7 @@ def test_conversion_errors_are_named():
         pn.from_array([1.0, 2, 3, 4], "point")
     with pytest.raises(ZeroVectorError):
         pn.from_array([[1.0, 2, 3], [0, 0, 0]], "line")
-    with pytest.raises(NonNumericError, match="NaN"):
+    with pytest.raises(NonFiniteError, match="NaN"):
         pn.from_array([np.nan, 1.0, 1.0], "point")
 
 

@@ -10,7 +10,13 @@ import sympy
 from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
-from pgsym.errors import CollinearPointsError, DimensionError
+from pgsym.errors import (
+    CollinearPointsError,
+    DegenerateConfigurationError,
+    DimensionError,
+    IdealPointError,
+    NonFiniteError,
+)
 from pgsym.projective_plane import Point, collinear
 from pgsym.vision.homography import (
     apply_homography,
@@ -131,7 +137,7 @@ def test_dlt_recovers_a_known_homography_to_1e10(seed, n, h33_zero, scale):
     assume(np.linalg.cond(Hs) < 1e6 and np.abs(dst).max() < 1e4 * scale)
     try:
         est = dlt_homography(src, dst)
-    except CollinearPointsError:
+    except DegenerateConfigurationError:  # collinear, or so nearly so (σ ratio ≤ 1e-5) that the DLT refuses
         assume(False)
     assert np.abs(est - normalize_homography(Hs)).max() < 1e-10 * np.linalg.cond(Hs)
     assert reprojection_error(est, src, dst).max() < 1e-10 * max(1.0, np.abs(dst).max())
@@ -213,7 +219,7 @@ def test_all_points_on_one_line_raise():
         (lambda: dlt_homography(np.eye(4, 2), np.eye(5, 2)), DimensionError),
         (lambda: exact_homography([(0, 0)] * 3, [(0, 0)] * 3), DimensionError),
         (lambda: homographies_from_four(np.zeros((2, 3, 2)), np.zeros((2, 3, 2))), DimensionError),
-        (lambda: dlt_homography([[0, 0], [1, 0], [1, 1], [np.nan, 1]], np.eye(4, 2)), DimensionError),
+        (lambda: dlt_homography([[0, 0], [1, 0], [1, 1], [np.nan, 1]], np.eye(4, 2)), NonFiniteError),
     ],
 )
 def test_bad_shapes(call, error):
@@ -223,9 +229,11 @@ def test_bad_shapes(call, error):
 
 def test_empty_batch_and_apply_homography():
     assert homographies_from_four(np.zeros((0, 4, 2)), np.zeros((0, 4, 2))).shape == (0, 3, 3)
-    # a point on the line sent to infinity maps to infinity (no exception)
-    out = apply_homography(np.array(H0, float), [[0.0, 0.0]])
-    assert not np.isfinite(out).all()
+    # a point on the line sent to infinity has no image: a named error, or a mask when asked for
+    with pytest.raises(IdealPointError):
+        apply_homography(np.array(H0, float), [[0.0, 0.0]])
+    out, finite = apply_homography(np.array(H0, float), [[0.0, 0.0]], ideal="mask")
+    assert finite.tolist() == [False] and np.isnan(out).all()
 
 
 def test_numeric_homography_path_does_not_load_sympy():

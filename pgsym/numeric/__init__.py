@@ -12,8 +12,38 @@ does not import SymPy, and neither does any kernel call (the conversions
 Kernels run block by block over the rows, so that their scratch buffers stay in the
 processor cache; pass ``out=`` to reuse an output array.
 
+**Non-finite numbers: one policy for pgsym.numeric and pgsym.vision.**
+
+1. NaN or ±inf in any input (coordinates, matrices, scalar parameters) raises
+   :class:`~pgsym.errors.NonFiniteError`, naming the argument and the first bad entry;
+   so does a finite input whose result overflows float64. No kernel returns NaN or inf
+   that the caller did not ask for.
+2. Batch kernels take ``nonfinite="mask"``: they then return ``(values, finite)``, with the
+   rows that hold NaN or inf set to NaN and ``finite`` False there — the shape of
+   ``dehomogenize(..., ideal="mask")``, which masks ideal points the same way.
+3. Ideal points have no inhomogeneous coordinates or distances: :func:`dehomogenize`,
+   :func:`pgsym.vision.homography.apply_homography` and ``reprojection_error`` raise
+   :class:`~pgsym.errors.IdealPointError` (or mask, with ``ideal="mask"``).
+4. Every decision is scale-free and every tolerance is a named constant in
+   :mod:`pgsym.numeric.tolerances`; transformation matrices are judged after balancing by a
+   change of units (:mod:`pgsym.numeric.conditioning`).
+5. Images are checked by :func:`pgsym.vision.images.check_image`, which raises
+   :class:`~pgsym.errors.ImageError` for NaN or inf pixels.
+
+The check costs one BLAS dot product of each output block with itself while the block is
+in cache (NaN and inf propagate into a sum of squares); only when it is not finite is
+every entry tested.
+
 >>> import numpy as np
 >>> from pgsym import numeric as pn
+>>> pn.join([np.nan, 0, 1], [[1.0, 1, 1], [0, 1, 1]])   # doctest: +ELLIPSIS
+Traceback (most recent call last):
+...
+pgsym.errors.NonFiniteError: join: 2 of the 2 results are NaN or infinite; the first, at index (0,), comes from...
+>>> pn.join([[np.nan, 0, 1], [0, 0, 1]], [1.0, 1, 1], nonfinite="mask")
+(array([[nan, nan, nan],
+       [-1.,  1.,  0.]]), array([False,  True]))
+
 >>> lines = pn.join(np.array([[0.0, 0, 1], [0, 1, 1]]), np.array([[1.0, 1, 1], [1, 1, 1]]))
 >>> pn.dehomogenize(pn.meet(lines, [1.0, 0, -2]))     # where y = x and y = 1 cross x = 2
 array([[2., 2.],

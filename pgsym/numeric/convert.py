@@ -21,7 +21,7 @@ from typing import Any
 
 import numpy as np
 
-from ..errors import DimensionError, NonNumericError, ObjectTypeError
+from ..errors import DimensionError, NonFiniteError, NonNumericError, ObjectTypeError
 from ._arrays import as_float_array
 
 __all__ = ["KINDS", "from_array", "to_array"]
@@ -50,12 +50,21 @@ def _floats(values: Any, obj: Any) -> list[float]:
         ) from err
 
 
+def _finite(a: np.ndarray, obj: Any) -> np.ndarray:
+    if not np.isfinite(a).all():
+        raise NonFiniteError(
+            f"to_array: {obj!r} has coordinates beyond the float64 range (about 1.8e308); divide them by a common "
+            "factor first, which changes nothing projectively"
+        )
+    return a
+
+
 def _one(obj: Any) -> np.ndarray:
     if hasattr(obj, "coords"):
-        return np.array(_floats(obj.coords, obj))
+        return _finite(np.array(_floats(obj.coords, obj)), obj)
     if hasattr(obj, "matrix"):
         m = obj.matrix
-        return np.array(_floats(list(m), obj)).reshape(m.shape)
+        return _finite(np.array(_floats(list(m), obj)).reshape(m.shape), obj)
     raise ObjectTypeError(
         f"to_array expects pgsym objects (points, lines, planes, Line3, conics, quadrics, transformations), "
         f"got {type(obj).__name__} {obj!r}"
@@ -105,7 +114,7 @@ def from_array(array: Any, kind: str | type) -> Any:
     cls = getattr(importlib.import_module(f"pgsym.{module}"), cls_name)
     a = as_float_array(array, "array", "from_array")
     if not np.all(np.isfinite(a)):
-        raise NonNumericError("from_array: the array holds NaN or infinity, which no exact object has")
+        raise NonFiniteError("from_array: the array holds NaN or infinity, which no exact object has")
     if shape == (0, 0):
         shape = a.shape[-2:] if a.ndim >= 2 and a.shape[-1] == a.shape[-2] else (-1, -1)
     if a.ndim < len(shape) or a.shape[a.ndim - len(shape) :] != shape:

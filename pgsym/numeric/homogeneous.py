@@ -4,7 +4,9 @@ A point ``(x1, …, xk, w)`` with ``w = 0`` is ideal: it has no inhomogeneous
 coordinates. :func:`dehomogenize` never divides by such a ``w``: it raises
 :class:`~pgsym.errors.IdealPointError`, or, with ``ideal="mask"``, returns the finite
 points together with a boolean mask and fills the rows of ideal points with ``fill``
-(NaN by default), so no infinity or NaN appears without the caller asking for it.
+(NaN by default), so no infinity or NaN appears without the caller asking for it. A NaN or
+infinite input coordinate is no point at all: it raises :class:`~pgsym.errors.NonFiniteError`,
+or with ``nonfinite="mask"`` is masked like an ideal point.
 
 >>> import numpy as np
 >>> dehomogenize(np.array([[2.0, 4, 2], [1, 1, 0]]), ideal="mask")
@@ -18,8 +20,9 @@ from typing import Any
 
 import numpy as np
 
-from ..errors import DimensionError, IdealPointError
-from ._arrays import as_float_array, check_option
+from ..errors import DimensionError, IdealPointError, NonFiniteError
+from ._arrays import NONFINITE, as_float_array, check_option
+from .conditioning import require_finite
 
 __all__ = ["dehomogenize", "homogenize", "is_ideal"]
 
@@ -31,7 +34,9 @@ def homogenize(x: Any, w: float = 1.0, *, axis: int = -1) -> np.ndarray:
     array([[1., 2., 1.],
            [3., 4., 1.]])
     """
-    a = as_float_array(x, "x", "homogenize")
+    a = require_finite(as_float_array(x, "x", "homogenize"), "x", "homogenize")
+    if not np.isfinite(w):
+        raise NonFiniteError(f"homogenize: w must be a finite number, got {w}")
     if a.ndim == 0:
         raise DimensionError("homogenize: x must be an array of points (shape (..., k)), got a scalar")
     a = np.moveaxis(a, axis, -1)
@@ -47,7 +52,7 @@ def is_ideal(x: Any, *, rtol: float = 0.0, axis: int = -1) -> np.ndarray:
     >>> is_ideal([[1.0, 2, 0], [1, 2, 1e-17]]), is_ideal([[1.0, 2, 0], [1, 2, 1e-17]], rtol=1e-12)
     (array([ True, False]), array([ True,  True]))
     """
-    a = np.moveaxis(as_float_array(x, "x", "is_ideal"), axis, -1)
+    a = np.moveaxis(require_finite(as_float_array(x, "x", "is_ideal"), "x", "is_ideal"), axis, -1)
     if a.ndim == 0 or a.shape[-1] < 2:
         raise DimensionError(f"is_ideal: x must hold at least 2 homogeneous coordinates, got shape {a.shape}")
     w = np.abs(a[..., -1])
@@ -57,7 +62,7 @@ def is_ideal(x: Any, *, rtol: float = 0.0, axis: int = -1) -> np.ndarray:
 
 
 def dehomogenize(
-    x: Any, *, ideal: str = "raise", rtol: float = 0.0, fill: float = np.nan, axis: int = -1
+    x: Any, *, ideal: str = "raise", rtol: float = 0.0, fill: float = np.nan, axis: int = -1, nonfinite: str = "raise"
 ) -> np.ndarray | tuple[np.ndarray, np.ndarray]:
     """The inhomogeneous coordinates ``(x1/w, …, xk/w)`` of an array of points ``(..., k + 1)``.
 
@@ -66,7 +71,9 @@ def dehomogenize(
     ``ideal="raise"`` (default) any ideal point raises
     :class:`~pgsym.errors.IdealPointError`, naming how many there are and the first one.
     With ``ideal="mask"`` the result is ``(coords, finite)``: ``finite`` is False for
-    ideal points, whose rows of ``coords`` hold ``fill``.
+    ideal points, whose rows of ``coords`` hold ``fill``. A point with a NaN or infinite
+    coordinate raises :class:`~pgsym.errors.NonFiniteError`; with ``nonfinite="mask"`` it is
+    masked (and filled) in the same way, and the result is ``(coords, finite)`` whatever ``ideal`` is.
 
     >>> dehomogenize([[2.0, 4, 2], [3, 3, 3]])
     array([[1., 2.],
@@ -77,8 +84,18 @@ def dehomogenize(
     pgsym.errors.IdealPointError: dehomogenize: 1 of the 2 points is ideal (w = 0), the first at index (1,)...
     """
     check_option(ideal, ("raise", "mask"), "ideal", "dehomogenize")
+    check_option(nonfinite, NONFINITE, "nonfinite", "dehomogenize")
     a = np.moveaxis(as_float_array(x, "x", "dehomogenize"), axis, -1)
-    bad = is_ideal(a, rtol=rtol)
+    if a.ndim == 0 or a.shape[-1] < 2:
+        raise DimensionError(f"dehomogenize: x must hold at least 2 homogeneous coordinates, got shape {a.shape}")
+    if nonfinite == "raise":
+        require_finite(a, "x", "dehomogenize")
+        input_ok = np.ones(a.shape[:-1], bool)
+    else:
+        input_ok = np.isfinite(a).all(axis=-1)
+    with np.errstate(invalid="ignore"):
+        bad = ~input_ok | (np.abs(a[..., -1]) <= rtol * np.max(np.abs(a), axis=-1) if rtol else a[..., -1] == 0)
+    ideal_only = bad & input_ok
     w = a[..., -1:]
     coords = np.full((*a.shape[:-1], a.shape[-1] - 1), fill)
     with np.errstate(over="ignore"):
@@ -86,14 +103,16 @@ def dehomogenize(
     overflow = ~bad & ~np.all(np.isfinite(coords), axis=-1)
     if overflow.any():
         bad = bad | overflow
+        ideal_only = ideal_only | overflow
         coords[overflow] = fill
-    if ideal == "raise" and bad.any():
-        first = tuple(int(i) for i in np.argwhere(bad)[0])
-        verb = "is" if bad.sum() == 1 else "are"
+    if ideal == "raise" and ideal_only.any():
+        first = tuple(int(i) for i in np.argwhere(ideal_only)[0])
+        verb = "is" if ideal_only.sum() == 1 else "are"
         raise IdealPointError(
-            f"dehomogenize: {int(bad.sum())} of the {bad.size} points {verb} ideal (w = 0), the first at index "
+            f"dehomogenize: {int(ideal_only.sum())} of the {bad.size} points {verb} ideal (w = 0), the first at index "
             f"{first}: {a[first].tolist()}; ideal points have no inhomogeneous coordinates. Pass ideal='mask' "
             "to get the finite ones with a mask, or keep homogeneous coordinates"
         )
     coords = np.moveaxis(coords, -1, axis)
-    return (coords, np.asarray(~bad)) if ideal == "mask" else coords
+    masked = ideal == "mask" or nonfinite == "mask"
+    return (coords, np.asarray(~bad)) if masked else coords

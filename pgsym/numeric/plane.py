@@ -25,6 +25,8 @@ import numpy as np
 
 from ..errors import DimensionError
 from ._arrays import as_float_array, rowwise
+from .conditioning import require_finite
+from .tolerances import INCIDENT_RTOL
 
 __all__ = ["cross", "incident", "is_zero_vector", "join", "meet"]
 
@@ -41,7 +43,9 @@ def _cross_kernel(ins: list[np.ndarray], o: np.ndarray, ws: list[np.ndarray]) ->
         np.subtract(oi, t, out=oi)
 
 
-def cross(u: Any, v: Any, *, out: np.ndarray | None = None, axis: int = -1) -> np.ndarray:
+def cross(
+    u: Any, v: Any, *, out: np.ndarray | None = None, axis: int = -1, nonfinite: str = "raise"
+) -> Any:
     """The cross products ``u × v`` of broadcast arrays of 3-vectors.
 
     ``out`` (optional) receives the result; ``axis`` is the component axis (0 for a
@@ -54,20 +58,24 @@ def cross(u: Any, v: Any, *, out: np.ndarray | None = None, axis: int = -1) -> n
            [-1.,  0.],
            [ 0.,  0.]])
     """
-    return rowwise(_cross_kernel, "cross", [(u, 3, "u"), (v, 3, "v")], 3, out, axis, 1)
+    return rowwise(_cross_kernel, "cross", [(u, 3, "u"), (v, 3, "v")], 3, out, axis, 1, nonfinite)
 
 
-def join(p: Any, q: Any, *, out: np.ndarray | None = None, axis: int = -1) -> np.ndarray:
+def join(
+    p: Any, q: Any, *, out: np.ndarray | None = None, axis: int = -1, nonfinite: str = "raise"
+) -> Any:
     """The lines ``p × q`` through pairs of points of P² (the numeric :func:`pgsym.projective_plane.join`).
 
     >>> join([0.0, 0, 1], [[1.0, 1, 1], [1, 0, 0]])   # y = x, and the x-axis through an ideal point
     array([[-1.,  1.,  0.],
            [ 0.,  1.,  0.]])
     """
-    return rowwise(_cross_kernel, "join", [(p, 3, "p"), (q, 3, "q")], 3, out, axis, 1)
+    return rowwise(_cross_kernel, "join", [(p, 3, "p"), (q, 3, "q")], 3, out, axis, 1, nonfinite)
 
 
-def meet(l: Any, m: Any, *, out: np.ndarray | None = None, axis: int = -1) -> np.ndarray:
+def meet(
+    l: Any, m: Any, *, out: np.ndarray | None = None, axis: int = -1, nonfinite: str = "raise"
+) -> Any:
     """The points ``l × m`` where pairs of lines of P² meet (the numeric :func:`pgsym.projective_plane.meet`).
 
     Parallel lines meet in an ideal point (last coordinate 0):
@@ -75,10 +83,10 @@ def meet(l: Any, m: Any, *, out: np.ndarray | None = None, axis: int = -1) -> np
     >>> meet([1.0, -1, 0], [1.0, -1, 3])
     array([-3., -3.,  0.])
     """
-    return rowwise(_cross_kernel, "meet", [(l, 3, "l"), (m, 3, "m")], 3, out, axis, 1)
+    return rowwise(_cross_kernel, "meet", [(l, 3, "l"), (m, 3, "m")], 3, out, axis, 1, nonfinite)
 
 
-def incident(x: Any, y: Any, *, rtol: float = 1e-10, axis: int = -1) -> np.ndarray:
+def incident(x: Any, y: Any, *, rtol: float = INCIDENT_RTOL, axis: int = -1) -> np.ndarray:
     """True where ``x`` and ``y`` are incident: ``|x · y| ≤ rtol |x| |y|``.
 
     Works in any dimension: a point and a line of P², a point and a plane of P³. The test
@@ -90,14 +98,18 @@ def incident(x: Any, y: Any, *, rtol: float = 1e-10, axis: int = -1) -> np.ndarr
     >>> incident([1.0, 1, 1], [1.0, -1, 1e-12]), incident([1.0, 1, 1], [1.0, -1, 1e-12], rtol=0)
     (array(True), array(False))
     """
-    a = as_float_array(x, "x", "incident")
-    b = as_float_array(y, "y", "incident")
+    a = require_finite(as_float_array(x, "x", "incident"), "x", "incident")
+    b = require_finite(as_float_array(y, "y", "incident"), "y", "incident")
     if a.ndim == 0 or b.ndim == 0 or a.shape[axis] != b.shape[axis]:
         raise DimensionError(
             f"incident: x and y need the same number of homogeneous coordinates along axis {axis}, "
             f"got shapes {a.shape} and {b.shape}"
         )
     a, b = np.moveaxis(a, axis, -1), np.moveaxis(b, axis, -1)
+    # each vector scaled by the power of two nearest its largest entry (exact, and projectively nothing),
+    # so that no square overflows or underflows
+    a = np.ldexp(a, -np.frexp(np.max(np.abs(a), axis=-1, keepdims=True))[1])
+    b = np.ldexp(b, -np.frexp(np.max(np.abs(b), axis=-1, keepdims=True))[1])
     dot = np.einsum("...i,...i->...", a, b)
     bound = rtol * np.sqrt(np.einsum("...i,...i->...", a, a) * np.einsum("...i,...i->...", b, b))
     return np.asarray(np.abs(dot) <= bound)
@@ -111,5 +123,5 @@ def is_zero_vector(x: Any, *, atol: float = 0.0, axis: int = -1) -> np.ndarray:
     >>> is_zero_vector(join([[1.0, 2, 1], [1, 2, 1]], [[2.0, 4, 2], [0, 0, 1]]))
     array([ True, False])
     """
-    a = np.moveaxis(as_float_array(x, "x", "is_zero_vector"), axis, -1)
+    a = np.moveaxis(require_finite(as_float_array(x, "x", "is_zero_vector"), "x", "is_zero_vector"), axis, -1)
     return np.asarray(np.all(np.abs(a) <= atol, axis=-1))

@@ -17,7 +17,7 @@ from typing import Any
 import numpy as np
 
 from ..errors import DimensionError
-from ._arrays import as_float_array, rowwise
+from ._arrays import as_float_array, nonfinite_result, rowwise
 
 __all__ = ["klein_form", "plucker_join", "plucker_meet"]
 
@@ -38,7 +38,9 @@ def _reversed_wedge_kernel(ins: list[np.ndarray], o: np.ndarray, ws: list[np.nda
     _wedge_kernel(ins, o[..., ::-1], ws)
 
 
-def plucker_join(a: Any, b: Any, *, out: np.ndarray | None = None, axis: int = -1) -> np.ndarray:
+def plucker_join(
+    a: Any, b: Any, *, out: np.ndarray | None = None, axis: int = -1, nonfinite: str = "raise"
+) -> Any:
     """Plücker coordinates ``(l12, l13, l14, l23, l42, l34)`` of the lines through pairs of points.
 
     Equal to ``Line3.join(A, B).coordinates`` on the same data; coincident points give zeros.
@@ -46,16 +48,18 @@ def plucker_join(a: Any, b: Any, *, out: np.ndarray | None = None, axis: int = -
     >>> plucker_join([[0.0, 0, 0, 1]], [[1.0, 2, 3, 0]])   # through the origin, direction (1, 2, 3)
     array([[ 0.,  0., -1.,  0.,  2., -3.]])
     """
-    return rowwise(_wedge_kernel, "plucker_join", [(a, 4, "a"), (b, 4, "b")], 6, out, axis, 1)
+    return rowwise(_wedge_kernel, "plucker_join", [(a, 4, "a"), (b, 4, "b")], 6, out, axis, 1, nonfinite)
 
 
-def plucker_meet(p: Any, q: Any, *, out: np.ndarray | None = None, axis: int = -1) -> np.ndarray:
+def plucker_meet(
+    p: Any, q: Any, *, out: np.ndarray | None = None, axis: int = -1, nonfinite: str = "raise"
+) -> Any:
     """Plücker coordinates of the lines where pairs of planes meet (``Line3.meet(P, Q).coordinates``).
 
     >>> plucker_meet([0.0, 1, 0, 0], [0.0, 0, 1, 0])      # y = 0 and z = 0: the x-axis again
     array([0., 0., 1., 0., 0., 0.])
     """
-    return rowwise(_reversed_wedge_kernel, "plucker_meet", [(p, 4, "p"), (q, 4, "q")], 6, out, axis, 1)
+    return rowwise(_reversed_wedge_kernel, "plucker_meet", [(p, 4, "p"), (q, 4, "q")], 6, out, axis, 1, nonfinite)
 
 
 def klein_form(lines: Any, *, axis: int = -1) -> np.ndarray:
@@ -67,4 +71,8 @@ def klein_form(lines: Any, *, axis: int = -1) -> np.ndarray:
     a = np.moveaxis(as_float_array(lines, "lines", "klein_form"), axis, -1)
     if a.ndim == 0 or a.shape[-1] != 6:
         raise DimensionError(f"klein_form: lines need 6 Plücker coordinates along axis {axis}, got shape {a.shape}")
-    return np.asarray(a[..., 0] * a[..., 5] + a[..., 1] * a[..., 4] + a[..., 2] * a[..., 3])
+    with np.errstate(over="ignore", invalid="ignore"):
+        form = np.asarray(a[..., 0] * a[..., 5] + a[..., 1] * a[..., 4] + a[..., 2] * a[..., 3])
+    if not np.isfinite(np.sum(form)):
+        nonfinite_result(form, np.isfinite(form), "raise", "klein_form", [a])
+    return form

@@ -22,7 +22,7 @@ from typing import Any
 import numpy as np
 
 from ..errors import UndefinedCrossRatioError
-from ._arrays import check_option, rowwise
+from ._arrays import check_option, nonfinite_result, rowwise
 
 __all__ = ["bracket", "cross_ratio", "cross_ratio_homogeneous"]
 
@@ -34,13 +34,15 @@ def _bracket_kernel(ins: list[np.ndarray], o: np.ndarray, ws: list[np.ndarray]) 
     np.subtract(o, ws[0], out=o)
 
 
-def bracket(p: Any, q: Any, *, out: np.ndarray | None = None, axis: int = -1) -> np.ndarray:
+def bracket(
+    p: Any, q: Any, *, out: np.ndarray | None = None, axis: int = -1, nonfinite: str = "raise"
+) -> Any:
     """The brackets ``[P Q] = p1 q2 − p2 q1``: zero exactly where ``P`` and ``Q`` coincide.
 
     >>> bracket([[5.0, 1], [1, 0]], [[2.0, 1], [7, 1]])
     array([3., 1.])
     """
-    return rowwise(_bracket_kernel, "bracket", [(p, 2, "p"), (q, 2, "q")], None, out, axis, 1)
+    return rowwise(_bracket_kernel, "bracket", [(p, 2, "p"), (q, 2, "q")], None, out, axis, 1, nonfinite)
 
 
 def _ratio_kernel(ins: list[np.ndarray], o: np.ndarray, ws: list[np.ndarray]) -> None:
@@ -55,14 +57,14 @@ def _ratio_kernel(ins: list[np.ndarray], o: np.ndarray, ws: list[np.ndarray]) ->
     np.multiply(den, y, out=den)
 
 
-def cross_ratio_homogeneous(a: Any, b: Any, c: Any, d: Any, *, axis: int = -1) -> np.ndarray:
+def cross_ratio_homogeneous(a: Any, b: Any, c: Any, d: Any, *, axis: int = -1, nonfinite: str = "raise") -> Any:
     """The pairs ``([A C][B D], [A D][B C])``: the cross-ratio as a point of P¹, defined unless both are 0.
 
     >>> cross_ratio_homogeneous([0.0, 1], [1.0, 1], [1.0, 1], [2.0, 1]) + 0.0   # B = C: the value ∞ = (1, 0)
     array([1., 0.])
     """
     inputs = [(a, 2, "a"), (b, 2, "b"), (c, 2, "c"), (d, 2, "d")]
-    return rowwise(_ratio_kernel, "cross_ratio", inputs, 2, None, axis, 2)
+    return rowwise(_ratio_kernel, "cross_ratio", inputs, 2, None, axis, 2, nonfinite)
 
 
 def cross_ratio(
@@ -96,5 +98,9 @@ def cross_ratio(
             "pass undefined='mask' (values and a mask) or use cross_ratio_homogeneous (the value as a point of P¹)"
         )
     values = np.full(num.shape, np.nan)
-    np.divide(num, den, out=values, where=~bad)
+    with np.errstate(over="ignore"):
+        np.divide(num, den, out=values, where=~bad)
+    overflow = ~bad & ~np.isfinite(values)
+    if overflow.any():  # a tiny nonzero denominator: the value exceeds float64, report it rather than return inf
+        nonfinite_result(values, ~overflow, "raise", "cross_ratio")
     return (values, np.asarray(~bad)) if undefined == "mask" else values

@@ -48,16 +48,21 @@ def _triple_cross_kernel(ins: list[np.ndarray], o: np.ndarray, ws: list[np.ndarr
         (np.add if sign > 0 else np.subtract)(oi, t, out=oi)
 
 
-def triple_cross(u: Any, v: Any, w: Any, *, out: np.ndarray | None = None, axis: int = -1) -> np.ndarray:
+def triple_cross(
+    u: Any, v: Any, w: Any, *, out: np.ndarray | None = None, axis: int = -1, nonfinite: str = "raise"
+) -> Any:
     """The vectors ``n`` with ``n · x = det[x; u; v; w]`` (the numeric :func:`pgsym.space.triple_cross`).
 
     >>> triple_cross([1.0, 0, 0, 0], [0.0, 1, 0, 0], [0.0, 0, 1, 0])
     array([ 0.,  0.,  0., -1.])
     """
-    return rowwise(_triple_cross_kernel, "triple_cross", [(u, 4, "u"), (v, 4, "v"), (w, 4, "w")], 4, out, axis, 7)
+    inputs = [(u, 4, "u"), (v, 4, "v"), (w, 4, "w")]
+    return rowwise(_triple_cross_kernel, "triple_cross", inputs, 4, out, axis, 7, nonfinite)
 
 
-def plane_through(p: Any, q: Any, r: Any, *, out: np.ndarray | None = None, axis: int = -1) -> np.ndarray:
+def plane_through(
+    p: Any, q: Any, r: Any, *, out: np.ndarray | None = None, axis: int = -1, nonfinite: str = "raise"
+) -> Any:
     """The planes through triples of points of P³ (zero where the points are collinear).
 
     >>> from pgsym.numeric import is_zero_vector
@@ -65,13 +70,17 @@ def plane_through(p: Any, q: Any, r: Any, *, out: np.ndarray | None = None, axis
     >>> planes[0], is_zero_vector(planes)                      # the plane z = 0; then collinear points
     (array([0., 0., 1., 0.]), array([False,  True]))
     """
-    return rowwise(_triple_cross_kernel, "plane_through", [(p, 4, "p"), (q, 4, "q"), (r, 4, "r")], 4, out, axis, 7)
+    inputs = [(p, 4, "p"), (q, 4, "q"), (r, 4, "r")]
+    return rowwise(_triple_cross_kernel, "plane_through", inputs, 4, out, axis, 7, nonfinite)
 
 
-def point_on_planes(a: Any, b: Any, c: Any, *, out: np.ndarray | None = None, axis: int = -1) -> np.ndarray:
+def point_on_planes(
+    a: Any, b: Any, c: Any, *, out: np.ndarray | None = None, axis: int = -1, nonfinite: str = "raise"
+) -> Any:
     """The points where triples of planes of P³ meet (zero where the planes share a line).
 
     >>> point_on_planes([1.0, 0, 0, -1], [0.0, 1, 0, -2], [0.0, 0, 1, -3])   # (1, 2, 3), up to scale
     array([-1., -2., -3., -1.])
     """
-    return rowwise(_triple_cross_kernel, "point_on_planes", [(a, 4, "a"), (b, 4, "b"), (c, 4, "c")], 4, out, axis, 7)
+    inputs = [(a, 4, "a"), (b, 4, "b"), (c, 4, "c")]
+    return rowwise(_triple_cross_kernel, "point_on_planes", inputs, 4, out, axis, 7, nonfinite)

@@ -9,7 +9,12 @@ rules (``H`` the matrix, ``adj(H) = det(H) H⁻¹`` its adjugate, equality up to
 
 The adjugate is computed from cofactors (cross products in P², :func:`triple_cross` in
 P³), so no inverse is formed and no scale is fixed, exactly as in the exact core. A
-singular ``H`` raises :class:`~pgsym.errors.SingularTransformationError`.
+singular ``H`` raises :class:`~pgsym.errors.SingularTransformationError`: singular means
+``σ_min ≤ rtol · σ_max`` for ``H`` balanced by a change of units
+(:func:`pgsym.numeric.conditioning.singular`, ``rtol`` defaults to
+:data:`~pgsym.numeric.tolerances.SINGULAR_RTOL`), so the verdict does not depend on the
+units of the coordinates. NaN or infinity in ``H``, in the data or in a result raises
+:class:`~pgsym.errors.NonFiniteError` (``nonfinite="mask"`` on the point, line and plane maps).
 
 >>> import numpy as np
 >>> H = np.array([[0.0, -1, 0], [1, 0, 0], [0, 0, 1]])          # rotation by 90°
@@ -23,10 +28,12 @@ from typing import Any
 
 import numpy as np
 
-from ..errors import DimensionError, SingularTransformationError
-from ._arrays import CHUNK, as_float_array
+from ..errors import DimensionError, NonFiniteError, SingularTransformationError
+from ._arrays import CHUNK, NONFINITE, as_float_array, block_finite, check_option, nonfinite_result
+from .conditioning import require_finite, singular
 from .plane import cross
 from .space import triple_cross
+from .tolerances import SINGULAR_RTOL
 
 __all__ = [
     "adjugate",
@@ -44,7 +51,7 @@ def _square(H: Any, function: str, sizes: tuple[int, ...] = (2, 3, 4)) -> np.nda
     if h.ndim < 2 or h.shape[-1] != h.shape[-2] or h.shape[-1] not in sizes:
         wanted = " or ".join(f"{k}×{k}" for k in sizes)
         raise DimensionError(f"{function}: H must be a {wanted} matrix (or a stack of them), got shape {h.shape}")
-    return h
+    return require_finite(h, "H", function)
 
 
 def adjugate(H: Any) -> np.ndarray:
@@ -56,6 +63,9 @@ def adjugate(H: Any) -> np.ndarray:
            [0., 0., 6.]])
     """
     h = _square(H, "adjugate")
+    # the cofactors of a balanced matrix cannot overflow; undo the (exact, power-of-two) overall scale at the end
+    exponent = np.frexp(np.max(np.abs(h), axis=(-2, -1)))[1]
+    h = np.ldexp(h, -exponent[..., None, None])
     k = h.shape[-1]
     cof = np.empty(h.shape)
     if k == 2:
@@ -70,26 +80,53 @@ def adjugate(H: Any) -> np.ndarray:
             triple_cross(h[..., others[0], :], h[..., others[1], :], h[..., others[2], :], out=cof[..., i, :])
             if i % 2:
                 np.negative(cof[..., i, :], out=cof[..., i, :])
-    return np.swapaxes(cof, -1, -2)
+    with np.errstate(over="ignore"):
+        adj = np.ldexp(np.swapaxes(cof, -1, -2), ((k - 1) * exponent)[..., None, None])
+    return _finite_result(adj, "adjugate", "the adjugate")
+
+
+def _finite_result(r: np.ndarray, function: str, what: str) -> np.ndarray:
+    """``r`` when finite; NonFiniteError when its entries overflow float64 (the inputs were finite)."""
+    with np.errstate(over="ignore", invalid="ignore"):
+        if np.isfinite(np.sum(r)):
+            return r
+    if np.isfinite(r).all():
+        return r
+    raise NonFiniteError(
+        f"{function}: {what} overflows float64 (entries beyond about 1.8e308); rescale the input, e.g. divide "
+        "the matrix by its largest entry, which changes nothing projectively"
+    )
 
 
 def _checked(H: Any, function: str, k: int, rtol: float) -> tuple[np.ndarray, np.ndarray]:
-    """The matrix and its adjugate; SingularTransformationError where ``|det H| ≤ rtol ∏ |rows of H|``."""
+    """The matrix and its adjugate; SingularTransformationError where the balanced ``σ_min ≤ rtol σ_max``."""
     h = _square(H, function, (k,))
-    adj = adjugate(h)
-    det = np.einsum("...j,...j->...", h[..., 0, :], adj[..., :, 0])
-    bound = rtol * np.prod(np.linalg.norm(h, axis=-1), axis=-1)
-    if np.any(np.abs(det) <= bound):
+    if np.any(singular(h, rtol)):
         raise SingularTransformationError(
-            f"{function}: the transformation matrix is singular (det H = 0 up to rtol={rtol}), so it maps the "
-            "plane or space onto a lower-dimensional set and has no action on lines, planes or conics; "
+            f"{function}: the transformation matrix is singular (σ_min ≤ {rtol} σ_max, in balanced units), so it "
+            "maps the plane or space onto a lower-dimensional set and has no action on lines, planes or conics; "
             "check the matrix, or lower rtol if it is merely ill-conditioned"
         )
-    return h, adj
+    return h, adjugate(h)
 
 
-def _apply(M: np.ndarray, x: Any, function: str, what: str, out: np.ndarray | None, axis: int) -> np.ndarray:
-    """The vectors ``M x`` for an array ``x`` of ``(..., k)`` vectors; one matrix is applied block by block."""
+def _apply(
+    M: np.ndarray, x: Any, function: str, what: str, out: np.ndarray | None, axis: int, nonfinite: str
+) -> Any:
+    """The vectors ``M x`` for an array ``x`` of ``(..., k)`` vectors, finite or masked (see :func:`_matvec`)."""
+    check_option(nonfinite, NONFINITE, "nonfinite", function)
+    result, suspect = _matvec(M, x, function, what, out, axis)
+    if not suspect and nonfinite == "raise":
+        return result
+    moved = np.moveaxis(result, axis, -1)
+    finite = np.isfinite(moved).all(axis=-1)
+    a = np.moveaxis(as_float_array(x, what, function), axis, -1)
+    checked = nonfinite_result(moved, finite, nonfinite, function, [a])
+    return (result, checked[1]) if nonfinite == "mask" else result
+
+
+def _matvec(M: np.ndarray, x: Any, function: str, what: str, out: np.ndarray | None, axis: int) -> tuple[Any, bool]:
+    """``M x`` block by block, and whether a NaN or infinity may be in it (one sum per block, in cache)."""
     k = M.shape[-1]
     a = as_float_array(x, what, function)
     if a.ndim == 0 or not -a.ndim <= axis < a.ndim or a.shape[axis] != k:
@@ -98,11 +135,17 @@ def _apply(M: np.ndarray, x: Any, function: str, what: str, out: np.ndarray | No
             f"got an array of shape {a.shape}"
         )
     if M.ndim == 2 and a.ndim == 2 and axis in (0, -2):
-        # component-major (k, N): one matrix product, already in the right layout
-        if out is None:
-            return M @ a
-        np.matmul(M, a, out=out)
-        return out
+        # component-major (k, N): matrix products over column blocks, each checked while in cache
+        result = np.empty(a.shape) if out is None else out
+        if result.shape != a.shape:
+            raise DimensionError(f"{function}: out has shape {result.shape}, the result has shape {a.shape}")
+        suspect = False
+        with np.errstate(over="ignore", invalid="ignore"):
+            for start in range(0, a.shape[1], CHUNK):
+                block = result[:, start : start + CHUNK]
+                np.matmul(M, a[:, start : start + CHUNK], out=block)
+                suspect = suspect or not _sum_finite(block.T)  # components on the last axis
+        return result, suspect
     a = np.moveaxis(a, axis, -1)
     fast_out = out is None or out.flags.c_contiguous
     if M.ndim == 2 and a.ndim == 2 and a.flags.c_contiguous and fast_out:
@@ -110,20 +153,30 @@ def _apply(M: np.ndarray, x: Any, function: str, what: str, out: np.ndarray | No
         if result.shape != a.shape:
             raise DimensionError(f"{function}: out has shape {result.shape}, the result has shape {a.shape}")
         mt = np.ascontiguousarray(M.T)
-        for start in range(0, a.shape[0], CHUNK):  # block by block: the product stays in cache
-            np.dot(a[start : start + CHUNK], mt, out=result[start : start + CHUNK])
-        return result
-    product = np.matmul(M, a[..., None])[..., 0]
+        suspect = False
+        with np.errstate(over="ignore", invalid="ignore"):
+            for start in range(0, a.shape[0], CHUNK):  # block by block: the product stays in cache
+                block = result[start : start + CHUNK]
+                np.dot(a[start : start + CHUNK], mt, out=block)
+                suspect = suspect or not _sum_finite(block)
+        return result, suspect
+    with np.errstate(over="ignore", invalid="ignore"):
+        product = np.matmul(M, a[..., None])[..., 0]
     product = np.moveaxis(product, -1, axis)
     if out is None:
-        return product
+        return product, not _sum_finite(product)
     np.copyto(out, product)
-    return out
+    return out, not _sum_finite(out)
+
+
+def _sum_finite(block: np.ndarray) -> bool:
+    return block.size == 0 or block_finite(block)
 
 
 def transform_points(
-    H: Any, x: Any, *, out: np.ndarray | None = None, axis: int = -1, rtol: float = 1e-13
-) -> np.ndarray:
+    H: Any, x: Any, *, out: np.ndarray | None = None, axis: int = -1, rtol: float = SINGULAR_RTOL,
+    nonfinite: str = "raise",
+) -> Any:
     """The images ``H x`` of an array of points (P¹, P² or P³: ``H`` is 2×2, 3×3 or 4×4).
 
     ``H`` may also be a stack of matrices that broadcasts against the points.
@@ -134,12 +187,13 @@ def transform_points(
     """
     h = _square(H, "transform_points")
     h, _ = _checked(h, "transform_points", h.shape[-1], rtol)
-    return _apply(h, x, "transform_points", "x", out, axis)
+    return _apply(h, x, "transform_points", "x", out, axis, nonfinite)
 
 
 def transform_lines(
-    H: Any, l: Any, *, out: np.ndarray | None = None, axis: int = -1, rtol: float = 1e-13
-) -> np.ndarray:
+    H: Any, l: Any, *, out: np.ndarray | None = None, axis: int = -1, rtol: float = SINGULAR_RTOL,
+    nonfinite: str = "raise",
+) -> Any:
     """The images ``adj(H)ᵀ l ∝ H⁻ᵀ l`` of an array of lines of P² under the point map ``H`` (3×3).
 
     >>> H = np.array([[1.0, 2, 0], [0, 1, 0], [0, 0, 1]])
@@ -147,12 +201,13 @@ def transform_lines(
     array([-1.,  3.,  0.])
     """
     _, adj = _checked(H, "transform_lines", 3, rtol)
-    return _apply(np.swapaxes(adj, -1, -2), l, "transform_lines", "l", out, axis)
+    return _apply(np.swapaxes(adj, -1, -2), l, "transform_lines", "l", out, axis, nonfinite)
 
 
 def transform_planes(
-    H: Any, planes: Any, *, out: np.ndarray | None = None, axis: int = -1, rtol: float = 1e-13
-) -> np.ndarray:
+    H: Any, planes: Any, *, out: np.ndarray | None = None, axis: int = -1, rtol: float = SINGULAR_RTOL,
+    nonfinite: str = "raise",
+) -> Any:
     """The images ``adj(H)ᵀ π ∝ H⁻ᵀ π`` of an array of planes of P³ under the point map ``H`` (4×4).
 
     >>> H = np.diag([1.0, 1, 1, 1]); H[2, 3] = 5                         # translate by 5 along z
@@ -160,17 +215,20 @@ def transform_planes(
     array([ 0.,  0.,  1., -5.])
     """
     _, adj = _checked(H, "transform_planes", 4, rtol)
-    return _apply(np.swapaxes(adj, -1, -2), planes, "transform_planes", "planes", out, axis)
+    return _apply(np.swapaxes(adj, -1, -2), planes, "transform_planes", "planes", out, axis, nonfinite)
 
 
 def _congruence(A: np.ndarray, C: Any, function: str, k: int) -> np.ndarray:
     c = as_float_array(C, "C", function)
     if c.ndim < 2 or c.shape[-2:] != (k, k):
         raise DimensionError(f"{function}: C must be a {k}×{k} matrix (or a stack of them), got shape {c.shape}")
-    return np.matmul(np.matmul(np.swapaxes(A, -1, -2), c), A)
+    require_finite(c, "C", function)
+    with np.errstate(over="ignore", invalid="ignore"):
+        image = np.matmul(np.matmul(np.swapaxes(A, -1, -2), c), A)
+    return _finite_result(image, function, "the transformed matrix")
 
 
-def transform_conics(H: Any, C: Any, *, rtol: float = 1e-13) -> np.ndarray:
+def transform_conics(H: Any, C: Any, *, rtol: float = SINGULAR_RTOL) -> np.ndarray:
     """The images ``adj(H)ᵀ C adj(H) ∝ H⁻ᵀ C H⁻¹`` of an array ``(..., 3, 3)`` of conic matrices.
 
     >>> H = np.diag([2.0, 1, 1])                               # stretch x by 2
@@ -183,7 +241,7 @@ def transform_conics(H: Any, C: Any, *, rtol: float = 1e-13) -> np.ndarray:
     return _congruence(adj, C, "transform_conics", 3)
 
 
-def transform_dual_conics(H: Any, C: Any, *, rtol: float = 1e-13) -> np.ndarray:
+def transform_dual_conics(H: Any, C: Any, *, rtol: float = SINGULAR_RTOL) -> np.ndarray:
     """The images ``H C* Hᵀ`` of an array ``(..., 3, 3)`` of dual conic matrices.
 
     >>> transform_dual_conics(np.diag([2.0, 1, 1]), np.diag([1.0, 1, -1]))
@@ -195,7 +253,7 @@ def transform_dual_conics(H: Any, C: Any, *, rtol: float = 1e-13) -> np.ndarray:
     return _congruence(np.swapaxes(h, -1, -2), C, "transform_dual_conics", 3)
 
 
-def transform_quadrics(H: Any, Q: Any, *, rtol: float = 1e-13) -> np.ndarray:
+def transform_quadrics(H: Any, Q: Any, *, rtol: float = SINGULAR_RTOL) -> np.ndarray:
     """The images ``adj(H)ᵀ Q adj(H) ∝ H⁻ᵀ Q H⁻¹`` of an array ``(..., 4, 4)`` of quadric matrices.
 
     >>> H = np.diag([1.0, 1, 1, 1]); H[0, 3] = 1                         # translate by 1 along x

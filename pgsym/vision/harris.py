@@ -33,7 +33,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..errors import ImageError
+from ..errors import ImageError, NonFiniteError
 from .images import check_image
 
 __all__ = ["HarrisResult", "harris", "harris_response"]
@@ -93,6 +93,9 @@ class HarrisResult:
 
 
 def _check_parameters(k: float, sigma: float, threshold: float, min_distance: int) -> None:
+    for name, value in (("k", k), ("sigma", sigma), ("threshold", threshold), ("min_distance", min_distance)):
+        if isinstance(value, (float, np.floating)) and not np.isfinite(value):
+            raise NonFiniteError(f"harris: {name} must be a finite number, got {value}")
     if not (np.isfinite(k) and 0 <= k < 0.25):
         raise ImageError(f"k must lie in [0, 0.25), got {k}; typical values are 0.04 to 0.06")
     if not (np.isfinite(sigma) and sigma > 0):

@@ -28,8 +28,18 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from ..errors import CollinearPointsError, DegenerateConfigurationError, DimensionError
+from ..errors import (
+    CollinearPointsError,
+    DegenerateConfigurationError,
+    DimensionError,
+    InputLimitError,
+    NonFiniteError,
+    SingularTransformationError,
+)
+from ..numeric.conditioning import require_finite
+from ..numeric.homogeneous import dehomogenize
 from ..numeric.plane import cross
+from ..numeric.tolerances import COLLINEAR_RTOL, DLT_EIGEN_GAP_RTOL, DLT_RTOL, DLT_SNAP_RTOL, SINGULAR_RTOL
 
 if TYPE_CHECKING:  # the exact four-point path loads SymPy only when it is used
     import sympy
@@ -46,7 +56,12 @@ __all__ = [
     "reprojection_error",
 ]
 
-_RTOL = 1e-10
+_RTOL = DLT_RTOL
+
+
+def _pow2(x: Any) -> Any:
+    """The power of two nearest above ``|x|`` (1 for 0): dividing by it is exact and brings ``x`` to [0.5, 1)."""
+    return np.ldexp(1.0, np.frexp(x)[1])
 
 
 def _points(points: Any, name: str, min_count: int = 1) -> np.ndarray:
@@ -58,9 +73,7 @@ def _points(points: Any, name: str, min_count: int = 1) -> np.ndarray:
         raise DimensionError(f"{name} must have shape (n, 2) with columns x, y; got shape {p.shape}")
     if p.shape[0] < min_count:
         raise DimensionError(f"{name} needs at least {min_count} points, got {p.shape[0]}")
-    if not np.isfinite(p).all():
-        raise DimensionError(f"{name} contains NaN or infinite coordinates")
-    return p
+    return require_finite(p, name, "homography")
 
 
 def normalize_homography(H: Any) -> np.ndarray:
@@ -71,8 +84,20 @@ def normalize_homography(H: Any) -> np.ndarray:
     >>> normalize_homography(np.diag([-2.0, -2.0, 0.0])).round(6).tolist()
     [[0.707107, 0.0, 0.0], [0.0, 0.707107, 0.0], [0.0, 0.0, 0.0]]
     """
-    H = np.asarray(H, dtype=np.float64)
+    H = require_finite(_matrices(H, "normalize_homography"), "H", "normalize_homography")
     flat = H.reshape(*H.shape[:-2], 9)
+    largest = np.max(np.abs(flat), axis=-1, keepdims=True)
+    if not np.all(largest > 0):
+        raise SingularTransformationError("normalize_homography: the zero matrix is no homography")
+    given = flat
+    flat = flat / _pow2(largest)  # exact; the squares in the norm below can then neither overflow nor vanish
+    if np.any((given != 0) & (np.abs(flat) < 2**53 * np.finfo(np.float64).tiny)):
+        # an entry would end below the normal range once the norm is one: its digits would be lost
+        raise InputLimitError(
+            "normalize_homography: the entries of H span more than the float64 range holds at unit norm (largest/"
+            "smallest beyond about 1e292), so scaling it would flush small entries to zero and change the map; "
+            "this happens when both point sets lie at extreme scales (e.g. 1e200): measure them in units nearer one"
+        )
     norm = np.linalg.norm(flat, axis=-1, keepdims=True)
     idx = np.argmax(np.abs(flat), axis=-1)[..., None]
     sign = np.sign(np.take_along_axis(flat, idx, axis=-1))
@@ -80,31 +105,59 @@ def normalize_homography(H: Any) -> np.ndarray:
     return (flat / (norm * sign)).reshape(H.shape) + 0.0  # + 0.0 turns -0.0 into 0.0
 
 
-def apply_homography(H: Any, points: Any) -> np.ndarray:
-    """Map ``(n, 2)`` points by ``H`` and dehomogenise (points sent to infinity give ``inf``/``nan``).
+def _matrices(H: Any, function: str) -> np.ndarray:
+    try:
+        M = np.asarray(H, dtype=np.float64)
+    except (TypeError, ValueError):
+        raise DimensionError(f"{function}: H must be a 3×3 array of numbers") from None
+    if M.ndim < 2 or M.shape[-2:] != (3, 3):
+        raise DimensionError(f"{function}: H must be a 3×3 matrix (or a stack of them), got shape {M.shape}")
+    return M
+
+
+def apply_homography(H: Any, points: Any, *, ideal: str = "raise") -> Any:
+    """Map ``(n, 2)`` points by ``H`` and dehomogenise, as :func:`pgsym.numeric.dehomogenize` does.
+
+    A point that ``H`` sends to infinity (onto the line ``H`` maps to the line at infinity)
+    raises :class:`~pgsym.errors.IdealPointError`; with ``ideal="mask"`` the result is
+    ``(points, finite)`` with NaN rows where ``finite`` is False. NaN or infinity in ``H`` or
+    the points raises :class:`~pgsym.errors.NonFiniteError`.
 
     >>> apply_homography(np.diag([2.0, 3.0, 1.0]), [[1, 1], [2, 0]]).tolist()
     [[2.0, 3.0], [4.0, 0.0]]
+    >>> apply_homography([[1.0, 0, 0], [0, 1, 0], [1, 0, 0]], [[0, 0], [1, 0]], ideal="mask")[1].tolist()
+    [False, True]
     """
-    H = np.asarray(H, dtype=np.float64)
+    H = require_finite(_matrices(H, "apply_homography"), "H", "apply_homography")
     p = _points(points, "points")
-    q = p @ H[:, :2].T + H[:, 2]
-    with np.errstate(divide="ignore", invalid="ignore"):
-        return q[:, :2] / q[:, 2:3]
+    with np.errstate(over="ignore", invalid="ignore"):
+        q = p @ H[:, :2].T + H[:, 2]
+    return dehomogenize(q, ideal=ideal)
 
 
 def reprojection_error(H: Any, src: Any, dst: Any) -> np.ndarray:
     """Euclidean distances ``|dst_i − H(src_i)|`` in pixels, one per correspondence.
 
+    A source point that ``H`` sends to infinity has no distance: it raises
+    :class:`~pgsym.errors.IdealPointError` (as :func:`apply_homography` does).
+
     >>> reprojection_error(np.eye(3), [[0, 0], [1, 1]], [[0, 0], [1, 2]]).tolist()
     [0.0, 1.0]
     """
-    return np.linalg.norm(apply_homography(H, src) - _points(dst, "dst"), axis=1)
+    with np.errstate(over="ignore", invalid="ignore"):
+        d = np.hypot(*(apply_homography(H, src) - _points(dst, "dst")).T)
+    return require_finite(d, "the distances (they overflow float64)", "reprojection_error")
 
 
 def _normalize(x: np.ndarray, y: np.ndarray, name: str) -> tuple[np.ndarray, np.ndarray, float, float, float]:
-    """Centre and scale coordinates (RMS distance √2); raise when all points lie on one line."""
+    """Centre and scale coordinates (RMS distance √2); raise when all points lie on one line.
+
+    The coordinates are first divided by a power of two near their largest magnitude (exact), so
+    that no sum or square below overflows or underflows for data anywhere in the float64 range.
+    """
     n = len(x)
+    unit = float(_pow2(max(np.abs(x).max(), np.abs(y).max())))
+    x, y = x / unit, y / unit
     cx, cy = x.sum() / n, y.sum() / n
     dx, dy = x - cx, y - cy
     sxx, syy, sxy = float(dx @ dx), float(dy @ dy), float(dx @ dy)
@@ -114,7 +167,7 @@ def _normalize(x: np.ndarray, y: np.ndarray, name: str) -> tuple[np.ndarray, np.
         raise CollinearPointsError(f"the {name} points all lie on one line (or coincide); a homography needs "
                                    "four points, no three of them collinear")
     s = float(np.sqrt(2.0 * n / tr))
-    return dx * s, dy * s, s, float(cx), float(cy)
+    return dx * s, dy * s, s / unit, float(cx) * unit, float(cy) * unit
 
 
 def normalizing_transform(points: Any) -> np.ndarray:
@@ -137,7 +190,7 @@ def _check_no_three_collinear(pn: np.ndarray, name: str) -> None:
         a, b, c = pn[i], pn[j], pn[k]
         area = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])
         scale = max(np.linalg.norm(b - a) * np.linalg.norm(c - a), 1e-300)
-        if abs(area) <= 1e-9 * scale:
+        if abs(area) <= COLLINEAR_RTOL * scale:
             raise CollinearPointsError(
                 f"{name} points {i + 1}, {j + 1} and {k + 1} are collinear; four correspondences determine "
                 "a homography only when no three of the points lie on one line"
@@ -200,7 +253,7 @@ def dlt_homography(src: Any, dst: Any) -> np.ndarray:
             "the correspondences do not determine a unique homography (the DLT system has a "
             "two-dimensional null space); add points in general position"
         )
-    if np.finfo(float).eps * w[-1] > 1e-13 * w[1]:
+    if np.finfo(float).eps * w[-1] > DLT_EIGEN_GAP_RTOL * w[1]:
         # The eigenvector of AᵀA is accurate to about eps · w_max / w_2 (AᵀA squares the condition number
         # of A). When that bound exceeds 1e-13, solve with the SVD of A itself, which is accurate to eps · σ_max / σ_2.
         A = np.zeros((2 * len(x), 9))
@@ -213,12 +266,23 @@ def dlt_homography(src: Any, dst: Any) -> np.ndarray:
         Hn = np.linalg.svd(A, full_matrices=2 * n < 9)[2][-1].reshape(3, 3)
     else:
         Hn = V[:, 0].reshape(3, 3)
-    # H = T'⁻¹ Ĥ T, T = [[s, 0, -s cx], [0, s, -s cy], [0, 0, 1]], T'⁻¹ ∝ [[1, 0, s' cu], [0, 1, s' cv], [0, 0, s']]
-    T = np.array([[s, 0.0, -s * cx], [0.0, s, -s * cy], [0.0, 0.0, 1.0]])
-    Tp_inv = np.array([[1.0, 0.0, sd * cu], [0.0, 1.0, sd * cv], [0.0, 0.0, sd]])
-    H = Tp_inv @ Hn @ T
-    if abs(np.linalg.det(H / np.linalg.norm(H))) < 1e-14:
+    # H = T'⁻¹ Ĥ T, T = [[s, 0, -s cx], [0, s, -s cy], [0, 0, 1]], T'⁻¹ = [[1/s', 0, cu], [0, 1/s', cv], [0, 0, 1]]
+    # (not the integer-looking multiple s' T'⁻¹, whose corner s' overflows for data near 1e-200)
+    # Entries of Ĥ below its rounding error are noise; zero them, which changes Ĥ by less than its own
+    # error, so that denormalising cannot blow noise up (v̂ = 1e-17 becomes 1e183 for data near 1e-200).
+    Hn = np.where(np.abs(Hn) <= DLT_SNAP_RTOL * np.abs(Hn).max(), 0.0, Hn)
+    s_n = np.linalg.svd(Hn, compute_uv=False)  # Ĥ is in the normalised frames: balanced already
+    if s_n[-1] <= SINGULAR_RTOL * s_n[0]:
         raise DegenerateConfigurationError("the estimated homography is singular; the correspondences are degenerate")
+    T = np.array([[s, 0.0, -s * cx], [0.0, s, -s * cy], [0.0, 0.0, 1.0]])
+    Tp_inv = np.array([[1.0 / sd, 0.0, cu], [0.0, 1.0 / sd, cv], [0.0, 0.0, 1.0]])
+    with np.errstate(over="ignore", under="ignore", invalid="ignore"):
+        H = Tp_inv @ Hn @ T
+    if not np.isfinite(H).all():
+        raise NonFiniteError(
+            "dlt_homography: the homography between these point sets has entries beyond the float64 range "
+            "(the two sets differ in scale by more than about 1e300); rescale one of them"
+        )
     return normalize_homography(H)
 
 
@@ -231,6 +295,8 @@ def _as_exact_point(value: Any, name: str, i: int) -> Point:
         coords = tuple(value)
     except TypeError:
         raise DimensionError(f"{name} point {i + 1} must be a Point or a tuple of 2 or 3 coordinates") from None
+    if any(isinstance(c, (float, np.floating)) and not np.isfinite(c) for c in coords):
+        raise NonFiniteError(f"exact_homography: {name} point {i + 1} {coords} has a NaN or infinite coordinate")
     return Point(*coords)
 
 
@@ -310,10 +376,12 @@ def _adjugate3(M: np.ndarray) -> np.ndarray:
 
 
 def _normalize_batch(p: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    c = p.mean(axis=1, keepdims=True)
-    d = np.sqrt(((p - c) ** 2).sum(axis=2)).mean(axis=1, keepdims=True)
+    unit = _pow2(np.abs(p).max(axis=(1, 2)))[:, None, None]  # exact rescale first: no square overflows
+    q = p / unit
+    c = q.mean(axis=1, keepdims=True)
+    d = np.hypot(*np.moveaxis(q - c, 2, 0)).mean(axis=1, keepdims=True)
     s = np.sqrt(2.0) / np.where(d > 0, d, 1.0)
-    return (p - c) * s[..., None], s[:, 0], c[:, 0]
+    return (q - c) * s[..., None], s[:, 0] / unit[:, 0, 0], c[:, 0] * unit[:, 0]
 
 
 def homographies_from_four(src: Any, dst: Any) -> np.ndarray:
@@ -339,8 +407,8 @@ def homographies_from_four(src: Any, dst: Any) -> np.ndarray:
         p, q = p[None], q[None]
     if p.shape != q.shape or p.ndim != 3 or p.shape[1:] != (4, 2):
         raise DimensionError(f"src and dst must both have shape (N, 4, 2), got {p.shape} and {q.shape}")
-    if not (np.isfinite(p).all() and np.isfinite(q).all()):
-        raise DimensionError("src or dst contains NaN or infinite coordinates")
+    require_finite(p, "src", "homographies_from_four")
+    require_finite(q, "dst", "homographies_from_four")
     n = p.shape[0]
     if n == 0:
         return np.zeros((0, 3, 3))
@@ -355,7 +423,7 @@ def homographies_from_four(src: Any, dst: Any) -> np.ndarray:
         for u, v, w in ((a, b, c), (a, b, d), (a, c, d), (b, c, d)):
             area = (v[:, 0] - u[:, 0]) * (w[:, 1] - u[:, 1]) - (v[:, 1] - u[:, 1]) * (w[:, 0] - u[:, 0])
             scale = np.linalg.norm(v - u, axis=1) * np.linalg.norm(w - u, axis=1)
-            bad |= np.abs(area) <= 1e-9 * scale
+            bad |= np.abs(area) <= COLLINEAR_RTOL * scale
         if bad.any():
             i = int(np.argmax(bad))
             raise CollinearPointsError(
@@ -363,13 +431,21 @@ def homographies_from_four(src: Any, dst: Any) -> np.ndarray:
                 "four correspondences determine a homography only when no three points lie on one line"
             )
     Hn = B @ _adjugate3(A)
+    Hn = np.where(np.abs(Hn) <= DLT_SNAP_RTOL * np.abs(Hn).max(axis=(1, 2), keepdims=True), 0.0, Hn)  # as in the DLT
     # undo the normalisations: H = Tq^-1 Hn Tp, with Tp = [[s I, -s c], [0, 1]]
     Tp = np.zeros((n, 3, 3))
     Tp[:, 0, 0] = Tp[:, 1, 1] = sp_
     Tp[:, :2, 2] = -sp_[:, None] * cp
     Tp[:, 2, 2] = 1.0
     Tq_inv = np.zeros((n, 3, 3))
-    Tq_inv[:, 0, 0] = Tq_inv[:, 1, 1] = 1.0
-    Tq_inv[:, :2, 2] = cq * sq[:, None]
-    Tq_inv[:, 2, 2] = sq
-    return normalize_homography(Tq_inv @ Hn @ Tp)
+    Tq_inv[:, 0, 0] = Tq_inv[:, 1, 1] = 1.0 / sq
+    Tq_inv[:, :2, 2] = cq
+    Tq_inv[:, 2, 2] = 1.0
+    with np.errstate(over="ignore", under="ignore", invalid="ignore"):
+        H = Tq_inv @ Hn @ Tp
+    if not np.isfinite(H).all():
+        raise NonFiniteError(
+            "homographies_from_four: some homography has entries beyond the float64 range (source and "
+            "destination differ in scale by more than about 1e300); rescale them"
+        )
+    return normalize_homography(H)

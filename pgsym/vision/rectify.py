@@ -33,7 +33,14 @@ from typing import Any
 
 import numpy as np
 
-from ..errors import CoincidentLinesError, CoincidentPointsError, DegenerateConfigurationError, DimensionError
+from ..errors import (
+    CoincidentLinesError,
+    CoincidentPointsError,
+    DegenerateConfigurationError,
+    DimensionError,
+    SingularTransformationError,
+)
+from ..numeric.conditioning import require_finite, singular
 from .homography import apply_homography, dlt_homography
 
 __all__ = [
@@ -55,10 +62,11 @@ def line_through(p: Sequence[float], q: Sequence[float]) -> np.ndarray:
     >>> line_through((0, 1), (2, 1)).tolist()   # y = 1
     [0.0, 1.0, -1.0]
     """
-    a = np.array([p[0], p[1], 1.0], dtype=np.float64)
-    b = np.array([q[0], q[1], 1.0], dtype=np.float64)
-    l = np.cross(a, b)
-    n = float(np.hypot(l[0], l[1]))
+    a = require_finite(np.array([p[0], p[1], 1.0], dtype=np.float64), "p", "line_through")
+    b = require_finite(np.array([q[0], q[1], 1.0], dtype=np.float64), "q", "line_through")
+    with np.errstate(over="ignore", invalid="ignore"):
+        l = require_finite(np.cross(a, b), "the line (its coordinates overflow)", "line_through")
+        n = float(np.hypot(l[0], l[1]))
     if n == 0:
         raise CoincidentPointsError(f"the points {tuple(p)} and {tuple(q)} coincide; they do not fix a line")
     return l / n
@@ -66,8 +74,10 @@ def line_through(p: Sequence[float], q: Sequence[float]) -> np.ndarray:
 
 def _line(value: Any) -> np.ndarray:
     l = np.asarray(value, dtype=np.float64)
-    if l.shape != (3,) or not np.isfinite(l).all():
+    if l.shape != (3,):
         raise DimensionError(f"a line is a homogeneous 3-vector (a, b, c), got {value!r}")
+    require_finite(l, "a line", "rectify")
+    l = l / np.ldexp(1.0, np.frexp(np.abs(l).max())[1])  # exact power-of-two scale: no product overflows
     if not l[:2].any():
         raise DegenerateConfigurationError("the line (0, 0, c) is the line at infinity (or zero), not an image line")
     return l
@@ -119,8 +129,11 @@ def affine_rectification(line_at_infinity: Any, reference: Sequence[float] = (0.
     [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, -0.01, 1.0]]
     """
     l = np.asarray(line_at_infinity, dtype=np.float64)
-    if l.shape != (3,) or not np.isfinite(l).all() or not l.any():
+    if l.shape != (3,) or not l.any():
         raise DimensionError(f"the vanishing line is a nonzero homogeneous 3-vector, got {line_at_infinity!r}")
+    require_finite(l, "the vanishing line", "affine_rectification")
+    reference = tuple(require_finite(np.asarray(reference, dtype=np.float64), "reference", "affine_rectification"))
+    l = l / np.ldexp(1.0, np.frexp(np.abs(l).max())[1])
     value = l[0] * reference[0] + l[1] * reference[1] + l[2]
     if abs(value) <= 1e-12 * np.linalg.norm(l) * max(1.0, float(np.hypot(*reference))):
         raise DegenerateConfigurationError(
@@ -140,8 +153,14 @@ def transform_lines(H: Any, lines: Any) -> np.ndarray:
     [[0.5, 0.0, -1.0]]
     """
     M = np.asarray(H, dtype=np.float64)
-    L = np.asarray(lines, dtype=np.float64).reshape(-1, 3)
-    return np.linalg.solve(M.T, L.T).T
+    if M.shape != (3, 3):
+        raise DimensionError(f"transform_lines: H must be a 3×3 matrix, got shape {M.shape}")
+    L = require_finite(np.asarray(lines, dtype=np.float64).reshape(-1, 3), "lines", "transform_lines")
+    if singular(require_finite(M, "H", "transform_lines")):
+        raise SingularTransformationError("transform_lines: H is singular, so it has no action on lines")
+    with np.errstate(over="ignore", invalid="ignore"):
+        image = np.linalg.solve(M.T, L.T).T
+    return require_finite(image, "the mapped lines (they overflow)", "transform_lines")
 
 
 def metric_upgrade(orthogonal_pairs: Sequence[Any]) -> np.ndarray:
@@ -236,7 +255,7 @@ def rectangle_homography(image_points: Any, size: tuple[int, int]) -> np.ndarray
     >>> (np.round(H / H[2, 2], 9) + 0.0).tolist()
     [[2.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]]
     """
-    w, h = (int(v) for v in size)
+    w, h = _size(size)
     if w < 2 or h < 2:
         raise DimensionError(f"the output rectangle needs at least 2×2 pixels, got {w}×{h}")
     p = np.asarray(image_points, dtype=np.float64)
@@ -244,6 +263,15 @@ def rectangle_homography(image_points: Any, size: tuple[int, int]) -> np.ndarray
         raise DimensionError(f"rectification needs exactly four image points (x, y), got shape {p.shape}")
     corners = np.array([[0, 0], [w - 1, 0], [w - 1, h - 1], [0, h - 1]], dtype=np.float64)
     return dlt_homography(p, corners)
+
+
+def _size(size: Any) -> tuple[int, int]:
+    """An output size ``(width, height)`` as two integers; NonFiniteError for NaN or infinity."""
+    values = np.asarray(size, dtype=np.float64)
+    if values.shape != (2,):
+        raise DimensionError(f"the output size is a pair (width, height), got {size!r}")
+    require_finite(values, "size", "rectify")
+    return int(values[0]), int(values[1])
 
 
 def fit_to_size(H: Any, points: Any, size: tuple[int, int], margin: int = 0) -> np.ndarray:
@@ -257,10 +285,11 @@ def fit_to_size(H: Any, points: Any, size: tuple[int, int], margin: int = 0) -> 
     >>> apply_homography(H, [[0, 0], [10, 5]]).tolist()
     [[0.0, 5.0], [20.0, 15.0]]
     """
-    M = np.asarray(H, dtype=np.float64)
-    p = np.asarray(points, dtype=np.float64).reshape(-1, 2)
-    w_out, h_out = (int(v) for v in size)
-    hom = p @ M[:, :2].T + M[:, 2]
+    M = require_finite(np.asarray(H, dtype=np.float64), "H", "fit_to_size")
+    p = require_finite(np.asarray(points, dtype=np.float64).reshape(-1, 2), "points", "fit_to_size")
+    w_out, h_out = _size(size)
+    with np.errstate(over="ignore", invalid="ignore"):
+        hom = require_finite(p @ M[:, :2].T + M[:, 2], "the mapped points (they overflow)", "fit_to_size")
     if not (np.all(hom[:, 2] > 0) or np.all(hom[:, 2] < 0)) or np.min(np.abs(hom[:, 2])) < 1e-12:
         raise DegenerateConfigurationError(
             "the vanishing line crosses the region to be shown: part of it would be mapped through infinity; "

@@ -22,7 +22,8 @@ from typing import Any
 
 import numpy as np
 
-from ..errors import DimensionError, ImageError, SingularTransformationError
+from ..errors import DimensionError, ImageError, NonFiniteError, SingularTransformationError
+from ..numeric.conditioning import require_finite, singular
 from .images import check_image
 
 __all__ = ["check_homography", "warp", "warp_numpy"]
@@ -41,10 +42,8 @@ def check_homography(H: Any) -> np.ndarray:
     M = np.asarray(H, dtype=np.float64)
     if M.shape != (3, 3):
         raise DimensionError(f"a homography of the plane is a 3×3 matrix, got shape {M.shape}")
-    if not np.isfinite(M).all():
-        raise SingularTransformationError("the homography contains NaN or infinite entries")
-    norm = np.linalg.norm(M)
-    if norm == 0 or abs(np.linalg.det(M / norm)) < 1e-12:
+    require_finite(M, "H", "check_homography")
+    if not M.any() or singular(M):
         raise SingularTransformationError(
             "the homography is singular (det H = 0 up to rounding): it collapses the plane onto a line or a "
             "point and cannot be inverted to warp an image"
@@ -54,9 +53,14 @@ def check_homography(H: Any) -> np.ndarray:
 
 def _check_size(size: Any) -> tuple[int, int]:
     try:
-        w, h = (int(v) for v in size)
+        values = [float(v) for v in size]
     except (TypeError, ValueError):
         raise ImageError(f"the output size must be a pair (width, height) of integers, got {size!r}") from None
+    if len(values) != 2:
+        raise ImageError(f"the output size must be a pair (width, height) of integers, got {size!r}")
+    if not all(np.isfinite(values)):
+        raise NonFiniteError(f"the output size must be finite, got {size!r}")
+    w, h = int(values[0]), int(values[1])
     if w < 1 or h < 1 or w > 32767 or h > 32767:
         raise ImageError(f"the output size must be between 1 and 32767 pixels per side, got {w}×{h}")
     return w, h
