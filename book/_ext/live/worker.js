@@ -1,0 +1,47 @@
+// The Python of the book's live cells: Pyodide in a module Web Worker, so the page stays responsive.
+// Every file comes from the book's own folder (_static/live/), never from the network.
+import { loadPyodide } from "./pyodide/pyodide.mjs";
+
+const here = new URL(".", import.meta.url);
+let kernel = null;
+
+function progress(text) {
+  postMessage({ type: "progress", text });
+}
+
+async function fetchOk(path) {
+  const response = await fetch(new URL(path, here));
+  if (!response.ok) throw new Error(`could not load ${path} (HTTP ${response.status})`);
+  return response;
+}
+
+async function boot() {
+  progress("Loading Python …");
+  const pyodide = await loadPyodide({ indexURL: new URL("pyodide/", here).href });
+  progress("Loading SymPy …");
+  const { wheels } = await (await fetchOk("wheels/manifest.json")).json();
+  const archives = await Promise.all(wheels.map(async (name) => (await fetchOk(`wheels/${name}`)).arrayBuffer()));
+  for (const bytes of archives) pyodide.unpackArchive(new Uint8Array(bytes), "wheel");
+  const site = pyodide.runPython("import site; site.getsitepackages()[0]");
+  pyodide.FS.writeFile(`${site}/live_kernel.py`, await (await fetchOk("live_kernel.py")).text());
+  // SymPy is imported here, once, so that the reader sees what the wait is for.
+  pyodide.runPython("import live_kernel, sympy\nlive_kernel.install_ipython_shim()");
+  kernel = pyodide.runPython("live_kernel.Kernel()");
+}
+
+let booting = null;
+let chain = Promise.resolve();
+
+// Cells run one after another, in the order the page sends them, like a notebook kernel's queue.
+onmessage = (event) => {
+  const { id, code, stubs } = event.data;
+  chain = chain.then(async () => {
+    try {
+      await (booting ??= boot());
+      postMessage({ type: "started", id });
+      postMessage({ type: "result", id, outputs: JSON.parse(kernel.run_json(code, JSON.stringify(stubs))) });
+    } catch (error) {
+      postMessage({ type: "failed", id, message: String(error?.message ?? error) });
+    }
+  });
+};
