@@ -39,7 +39,7 @@ mathjax: $(MATHJAX)  ## fetch MathJax 3 from npm
 
 # Live cells (book/_ext/live_cells.py): Pyodide's files from npm, the CodeMirror editor bundled by
 # esbuild, and the pure-Python wheels the page installs (pgsym from this checkout, SymPy and mpmath at
-# the versions of .venv), served from _static/live of the book. Nothing is fetched from a CDN.
+# the versions of .venv); the extension copies them to _static/live of the book. No CDN is involved.
 PYODIDE_FILES := pyodide.mjs pyodide.asm.mjs pyodide.asm.wasm python_stdlib.zip pyodide-lock.json
 LIVE_SOURCES := $(wildcard book/_ext/live/*)
 PGSYM_SOURCES := $(shell find pgsym -name '*.py' -not -path '*/__pycache__/*')

@@ -15,19 +15,25 @@ Edit / Run / Reset controls. Pages without code cells load nothing.
 from __future__ import annotations
 
 import ast
+import hashlib
 import importlib.util
 import json
+import shutil
 import sys
 from functools import cache
 from pathlib import Path
 from typing import Any
 
 from docutils import nodes
+from sphinx.util import logging
+
+logger = logging.getLogger(__name__)
 
 # Third-party packages the page ships (as wheels, next to Pyodide) or replaces with a small shim.
 BROWSER_PACKAGES = frozenset({"sympy", "mpmath", "pgsym"})
 BROWSER_SHIMS = frozenset({"IPython", "IPython.display"})
 FORCE_ON, FORCE_OFF = "live", "no-live"
+ASSETS = "_live/_static/live"  # built by `make live`, relative to the book's root
 # How the reason names a package a reader knows by another name.
 PACKAGE_NAMES = {"numpy": "NumPy", "matplotlib": "Matplotlib", "mpl_toolkits": "Matplotlib", "cv2": "OpenCV",
                  "skimage": "scikit-image", "scipy": "SciPy", "PIL": "Pillow", "flint": "python-flint"}
@@ -128,9 +134,14 @@ def missing_package(module: str) -> str | None:
 
 
 def _names(node: ast.AST) -> tuple[set[str], set[str]]:
-    """Names a statement binds (at its own level) and names it loads anywhere inside it."""
+    """Names a statement binds, and names it reads that it did not bind first.
+
+    Loop and comprehension variables and parameters are bound before they are read, so reading them
+    does not count as using an earlier cell's name.
+    """
     bound: set[str] = set()
     loaded: set[str] = set()
+    local: set[str] = set()
     for sub in ast.walk(node):
         if isinstance(sub, ast.Name):
             (loaded if isinstance(sub.ctx, ast.Load) else bound).add(sub.id)
@@ -138,7 +149,11 @@ def _names(node: ast.AST) -> tuple[set[str], set[str]]:
             bound.add(sub.name)
         elif isinstance(sub, ast.Import | ast.ImportFrom):
             bound.update((a.asname or a.name).split(".")[0] for a in sub.names if a.name != "*")
-    return bound, loaded
+        elif isinstance(sub, ast.comprehension | ast.For | ast.AsyncFor):
+            local.update(n.id for n in ast.walk(sub.target) if isinstance(n, ast.Name))
+        elif isinstance(sub, ast.arg):
+            local.add(sub.arg)
+    return bound, loaded - local
 
 
 def _imported(node: ast.AST) -> list[str]:
@@ -286,6 +301,25 @@ def _annotate(app: Any, doctree: nodes.document) -> None:
     env.live_cells[env.docname] = decided
 
 
+def _fingerprint() -> str:
+    """The rule's inputs besides the pages: this file and pgsym's sources (their imports may change)."""
+    digest = hashlib.sha256(Path(__file__).read_bytes())
+    found = _source("pgsym")
+    if found is not None:
+        for path in sorted(found[0].parent.rglob("*.py")):
+            digest.update(path.read_bytes())
+    return digest.hexdigest()
+
+
+def _outdated(app: Any, env: Any, added: set[str], changed: set[str], removed: set[str]) -> list[str]:
+    """Re-read every page with code cells when the rule or pgsym changed since the last build."""
+    fingerprint = _fingerprint()
+    if getattr(env, "live_cells_fingerprint", None) == fingerprint:
+        return []
+    env.live_cells_fingerprint = fingerprint
+    return sorted(set(getattr(env, "live_cells", {})) - removed)
+
+
 def _purge(app: Any, env: Any, docname: str) -> None:
     getattr(env, "live_cells", {}).pop(docname, None)
 
@@ -311,9 +345,28 @@ def _page(app: Any, pagename: str, templatename: str, context: dict[str, Any], d
     app.add_js_file("live/live-cells.js", type="module")
 
 
+def _copy_assets(app: Any, exception: Exception | None) -> None:
+    """Copy the assets `make live` built (Pyodide, wheels, scripts) to _static/live of the HTML output.
+
+    Sphinx's own copy of extra files neither overwrites what exists nor runs when no page changed, so
+    a rebuilt asset would not reach the book; this copy runs after every HTML build.
+    """
+    if exception is not None or app.builder.format != "html":
+        return
+    source = Path(app.confdir) / ASSETS
+    if not (source / "live-cells.js").is_file():
+        logger.warning("live cells: %s is missing; build it with `make live`", ASSETS)
+        return
+    target = Path(app.outdir) / "_static" / "live"
+    shutil.rmtree(target, ignore_errors=True)
+    shutil.copytree(source, target, ignore=shutil.ignore_patterns(".*"))
+
+
 def setup(app: Any) -> dict[str, Any]:
     app.connect("doctree-read", _annotate)
+    app.connect("env-get-outdated", _outdated)
     app.connect("env-purge-doc", _purge)
     app.connect("env-merge-info", _merge)
     app.connect("html-page-context", _page)
+    app.connect("build-finished", _copy_assets)
     return {"parallel_read_safe": True, "parallel_write_safe": True, "env_version": 1}

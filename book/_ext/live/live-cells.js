@@ -201,6 +201,7 @@ class LiveCell {
     if (this.stored) this.stored.hidden = true;
     await Promise.all(nodes.filter((n) => n.matches(".live-latex, .live-html")).map(typeset));
     this.node.dataset.liveState = outputs.some((o) => o.type === "error") ? "error" : "done";
+    this.node.dataset.liveRuns = String(Number(this.node.dataset.liveRuns ?? 0) + 1);
   }
 
   reset() {

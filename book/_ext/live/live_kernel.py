@@ -9,11 +9,19 @@ MIME bundles, and errors as the exception's class name, its message and the fold
 [{'type': 'stream', 'name': 'stdout', 'text': 'x is 42\\n'}, {'type': 'result', 'data': {'text/plain': '43'}}]
 >>> kernel.run("1 / 0")[0]["ename"]
 'ZeroDivisionError'
+
+Modules the page cannot load (the build lists them) import as placeholders that fail only when used:
+
+>>> kernel.run("import no_such_package.sub as nsp\\nfrom no_such_package.sub import ones", ["no_such_package.sub"])
+[]
+>>> kernel.run("ones(3)")[0]["evalue"]
+'no_such_package.sub does not run in the page; run this chapter locally'
 """
 
 from __future__ import annotations
 
 import ast
+import builtins
 import html
 import importlib.util
 import json
@@ -63,7 +71,11 @@ class Kernel:
     """One page's Python state: cells run in order in one namespace, as in a notebook kernel."""
 
     def __init__(self) -> None:
-        self.namespace: dict[str, Any] = {"__name__": "__main__", "__builtins__": __builtins__}
+        # The cells' own __import__ hands out placeholders for modules the page cannot load; libraries
+        # keep the real one, so that their `try: import numpy / except ImportError` still works.
+        cell_builtins = dict(vars(builtins), __import__=self._import)
+        self.namespace: dict[str, Any] = {"__name__": "__main__", "__builtins__": cell_builtins}
+        self.stubs: dict[str, _Placeholder] = {}
         self.outputs: list[dict[str, Any]] = []
         self.count = 0
 
@@ -84,7 +96,8 @@ class Kernel:
         ``stubs`` are the modules the cell imports that the page cannot load (decided when the book
         was built); they are bound to placeholders, so that only using them fails.
         """
-        install_stubs(stubs)
+        for name, placeholder in placeholders(list(stubs)).items():
+            self.stubs.setdefault(name, placeholder)
         self.count += 1
         self.outputs = []
         filename = f"<cell {self.count}>"
@@ -107,6 +120,14 @@ class Kernel:
         finally:
             sys.stdout, sys.stderr = saved
         return self.outputs
+
+    def _import(self, name: str, globals: Any = None, locals: Any = None, fromlist: Any = (), level: int = 0) -> Any:
+        if level == 0 and name in self.stubs:
+            if fromlist:
+                return self.stubs[name]
+            top = name.split(".")[0]
+            return self.stubs[top] if top in self.stubs else builtins.__import__(top, globals, locals, (), 0)
+        return builtins.__import__(name, globals, locals, fromlist, level)
 
     def run_json(self, code: str, stubs: str = "[]") -> str:
         """``run`` for the worker: JSON strings cross between JavaScript and Python."""
@@ -155,34 +176,23 @@ class _Placeholder(types.ModuleType):
         return _Missing(self.__name__)
 
 
-def install_stubs(modules: list[str]) -> None:
-    """Bind modules the page cannot load to placeholders, so that importing works and using fails.
-
-    The build decided which modules those are; their parents are stubbed only when absent.
-
-    >>> install_stubs(["no_such_package.sub"])
-    >>> import no_such_package.sub as nsp
-    >>> from no_such_package.sub import ones
-    >>> ones(3)
-    Traceback (most recent call last):
-    ...
-    live_kernel.NotInBrowserError: no_such_package.sub does not run in the page; run this chapter locally
-    """
+def placeholders(modules: list[str]) -> dict[str, _Placeholder]:
+    """Placeholders for modules the page cannot load, chained as attributes (``a.b`` on ``a``)."""
+    made: dict[str, _Placeholder] = {}
     for module in modules:
         parts = module.split(".")
-        for i in range(1, len(parts) + 1):
+        try:
+            top_exists = importlib.util.find_spec(parts[0]) is not None
+        except (ImportError, ValueError):
+            top_exists = False
+        # below a package that exists (pgsym.linalg) only the module itself is replaced
+        first = len(parts) if top_exists else 1
+        for i in range(first, len(parts) + 1):
             name = ".".join(parts[:i])
-            if isinstance(sys.modules.get(name), _Placeholder):
-                continue
-            if i < len(parts):
-                try:
-                    if importlib.util.find_spec(name) is not None:
-                        continue
-                except (ImportError, ValueError):
-                    pass
-            sys.modules[name] = _Placeholder(name)
-            if i > 1 and ".".join(parts[: i - 1]) in sys.modules:
-                setattr(sys.modules[".".join(parts[: i - 1])], parts[i - 1], sys.modules[name])
+            made.setdefault(name, _Placeholder(name))
+            if i > first:
+                setattr(made[".".join(parts[: i - 1])], parts[i - 1], made[name])
+    return made
 
 
 def _display(*objs: object, **_: object) -> None:
