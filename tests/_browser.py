@@ -6,6 +6,7 @@ registered for every test module by tests/conftest.py.
 
 from __future__ import annotations
 
+import contextlib
 import functools
 import http.server
 import threading
@@ -34,15 +35,24 @@ class _QuietHandler(http.server.SimpleHTTPRequestHandler):
         pass
 
 
-@pytest.fixture(scope="module")
-def server() -> Iterator[str]:
-    assert (HTML / "index.html").is_file(), "the book is not built: run `make book` (make test does it first)"
-    handler = functools.partial(_QuietHandler, directory=str(HTML))
+@contextlib.contextmanager
+def serve(directory: Path = HTML) -> Iterator[str]:
+    """Serve ``directory`` on a free loopback port; yields the base URL."""
+    handler = functools.partial(_QuietHandler, directory=str(directory))
     httpd = http.server.ThreadingHTTPServer(("127.0.0.1", 0), handler)
     thread = threading.Thread(target=httpd.serve_forever, daemon=True)
     thread.start()
-    yield f"http://127.0.0.1:{httpd.server_address[1]}"
-    httpd.shutdown()
+    try:
+        yield f"http://127.0.0.1:{httpd.server_address[1]}"
+    finally:
+        httpd.shutdown()
+
+
+@pytest.fixture(scope="module")
+def server() -> Iterator[str]:
+    assert (HTML / "index.html").is_file(), "the book is not built: run `make book` (make test does it first)"
+    with serve(HTML) as url:
+        yield url
 
 
 @pytest.fixture(scope="module")

@@ -17,13 +17,19 @@ async function fetchOk(path) {
 
 async function boot() {
   progress("Loading Python …");
+  // the wheels and the kernel download while Pyodide starts
+  const downloads = fetchOk("wheels/manifest.json")
+    .then((response) => response.json())
+    .then(({ wheels }) => Promise.all(wheels.map(async (name) => (await fetchOk(`wheels/${name}`)).arrayBuffer())));
+  const kernelSource = fetchOk("live_kernel.py").then((response) => response.text());
+  // awaited below; observed now so that a failed download is reported once, by the Run that waits
+  downloads.catch(() => {});
+  kernelSource.catch(() => {});
   const pyodide = await loadPyodide({ indexURL: new URL("pyodide/", here).href });
   progress("Loading SymPy …");
-  const { wheels } = await (await fetchOk("wheels/manifest.json")).json();
-  const archives = await Promise.all(wheels.map(async (name) => (await fetchOk(`wheels/${name}`)).arrayBuffer()));
-  for (const bytes of archives) pyodide.unpackArchive(new Uint8Array(bytes), "wheel");
+  for (const bytes of await downloads) pyodide.unpackArchive(new Uint8Array(bytes), "wheel");
   const site = pyodide.runPython("import site; site.getsitepackages()[0]");
-  pyodide.FS.writeFile(`${site}/live_kernel.py`, await (await fetchOk("live_kernel.py")).text());
+  pyodide.FS.writeFile(`${site}/live_kernel.py`, await kernelSource);
   // SymPy is imported here, once, so that the reader sees what the wait is for.
   pyodide.runPython("import live_kernel, sympy\nlive_kernel.install_ipython_shim()");
   kernel = pyodide.runPython("live_kernel.Kernel()");
