@@ -88,7 +88,7 @@ test: book system-deps lint  ## everything: lint, unit/property/doctests, strict
 lab: $(INSTALLED)  ## open the chapters in JupyterLab from the same venv (one chapter: make lab NB=harris)
 	$(BIN)/jupyter lab $(if $(NB),book/$(NB).ipynb,book/)
 
-bench: $(INSTALLED)  ## run every benchmark in bench/ (one JSON line per case)
+bench: book  ## run every benchmark in bench/ (one JSON line per case; bench_live.py needs the built book)
 	@for b in bench/bench_*.py; do [ -e "$$b" ] || continue; $(BIN)/python "$$b" || exit 1; done
 
 clean:  ## remove the build, MathJax and live-cell copies and caches (keeps .venv)
