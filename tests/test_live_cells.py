@@ -181,8 +181,13 @@ def run(page: Page, index: int, *, keyboard: bool = False) -> Locator:
     return cell
 
 
-def editor_text(cell: Locator) -> str:
-    return "\n".join(line.rstrip("\n") for line in cell.locator(".cm-line").all_inner_texts())
+def wait_for_editor_text(page: Page, index: int, code: str) -> None:
+    """Wait until the cell's editor shows exactly ``code`` (CodeMirror renders one element per line)."""
+    page.wait_for_function(
+        """([i, code]) => Array.from(document.querySelectorAll(`.live-cell-${i} .cm-line`))
+                 .map((line) => line.innerText.replace(/\\n$/, "")).join("\\n") === code""",
+        arg=[index, code],
+    )
 
 
 def edit(page: Page, index: int, code: str) -> None:
@@ -193,7 +198,7 @@ def edit(page: Page, index: int, code: str) -> None:
     editor.click()
     page.keyboard.press("Control+a")
     page.keyboard.insert_text(code)
-    assert editor_text(cell) == code
+    wait_for_editor_text(page, index, code)
 
 
 def first_cell(chapter: str, predicate) -> int:
@@ -261,7 +266,7 @@ def test_points_and_lines_run_edit_and_named_error(chapter_page, server):
 
     # Reset brings back the book's code and stored output
     cell.get_by_role("button", name="Reset this cell to the book's code and output").click()
-    assert editor_text(cell) == original
+    wait_for_editor_text(page, index, original)
     assert cell.locator(".cell_output").is_visible() and cell.locator(".live-output").is_hidden()
 
     # a later join/meet cell reuses the running Python: rendered as LaTeX by the page's MathJax
