@@ -8,14 +8,18 @@ let worker = null;
 let nextId = 1;
 const pending = new Map(); // request id -> {resolve, onStart}
 let statusCell = null; // the cell whose status line shows the worker's progress
+let lastProgress = null; // what the worker is doing while Python starts; null once it has run a cell
 
 function startWorker() {
   worker = new Worker(new URL("worker.js", here), { type: "module" });
   worker.onmessage = ({ data: message }) => {
     if (message.type === "progress") {
-      if (statusCell && message.text !== "Running …") statusCell.status(message.text);
+      if (message.text === "Running …") return;
+      lastProgress = message.text;
+      if (statusCell) statusCell.status(message.text);
       return;
     }
+    lastProgress = null;
     const request = pending.get(message.id);
     if (!request) return;
     if (message.type === "started") {
@@ -36,6 +40,14 @@ function startWorker() {
       request.resolve([{ type: "error", ename: "LoadError", evalue: `Python could not start in this page: ${event.message}`, traceback: "" }]);
     }
   };
+}
+
+// Edit announces a Run: Python starts loading then, so that the Run waits less.
+function warmUp() {
+  if (worker) return;
+  startWorker();
+  lastProgress = "Loading Python …";
+  worker.postMessage({ boot: true });
 }
 
 function execute(code, stubs, onStart) {
@@ -161,6 +173,7 @@ class LiveCell {
       this.editor.focus();
       return;
     }
+    warmUp();
     const { createEditor } = await import(new URL("editor.js", here).href);
     const host = element("div", { class: "live-editor" });
     this.input.after(host);
@@ -179,7 +192,7 @@ class LiveCell {
       cell.node.dataset.liveState = "running";
     }
     statusCell = this;
-    this.status(worker ? "Running …" : "Loading Python …");
+    this.status(worker ? lastProgress ?? "Running …" : "Loading Python …");
     const results = batch.map((cell, k) =>
       execute(cell.code(), cell.stubs, () => {
         if (cell !== this) this.status(`Running the cells above (${k + 1} of ${batch.length - 1}) …`);

@@ -40,7 +40,12 @@ let chain = Promise.resolve();
 
 // Cells run one after another, in the order the page sends them, like a notebook kernel's queue.
 onmessage = (event) => {
-  const { id, code, stubs } = event.data;
+  const { id, code, stubs, boot: bootOnly } = event.data;
+  if (bootOnly) {
+    // a failure is reported to the Run that follows, which awaits the same promise
+    chain = chain.then(() => (booting ??= boot()).catch(() => {}));
+    return;
+  }
   chain = chain.then(async () => {
     try {
       await (booting ??= boot());
