@@ -6,9 +6,12 @@ VENV := .venv
 BIN := $(VENV)/bin
 INSTALLED := $(VENV)/.installed
 MATHJAX := _mathjax/_static/mathjax/tex-chtml.js
+NODE_MODULES := node_modules/.installed
+LIVE := _live/_static/live
+LIVE_BUILT := $(LIVE)/.built
 BOOK_INDEX := _build/html/index.html
 
-.PHONY: help venv mathjax system-deps book test lint lab bench clean
+.PHONY: help venv mathjax live system-deps book test lint lab bench clean
 
 help:  ## list the targets
 	@grep -E '^[a-z-]+:.*## ' $(MAKEFILE_LIST) | sed -E 's/:.*## /\t/' | expand -t 14
@@ -21,15 +24,40 @@ $(INSTALLED): requirements.txt pyproject.toml
 
 venv: $(INSTALLED)  ## create .venv with pinned dependencies and pgsym installed (editable)
 
-# MathJax comes from npm so math renders with no network; Sphinx serves it from _static/mathjax.
-$(MATHJAX): package.json package-lock.json
+$(NODE_MODULES): package.json package-lock.json
 	@command -v npm >/dev/null || { echo "npm is missing: install Node.js and npm (Debian: apt-get install nodejs npm)"; exit 1; }
 	npm ci --no-audit --no-fund --loglevel=error
+	touch $@
+
+# MathJax comes from npm so math renders with no network; Sphinx serves it from _static/mathjax.
+$(MATHJAX): $(NODE_MODULES)
 	rm -rf _mathjax && mkdir -p _mathjax/_static
 	cp -r node_modules/mathjax/es5 _mathjax/_static/mathjax
 	touch $@
 
 mathjax: $(MATHJAX)  ## fetch MathJax 3 from npm
+
+# Live cells (book/_ext/live_cells.py): Pyodide's files from npm, the CodeMirror editor bundled by
+# esbuild, and the pure-Python wheels the page installs (pgsym from this checkout, SymPy and mpmath at
+# the versions of .venv); the extension copies them to _static/live of the book. No CDN is involved.
+PYODIDE_FILES := pyodide.mjs pyodide.asm.mjs pyodide.asm.wasm python_stdlib.zip pyodide-lock.json
+LIVE_SOURCES := $(wildcard book/_ext/live/*)
+PGSYM_SOURCES := $(shell find pgsym -name '*.py' -not -path '*/__pycache__/*')
+$(LIVE_BUILT): $(NODE_MODULES) $(INSTALLED) $(LIVE_SOURCES) $(PGSYM_SOURCES) pyproject.toml
+	rm -rf _live && mkdir -p $(LIVE)/pyodide $(LIVE)/wheels
+	cp $(addprefix node_modules/pyodide/,$(PYODIDE_FILES)) $(LIVE)/pyodide/
+	cp book/_ext/live/live-cells.js book/_ext/live/live-cells.css book/_ext/live/worker.js \
+	   book/_ext/live/live_kernel.py $(LIVE)/
+	node_modules/.bin/esbuild book/_ext/live/editor.mjs --bundle --format=esm --minify --legal-comments=none \
+	   --log-level=warning --outfile=$(LIVE)/editor.js
+	$(BIN)/python -m pip wheel --quiet --no-deps --wheel-dir $(LIVE)/wheels .
+	$(BIN)/python -m pip download --quiet --no-deps --only-binary=:all: --dest $(LIVE)/wheels \
+	   $$($(BIN)/python -c "from importlib.metadata import version as v; print(f'sympy=={v(\"sympy\")} mpmath=={v(\"mpmath\")}')")
+	cd $(LIVE)/wheels && ls *.whl | $(CURDIR)/$(BIN)/python -c "import json, sys; print(json.dumps({'wheels': sys.stdin.read().split()}))" > manifest.json
+	touch $@
+	@echo "Live cells add $$(du -sb _live | cut -f1 | awk '{printf "%.1f MB", $$1 / 1e6}') to the book (Pyodide, wheels, editor)"
+
+live: $(LIVE_BUILT)  ## build the live cells' assets (Pyodide, wheels, editor bundle)
 
 # Debian packages: chromium for the browser test, TeX for the PDF exercise sheets, pdftotext to read them back.
 APT_PACKAGES := chromium texlive-latex-extra texlive-fonts-recommended tex-gyre latexmk lmodern poppler-utils
@@ -47,7 +75,7 @@ system-deps:  ## install Debian's chromium and TeX (when root), or say how
 	  fi; \
 	fi
 
-book: $(INSTALLED) $(MATHJAX)  ## build the book with -W (warnings are errors) and print the path of index.html
+book: $(INSTALLED) $(MATHJAX) $(LIVE_BUILT)  ## build the book with -W (warnings are errors) and print the path of index.html
 	$(BIN)/jupyter-book build . -W -n --keep-going
 	@echo "Book: $(CURDIR)/$(BOOK_INDEX)"
 
@@ -57,11 +85,11 @@ lint: $(INSTALLED)  ## ruff
 test: book system-deps lint  ## everything: lint, unit/property/doctests, strict nbval, CLI, the built book in a real browser
 	$(BIN)/python -m pytest
 
-lab: $(INSTALLED)  ## open the chapters in JupyterLab from the same venv
-	$(BIN)/jupyter lab book/
+lab: $(INSTALLED)  ## open the chapters in JupyterLab from the same venv (one chapter: make lab NB=harris)
+	$(BIN)/jupyter lab $(if $(NB),book/$(NB).ipynb,book/)
 
-bench: $(INSTALLED)  ## run every benchmark in bench/ (one JSON line per case)
+bench: book  ## run every benchmark in bench/ (one JSON line per case; bench_live.py needs the built book)
 	@for b in bench/bench_*.py; do [ -e "$$b" ] || continue; $(BIN)/python "$$b" || exit 1; done
 
-clean:  ## remove the build, MathJax copy and caches (keeps .venv)
-	rm -rf _build _mathjax node_modules .pytest_cache .hypothesis
+clean:  ## remove the build, MathJax and live-cell copies and caches (keeps .venv)
+	rm -rf _build _mathjax _live node_modules .pytest_cache .hypothesis

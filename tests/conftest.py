@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from fractions import Fraction
 
+from _browser import browser, server  # noqa: F401  (fixtures of the browser tests)
 from hypothesis import settings
 from hypothesis import strategies as st
 
