@@ -39,6 +39,7 @@ from .errors import (
     NotOnConicError,
     ZeroVectorError,
 )
+from .exact import latex
 from .homogeneous import HomogeneousVector, Scalar, _format_entry, is_zero, require, to_exact
 from .projective_plane import Line, Point, collinear, cross
 
@@ -205,7 +206,7 @@ class _SymmetricForm:
 
     def latex(self) -> str:
         """LaTeX of the matrix (without math delimiters)."""
-        return sympy.latex(Matrix(self._matrix), mat_delim="[")
+        return latex(Matrix(self._matrix), mat_delim="[")
 
 
 class Conic(_SymmetricForm):
@@ -268,7 +269,7 @@ class Conic(_SymmetricForm):
         return f"Conic.from_coefficients({', '.join(_format_entry(c) for c in self.coefficients)})"
 
     def _repr_latex_(self) -> str:
-        eq = sympy.latex(sympy.Eq(self.equation(), 0))
+        eq = latex(sympy.Eq(self.equation(), 0))
         return f"$C = {self.latex()}, \\quad {eq}$"
 
     def value(self, point: Point) -> Expr:

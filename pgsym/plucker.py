@@ -65,6 +65,7 @@ from .errors import (
     UndefinedCrossRatioError,
     ZeroVectorError,
 )
+from .exact import latex
 from .homogeneous import HomogeneousVector, Scalar, is_zero, require, to_exact
 from .projective_line import Point1, cross_ratio
 from .space import Plane, Point3
@@ -413,7 +414,7 @@ class Line3(HomogeneousVector):
     # -- rendering --------------------------------------------------------------------------------
     def latex(self) -> str:
         """LaTeX of the Plücker matrix ``L`` (without math delimiters)."""
-        return sympy.latex(self.matrix, mat_delim="[", mat_str="matrix")
+        return latex(self.matrix, mat_delim="[", mat_str="matrix")
 
 
 def reciprocal_product(l: Line3, m: Line3) -> Expr:

@@ -29,6 +29,7 @@ from .errors import (
     ObjectTypeError,
     ZeroVectorError,
 )
+from .exact import latex
 from .homogeneous import Scalar, _format_entry, is_zero, to_exact
 from .space import Plane, Point3
 
@@ -219,7 +220,7 @@ class Quadric:
 
     def latex(self) -> str:
         """LaTeX of the matrix (without math delimiters)."""
-        return sympy.latex(self._matrix, mat_delim="[")
+        return latex(self._matrix, mat_delim="[")
 
     def _repr_latex_(self) -> str:
         return f"${self.latex()}$"
