@@ -72,6 +72,7 @@ from .errors import InvalidCoordinatesError, NonNumericError, UndecidableError
 
 __all__ = [
     "algebraic_normal_form",
+    "all_zero",
     "canonical_coords",
     "format_entry",
     "is_zero",
@@ -159,6 +160,27 @@ def is_zero(expr: Expr) -> bool:
     if _is_rational_polynomial(numerator) and _is_rational_function(denominator):
         return False
     return _is_zero_algebraic(expr, numerator, denominator)
+
+
+def all_zero(values: Any) -> bool:
+    """True when every value is zero (:func:`is_zero`); a nonzero rational entry answers at once.
+
+    Rational entries are looked at first, so a vector such as ``(pi, 1)`` is known to be nonzero
+    without deciding anything about ``pi``.
+
+    >>> all_zero([sympy.pi, 1]), all_zero([0, sympy.sqrt(2) * sympy.sqrt(2) - 2])
+    (False, True)
+    """
+    deferred = []
+    for v in values:
+        if not isinstance(v, Basic):
+            v = to_exact(v)
+        if v.is_Rational:
+            if v.p != 0:
+                return False
+        else:
+            deferred.append(v)
+    return all(is_zero(v) for v in deferred)
 
 
 def _is_rational_polynomial(e: Expr) -> bool:

@@ -22,8 +22,8 @@ from typing import Any, TypeVar
 import sympy
 from sympy import Expr, Matrix
 
-from .errors import DimensionError, ObjectTypeError, ZeroVectorError
-from .exact import Scalar, canonical_coords, format_entry, is_zero, latex, to_exact
+from .errors import DimensionError, ObjectTypeError, UndecidableError, ZeroVectorError
+from .exact import Scalar, all_zero, canonical_coords, format_entry, is_zero, latex, to_exact
 
 __all__ = ["HomogeneousVector", "is_zero", "to_exact"]
 
@@ -70,7 +70,7 @@ class HomogeneousVector:
     def _check(cls, coords: tuple[Expr, ...]) -> tuple[Expr, ...]:
         if len(coords) != cls.size:
             raise DimensionError(f"a {cls._kind} needs {cls.size} homogeneous coordinates, got {len(coords)}: {coords}")
-        if all(is_zero(c) for c in coords):
+        if all_zero(coords):
             raise ZeroVectorError(f"the zero vector is not a {cls._kind}: at least one coordinate must be nonzero")
         return coords
 
@@ -116,7 +116,10 @@ class HomogeneousVector:
         a, b = self._coords, other._coords
         if len(a) != len(b):
             return False
-        return all(is_zero(a[i] * b[j] - a[j] * b[i]) for i in range(len(a)) for j in range(i + 1, len(a)))
+        try:
+            return all(is_zero(a[i] * b[j] - a[j] * b[i]) for i in range(len(a)) for j in range(i + 1, len(a)))
+        except UndecidableError as err:
+            raise UndecidableError(f"cannot decide whether {self!r} and {other!r} are equal: {err}") from err
 
     def __eq__(self, other: object) -> bool:
         if type(self) is not type(other):
