@@ -636,16 +636,19 @@ class _ReprPrinter(StrPrinter):
 
 
 class _LatexPrinter(LatexPrinter):
-    """SymPy's LaTeX printer with integers of any length."""
+    """SymPy's LaTeX printer (byte-for-byte) with integers of any length."""
 
-    def _print_Integer(self, expr: Integer) -> str:
-        return decimal_digits(int(expr.p))
+    def _print_int(self, expr: int) -> str:
+        return decimal_digits(expr)
 
     def _print_Rational(self, expr: Rational) -> str:
-        if expr.q == 1:
-            return self._print_Integer(expr)
+        if expr.q == 1 or max(abs(int(expr.p)), int(expr.q)).bit_length() < 13000:
+            return super()._print_Rational(expr)
+        sgn = "- " if expr.p < 0 else ""
         p, q = decimal_digits(abs(int(expr.p))), decimal_digits(int(expr.q))
-        return ("- " if expr.p < 0 else "") + r"\frac{" + p + "}{" + q + "}"
+        if self._settings["fold_short_frac"]:
+            return f"{sgn}{p} / {q}"
+        return sgn + r"\frac{" + p + "}{" + q + "}"
 
 
 def format_entry(entry: Expr) -> str:
