@@ -596,31 +596,27 @@ def _canonical_algebraic_polynomials(coords: list[Expr], symbols: list[sympy.Sym
 
 
 # -- printing ------------------------------------------------------------------------------------
-_MAX_DECIMAL = 4000  # digits that int → str converts at once (Python refuses more than 4300)
+_SHORT_BITS = 13000  # below 3914 decimal digits: int ↔ str is allowed (Python refuses more than 4300)
 
 
 def decimal_digits(n: int) -> str:
-    """The decimal digits of any integer, also past Python's int-to-str limit (in chunks).
+    """The decimal digits of any integer, also past Python's int-to-str limit (split in halves).
 
     >>> decimal_digits(-10**5000)[:4], len(decimal_digits(10**5000))
     ('-100', 5001)
     """
     if n < 0:
         return "-" + decimal_digits(-n)
-    if n.bit_length() < 13000:  # < 3914 digits
+    if n.bit_length() < _SHORT_BITS:
         return str(n)
-    half = max(1, len(_chunks(n)) // 2) * _MAX_DECIMAL
+    half = int(n.bit_length() * 0.30103) // 2
     high, low = divmod(n, 10**half)
     return decimal_digits(high) + decimal_digits(low).rjust(half, "0")
 
 
-def _chunks(n: int) -> range:
-    return range(0, int(n.bit_length() * 0.30103) + 1, _MAX_DECIMAL)
-
-
 def _int_source(n: int) -> str:
     """Python source for an integer: decimal when short, hexadecimal (not length-limited) when long."""
-    if n.bit_length() < 13000:
+    if n.bit_length() < _SHORT_BITS:
         return str(n)
     return f"-{-n:#x}" if n < 0 else f"{n:#x}"
 
@@ -642,7 +638,7 @@ class _LatexPrinter(LatexPrinter):
         return decimal_digits(expr)
 
     def _print_Rational(self, expr: Rational) -> str:
-        if expr.q == 1 or max(abs(int(expr.p)), int(expr.q)).bit_length() < 13000:
+        if expr.q == 1 or max(abs(int(expr.p)), int(expr.q)).bit_length() < _SHORT_BITS:
             return super()._print_Rational(expr)
         sgn = "- " if expr.p < 0 else ""
         p, q = decimal_digits(abs(int(expr.p))), decimal_digits(int(expr.q))
