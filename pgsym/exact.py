@@ -102,6 +102,10 @@ def to_exact(value: Scalar) -> Expr:
 
     >>> to_exact(0.25), to_exact(Fraction(2, 6)), to_exact(3), to_exact(1j)
     (1/4, 1/3, 3, I)
+    >>> to_exact(1 / ((1 + sympy.sqrt(2)) ** 2 - 3 - 2 * sympy.sqrt(2)))  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    pgsym.errors.NonNumericError: the coordinate ... divides by -3 - 2*sqrt(2) + (1 + sqrt(2))**2, which is zero
     """
     if isinstance(value, bool) or value is None or isinstance(value, (str, bytes)):
         raise NonNumericError(
@@ -129,7 +133,21 @@ def to_exact(value: Scalar) -> Expr:
         return to_exact(float(result))
     if result.has(sympy.nan, sympy.zoo, sympy.oo, -sympy.oo):
         raise NonNumericError(f"coordinates must be finite, got {value!r}; use an ideal point for directions")
+    if not result.is_Rational:
+        _require_nonzero_denominators(result, value)
     return result
+
+
+def _require_nonzero_denominators(expr: Expr, value: Any) -> None:
+    """Reject a division by zero in disguise, such as ``1/((a + 1)**2 - a**2 - 2*a - 1)``."""
+    for power in expr.atoms(sympy.Pow):
+        if power.exp.is_negative and not power.base.is_Symbol:
+            try:
+                zero = is_zero(power.base)
+            except UndecidableError:
+                continue  # undecidable now, and every later decision on it raises
+            if zero:
+                raise NonNumericError(f"the coordinate {value!r} divides by {power.base}, which is zero")
 
 
 # -- the zero test -------------------------------------------------------------------------------

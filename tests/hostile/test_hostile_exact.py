@@ -16,6 +16,7 @@ from pgsym import (
     Conic,
     DecompositionError,
     Line,
+    NonNumericError,
     Point,
     Transformation,
     UndecidableError,
@@ -267,6 +268,11 @@ def test_zero_vector_in_disguise_is_rejected():
         Line(zero, zero * I, 0)
     with pytest.raises(CoincidentPointsError):
         join(Point(sqrt(3 + 2 * sqrt(2)), 1), Point(1 + sqrt(2), 1))
+    # a division by zero in disguise: (a + 1)² − a² − 2a − 1 = 0 and (1 + √2)² − 3 − 2√2 = 0
+    with pytest.raises(NonNumericError, match="divides by"):
+        Point(1 / ((a + 1) ** 2 - a**2 - 2 * a - 1), 1)
+    with pytest.raises(NonNumericError, match="divides by"):
+        Point(1, 1 / ((1 + sqrt(2)) ** 2 - 3 - 2 * sqrt(2)))
 
 
 def test_huge_integer_repr_round_trips():
