@@ -39,6 +39,7 @@ from .errors import (
     NotOnConicError,
     ZeroVectorError,
 )
+from .exact import all_zero, latex
 from .homogeneous import HomogeneousVector, Scalar, _format_entry, is_zero, require, to_exact
 from .projective_plane import Line, Point, collinear, cross
 
@@ -75,7 +76,7 @@ def _two_points_on(line: Line) -> tuple[Point, Point]:
     candidates = []
     for e in ((1, 0, 0), (0, 1, 0), (0, 0, 1)):
         coords = cross(line.coords, e)
-        if not all(is_zero(c) for c in coords):
+        if not all_zero(coords):
             candidates.append(Point._from_exact(coords))
     p = candidates[0]
     q = next(c for c in candidates[1:] if not c == p)
@@ -144,7 +145,7 @@ class _SymmetricForm:
                 f"the matrix of a {cls._kind} must be symmetric, got {m.tolist()}; "
                 "use (M + M.T)/2, which describes the same quadratic form"
             )
-        if all(is_zero(e) for e in m):
+        if all_zero(m):
             raise ZeroVectorError(f"the zero matrix is not a {cls._kind}: at least one entry must be nonzero")
         return m
 
@@ -205,7 +206,7 @@ class _SymmetricForm:
 
     def latex(self) -> str:
         """LaTeX of the matrix (without math delimiters)."""
-        return sympy.latex(Matrix(self._matrix), mat_delim="[")
+        return latex(Matrix(self._matrix), mat_delim="[")
 
 
 class Conic(_SymmetricForm):
@@ -268,7 +269,7 @@ class Conic(_SymmetricForm):
         return f"Conic.from_coefficients({', '.join(_format_entry(c) for c in self.coefficients)})"
 
     def _repr_latex_(self) -> str:
-        eq = sympy.latex(sympy.Eq(self.equation(), 0))
+        eq = latex(sympy.Eq(self.equation(), 0))
         return f"$C = {self.latex()}, \\quad {eq}$"
 
     def value(self, point: Point) -> Expr:
@@ -302,7 +303,7 @@ class Conic(_SymmetricForm):
         """
         require(point, Point, "Conic.polar")
         coords = tuple(sympy.expand(e) for e in self._matrix * point.vector)
-        if all(is_zero(c) for c in coords):
+        if all_zero(coords):
             raise DegenerateConicError(
                 f"{point!r} is a singular point of the degenerate conic {self!r} (C x = 0), so it has no polar line"
             )
@@ -525,7 +526,7 @@ def conic_through(*points: Point) -> Conic:
     for j in range(6):
         minor = rows[:, [k for k in range(6) if k != j]].det(method="bareiss")
         coeffs.append(sympy.expand((-1) ** j * minor))
-    if all(is_zero(c) for c in coeffs):
+    if all_zero(coeffs):
         for i, j in itertools.combinations(range(5), 2):
             if points[i] == points[j]:
                 raise CoincidentPointsError(

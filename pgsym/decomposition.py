@@ -34,8 +34,8 @@ from typing import Any
 import sympy
 from sympy import ImmutableMatrix, Matrix
 
-from .errors import DecompositionError
-from .homogeneous import is_zero
+from .errors import DecompositionError, UndecidableError
+from .exact import is_zero, sign
 from .transformations import Transformation
 
 __all__ = ["Decomposition", "decompose"]
@@ -68,7 +68,7 @@ class Decomposition:
         n = self.R.rows
         ok = all(is_zero(_simplify_radicals(a - b)) for a, b in zip(self.product(), self.H, strict=True))
         RtR = (self.R.T * self.R).applyfunc(_simplify_radicals)
-        ok = ok and RtR == sympy.eye(n)
+        ok = ok and all(is_zero(RtR[i, j] - (1 if i == j else 0)) for i in range(n) for j in range(n))
         ok = ok and all(is_zero(self.K[i, j]) for i in range(n) for j in range(i))
         ok = ok and is_zero(_simplify_radicals(self.K.det() - 1))
         return bool(ok)
@@ -110,6 +110,13 @@ def decompose(H: Any) -> Decomposition:
             "the decomposition needs numeric entries: the signs of the scale and of det(A − t vᵀ/v) "
             "must be decidable; substitute values for the symbols first"
         )
+    try:  # a real matrix is needed: s and R are real, and s depends on the sign of det M
+        sign(detM)
+        for e in M0:
+            if not is_zero(sympy.im(e)):
+                raise UndecidableError(f"the entry {e} is not real")
+    except UndecidableError as err:
+        raise DecompositionError(f"H_S H_A H_P needs a real matrix with decidable signs: {err}") from err
     # Cholesky MᵀM = K'ᵀK' of a rational matrix: only square roots of rationals appear (the squared
     # diagonal entries are ratios of leading principal minors); then K = K'/s and R = M K'⁻¹
     N = (M.T * M).applyfunc(sympy.cancel)

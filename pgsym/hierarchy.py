@@ -46,6 +46,7 @@ import sympy
 from sympy import ImmutableMatrix, Rational
 
 from .errors import DimensionError, ObjectTypeError, SingularTransformationError
+from .exact import sign
 from .homogeneous import is_zero, to_exact
 from .transformations import Transformation, as_exact_matrix
 
@@ -239,6 +240,13 @@ class _Dual:
 
     def __rtruediv__(self, o: Any) -> _Dual:
         return _Dual.lift(o) / self
+
+
+def _is_positive(value: sympy.Expr) -> bool:
+    """True when a number is positive (decided exactly) or a symbolic expression is positive by assumptions."""
+    if value.free_symbols:
+        return value.is_positive is True
+    return sign(value) > 0
 
 
 def _rank(rows: list[list[Fraction]]) -> int:
@@ -547,7 +555,7 @@ def classify(H: Any, tol: float | None = None) -> TransformationClass:
     off = all(is_zero(G[i, j]) for i in range(n - 1) for j in range(n - 1) if i != j)
     if not (off and all(is_zero(G[i, i] - G[0, 0]) for i in range(n - 1))):
         return classes[-2]
-    proper = sympy.cancel(A.det()).is_positive is True
+    proper = _is_positive(sympy.cancel(A.det()))
     if n == 3:
         if not is_zero(G[0, 0] - 1):
             return SIMILARITY_2D

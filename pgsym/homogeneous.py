@@ -3,7 +3,7 @@
 A homogeneous vector stands for the one-dimensional subspace it spans: ``v`` and
 ``k v`` (``k`` nonzero) describe the same projective object. This module holds
 what every projective object shares: exact coercion of coordinates, equality up
-to scale, the canonical primitive-integer form and rendering.
+to scale, the canonical form and rendering (the scalar rules are in :mod:`pgsym.exact`).
 
 >>> from pgsym import Point
 >>> Point(2, 4, 2) == Point(1, 2)
@@ -14,89 +14,22 @@ Point(1, 2, 3)
 
 from __future__ import annotations
 
-import math
 import numbers
 from collections.abc import Iterator
-from fractions import Fraction
+from fractions import Fraction  # noqa: F401 (doctests)
 from typing import Any, TypeVar
 
 import sympy
-from sympy import Expr, Integer, Matrix, Rational
-from sympy.printing.str import StrPrinter
+from sympy import Expr, Matrix
 
-from .errors import DimensionError, NonNumericError, ObjectTypeError, ZeroVectorError
+from .errors import DimensionError, ObjectTypeError, UndecidableError, ZeroVectorError
+from .exact import Scalar, all_zero, canonical_coords, format_entry, is_zero, latex, to_exact
 
 __all__ = ["HomogeneousVector", "is_zero", "to_exact"]
 
-Scalar = Any
-"""A coordinate: int, Fraction, float (read as the decimal it prints as), or a SymPy expression."""
+_format_entry = format_entry  # the name the other modules import
 
 _V = TypeVar("_V", bound="HomogeneousVector")
-
-
-def to_exact(value: Scalar) -> Expr:
-    """Convert one coordinate to an exact SymPy expression.
-
-    Integers, fractions and SymPy expressions are kept exactly. A float is read
-    as the shortest decimal that prints it (``0.1`` becomes ``1/10``), since the
-    exact binary value of a float is rarely what the user meant. Strings, ``None``,
-    booleans, NaN and infinities are rejected with :class:`NonNumericError`.
-
-    >>> to_exact(0.25), to_exact(Fraction(2, 6)), to_exact(3)
-    (1/4, 1/3, 3)
-    """
-    if isinstance(value, bool) or value is None or isinstance(value, (str, bytes)):
-        raise NonNumericError(
-            f"coordinates must be numbers or SymPy expressions, got {value!r} "
-            f"of type {type(value).__name__}; use Fraction('1/2') or sympy.Rational(1, 2) for fractions"
-        )
-    if isinstance(value, Expr):
-        result = value
-    elif isinstance(value, numbers.Integral):
-        result = Integer(int(value))
-    elif isinstance(value, Fraction):
-        result = Rational(value.numerator, value.denominator)
-    elif isinstance(value, numbers.Real):
-        as_float = float(value)
-        if not math.isfinite(as_float):
-            raise NonNumericError(f"coordinates must be finite, got {value!r}; use an ideal point for directions")
-        result = Rational(repr(as_float))
-    elif isinstance(value, numbers.Complex):
-        result = to_exact(value.real) + sympy.I * to_exact(value.imag)
-    else:
-        raise NonNumericError(
-            f"coordinates must be numbers or SymPy expressions, got {value!r} of type {type(value).__name__}"
-        )
-    if isinstance(result, sympy.Float):
-        return to_exact(float(result))
-    if result.has(sympy.nan, sympy.zoo, sympy.oo, -sympy.oo):
-        raise NonNumericError(f"coordinates must be finite, got {value!r}; use an ideal point for directions")
-    return result
-
-
-def is_zero(expr: Expr) -> bool:
-    """Exact test that an expression vanishes identically.
-
-    Rational numbers are compared directly; expressions with symbols are brought
-    to one fraction and its numerator expanded, a decision procedure for
-    rational functions (no ``simplify`` heuristics).
-
-    >>> a = sympy.Symbol("a")
-    >>> is_zero((a + 1) ** 2 - a**2 - 2 * a - 1), is_zero(a)
-    (True, False)
-    """
-    if expr.is_Rational:
-        return bool(expr == 0)
-    # a fraction vanishes iff its numerator expands to zero; no gcd (cancel) needed
-    numerator, _ = sympy.fraction(sympy.together(expr))
-    return sympy.expand(numerator) == 0
-
-
-class _ReprPrinter(StrPrinter):
-    """Prints fractions as ``S(1)/2`` so that ``repr`` evaluates back to exact numbers."""
-
-    def _print_Rational(self, expr: Rational) -> str:
-        return f"S({expr.p})/{expr.q}"
 
 
 def require(obj: object, cls: type, operation: str, hint: str = "") -> None:
@@ -109,11 +42,6 @@ def require(obj: object, cls: type, operation: str, hint: str = "") -> None:
     """
     if not isinstance(obj, cls):
         raise ObjectTypeError(f"{operation} expects {cls.__name__}s, got {type(obj).__name__} {obj!r}{hint}")
-
-
-def _format_entry(entry: Expr) -> str:
-    """The Python source of one coordinate, so that ``repr`` round-trips."""
-    return _ReprPrinter().doprint(entry)
 
 
 class HomogeneousVector:
@@ -142,7 +70,7 @@ class HomogeneousVector:
     def _check(cls, coords: tuple[Expr, ...]) -> tuple[Expr, ...]:
         if len(coords) != cls.size:
             raise DimensionError(f"a {cls._kind} needs {cls.size} homogeneous coordinates, got {len(coords)}: {coords}")
-        if all(is_zero(c) for c in coords):
+        if all_zero(coords):
             raise ZeroVectorError(f"the zero vector is not a {cls._kind}: at least one coordinate must be nonzero")
         return coords
 
@@ -188,7 +116,10 @@ class HomogeneousVector:
         a, b = self._coords, other._coords
         if len(a) != len(b):
             return False
-        return all(is_zero(a[i] * b[j] - a[j] * b[i]) for i in range(len(a)) for j in range(i + 1, len(a)))
+        try:
+            return all(is_zero(a[i] * b[j] - a[j] * b[i]) for i in range(len(a)) for j in range(i + 1, len(a)))
+        except UndecidableError as err:
+            raise UndecidableError(f"cannot decide whether {self!r} and {other!r} are equal: {err}") from err
 
     def __eq__(self, other: object) -> bool:
         if type(self) is not type(other):
@@ -203,40 +134,26 @@ class HomogeneousVector:
 
     # -- canonical form ---------------------------------------------------------
     def canonical(self: _V) -> _V:
-        """The representative with coprime integer (or polynomial) entries, first nonzero entry positive.
+        """The canonical representative: equal objects have identical canonical forms.
 
-        For rational entries this is the primitive integer vector; for symbolic
-        entries, the common denominator is cleared and the polynomial content
-        removed. Never divides by the last coordinate, so ideal points are fine.
+        For rational entries this is the primitive integer vector with its first
+        nonzero entry positive; for symbolic entries, the common denominator is
+        cleared and the polynomial content removed; algebraic entries (``sqrt(2)``,
+        ``I``) are normalised in their number field. The rules are in
+        :mod:`pgsym.exact`. Never divides by the last coordinate, so ideal points are fine.
 
         >>> from pgsym import Line
         >>> Line(Fraction(1, 2), Fraction(-1, 3), 0).canonical()
         Line(3, -2, 0)
         """
-        coords = [sympy.together(c) for c in self._coords]
-        if all(c.is_Rational for c in coords):
-            denominator = sympy.ilcm(*[c.q for c in coords]) if len(coords) > 1 else coords[0].q
-            ints = [int(c * denominator) for c in coords]
-            content = math.gcd(*ints)
-            ints = [i // content for i in ints]
-            sign = -1 if next(i for i in ints if i != 0) < 0 else 1
-            return type(self)._from_exact(tuple(Integer(sign * i) for i in ints))
-        numerators, denominators = zip(*(sympy.fraction(c) for c in coords), strict=False)
-        common = sympy.lcm_list(list(denominators))
-        polys = [sympy.expand(sympy.cancel(n * common / d)) for n, d in zip(numerators, denominators, strict=False)]
-        content = sympy.gcd_list([p for p in polys if p != 0])
-        polys = [sympy.expand(sympy.cancel(p / content)) for p in polys]
-        lead = next(p for p in polys if p != 0)
-        if sympy.Poly(lead, *sorted(lead.free_symbols, key=str) or [sympy.Symbol("_")]).LC() < 0:
-            polys = [-p for p in polys]
-        return type(self)._from_exact(tuple(polys))
+        return type(self)._from_exact(canonical_coords(self._coords))
 
     # -- rendering ----------------------------------------------------------------
     def __repr__(self) -> str:
         return f"{type(self).__name__}({', '.join(_format_entry(c) for c in self._coords)})"
 
     def _latex_entries(self) -> list[str]:
-        return [sympy.latex(c) for c in self._coords]
+        return [latex(c) for c in self._coords]
 
     def _repr_latex_(self) -> str:
         return f"${self.latex()}$"

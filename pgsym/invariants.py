@@ -34,6 +34,7 @@ from sympy import ZZ, Rational
 from sympy.polys.rings import PolyElement, ring
 
 from .errors import ObjectTypeError
+from .exact import is_zero
 from .hierarchy import CLASSES_2D, CLASSES_3D, TransformationClass, class_by_key, classify
 
 __all__ = [
@@ -102,7 +103,7 @@ class _Q:
 
 
 def _nonzero(x: Any) -> bool:
-    return not x.is_zero() if isinstance(x, _Q) else x != 0
+    return not x.is_zero() if isinstance(x, _Q) else not is_zero(sympy.sympify(x))
 
 
 def _literal_zero(x: Any) -> bool:
@@ -476,7 +477,7 @@ class Counterexample:
     @property
     def fails(self) -> bool:
         """True when some value changed, i.e. the counterexample is genuine."""
-        return any(sympy.sympify(a - b) != 0 for a, b in zip(self.after, self.before, strict=True))
+        return any(not is_zero(sympy.sympify(a - b)) for a, b in zip(self.after, self.before, strict=True))
 
 
 @dataclass(frozen=True)

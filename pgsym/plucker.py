@@ -65,6 +65,7 @@ from .errors import (
     UndefinedCrossRatioError,
     ZeroVectorError,
 )
+from .exact import all_zero, latex
 from .homogeneous import HomogeneousVector, Scalar, is_zero, require, to_exact
 from .projective_line import Point1, cross_ratio
 from .space import Plane, Point3
@@ -176,7 +177,7 @@ class Line3(HomogeneousVector):
         require(a, Point3, "Line3.join", "; use Line3.meet for two planes")
         require(b, Point3, "Line3.join", "; use Line3.meet for two planes")
         coords = _wedge(a.coords, b.coords)
-        if all(is_zero(c) for c in coords):
+        if all_zero(coords):
             raise CoincidentPointsError(
                 f"cannot join {a!r} and {b!r}: they are the same point, so no unique line passes through them"
             )
@@ -196,7 +197,7 @@ class Line3(HomogeneousVector):
         require(p, Plane, "Line3.meet", "; use Line3.join for two points")
         require(q, Plane, "Line3.meet", "; use Line3.join for two points")
         dual = _wedge(p.coords, q.coords)
-        if all(is_zero(c) for c in dual):
+        if all_zero(dual):
             raise DependentPlanesError(
                 f"cannot meet {p!r} and {q!r}: they are the same plane, so they share every line in it"
             )
@@ -338,7 +339,7 @@ class Line3(HomogeneousVector):
         """
         require(plane, Plane, "Line3.intersect_plane", "; use Line3.plane_through_point for a point")
         coords = tuple(sympy.expand(e) for e in self.matrix * plane.vector)
-        if all(is_zero(c) for c in coords):
+        if all_zero(coords):
             raise DependentPlanesError(
                 f"the line {self!r} lies in the plane {plane!r}, so they share every point of the line "
                 f"instead of meeting in one; choose a plane that does not contain the line"
@@ -356,7 +357,7 @@ class Line3(HomogeneousVector):
         """
         require(point, Point3, "Line3.plane_through_point", "; use Line3.intersect_plane for a plane")
         coords = tuple(sympy.expand(e) for e in self.dual_matrix * point.vector)
-        if all(is_zero(c) for c in coords):
+        if all_zero(coords):
             raise CollinearPointsError(
                 f"the point {point!r} lies on the line {self!r}, so infinitely many planes contain both; "
                 f"choose a point off the line"
@@ -413,7 +414,7 @@ class Line3(HomogeneousVector):
     # -- rendering --------------------------------------------------------------------------------
     def latex(self) -> str:
         """LaTeX of the Plücker matrix ``L`` (without math delimiters)."""
-        return sympy.latex(self.matrix, mat_delim="[", mat_str="matrix")
+        return latex(self.matrix, mat_delim="[", mat_str="matrix")
 
 
 def reciprocal_product(l: Line3, m: Line3) -> Expr:
@@ -504,7 +505,7 @@ def _square4(matrix: Any, what: str) -> ImmutableMatrix:
             f"a {what} is skew-symmetric (its transpose is its negative), and this one is not:\n{m}\n"
             f"build it as A*B.T - B*A.T from two points (or P*Q.T - Q*P.T from two planes)"
         )
-    if all(is_zero(e) for e in m):
+    if all_zero(m):
         raise ZeroVectorError(f"the zero matrix is no {what}: a line needs a nonzero matrix of rank 2")
     return ImmutableMatrix(m)
 
@@ -515,7 +516,7 @@ def _coords_of(m: ImmutableMatrix) -> tuple[Expr, ...]:
 
 def _two_columns(m: ImmutableMatrix, cls: type) -> tuple[Any, Any]:
     columns = [tuple(sympy.expand(e) for e in m[:, k]) for k in range(4)]
-    nonzero = [c for c in columns if not all(is_zero(e) for e in c)]
+    nonzero = [c for c in columns if not all_zero(c)]
     first = nonzero[0]
     for c in nonzero[1:]:
         if not all(is_zero(first[a] * c[b] - first[b] * c[a]) for a in range(4) for b in range(a + 1, 4)):

@@ -43,6 +43,7 @@ from .errors import (
     SingularTransformationError,
     UndefinedCrossRatioError,
 )
+from .exact import latex
 from .homogeneous import HomogeneousVector, Scalar, _format_entry, is_zero, to_exact
 from .projective_plane import Line
 
@@ -335,7 +336,7 @@ class ProjectiveMap1:
         return f"ProjectiveMap1([{rows}])"
 
     def _repr_latex_(self) -> str:
-        return f"${sympy.latex(Matrix(self._matrix))}$"
+        return f"${latex(Matrix(self._matrix))}$"
 
     @classmethod
     def from_pairs(cls, pairs: Iterable[tuple[Point1, Point1]]) -> ProjectiveMap1:

@@ -31,6 +31,7 @@ from .errors import (
     IdealPointError,
     ObjectTypeError,
 )
+from .exact import all_zero
 from .homogeneous import HomogeneousVector, Scalar, is_zero, require, to_exact
 
 __all__ = [
@@ -191,7 +192,7 @@ def join(p: Point, q: Point) -> Line:
     require(p, Point, "join", "; use meet() for two lines")
     require(q, Point, "join", "; use meet() for two lines")
     coords = cross(p.coords, q.coords)
-    if all(is_zero(c) for c in coords):
+    if all_zero(coords):
         raise CoincidentPointsError(
             f"cannot join {p!r} and {q!r}: they are the same point, so no unique line passes through them"
         )
@@ -210,7 +211,7 @@ def meet(l: Line, m: Line) -> Point:
     require(l, Line, "meet", "; use join() for two points")
     require(m, Line, "meet", "; use join() for two points")
     coords = cross(l.coords, m.coords)
-    if all(is_zero(c) for c in coords):
+    if all_zero(coords):
         raise CoincidentLinesError(f"cannot meet {l!r} and {m!r}: they are the same line, so they share every point")
     return Point._from_exact(coords)
 

@@ -29,6 +29,7 @@ from .errors import (
     ObjectTypeError,
     ZeroVectorError,
 )
+from .exact import all_zero, latex
 from .homogeneous import Scalar, _format_entry, is_zero, to_exact
 from .space import Plane, Point3
 
@@ -80,7 +81,7 @@ class Quadric:
                         f"({j}, {i}) is {matrix[j, i]}; use the symmetric part (M + M.T)/2, which gives the same "
                         f"equation"
                     )
-        if all(is_zero(v) for v in matrix):
+        if all_zero(matrix):
             raise ZeroVectorError("the zero matrix is not a quadric: every point would satisfy 0 = 0")
         self._matrix = matrix
 
@@ -164,7 +165,7 @@ class Quadric:
         if not isinstance(X, Point3):
             raise ObjectTypeError(f"polar expects a Point3, got {type(X).__name__} {X!r}")
         coords = tuple(sympy.expand(v) for v in self._matrix * X.vector)
-        if all(is_zero(v) for v in coords):
+        if all_zero(coords):
             raise DegenerateConicError(
                 f"Q X = 0 for X = {X!r}: the point is a singular point (vertex) of this degenerate quadric, "
                 f"so it has no polar or tangent plane"
@@ -219,7 +220,7 @@ class Quadric:
 
     def latex(self) -> str:
         """LaTeX of the matrix (without math delimiters)."""
-        return sympy.latex(self._matrix, mat_delim="[")
+        return latex(self._matrix, mat_delim="[")
 
     def _repr_latex_(self) -> str:
         return f"${self.latex()}$"

@@ -31,6 +31,7 @@ from .errors import (
     IdealPointError,
     ObjectTypeError,
 )
+from .exact import all_zero
 from .homogeneous import HomogeneousVector, Scalar, is_zero, require
 
 __all__ = [
@@ -176,7 +177,7 @@ class Plane(HomogeneousVector):
         >>> Plane(0, 0, 0, 5).is_at_infinity, Plane(0, 0, 1, 5).is_at_infinity
         (True, False)
         """
-        return all(is_zero(c) for c in self._coords[:3])
+        return all_zero(self._coords[:3])
 
     def contains(self, point: Point3) -> bool:
         """True when ``point`` lies on the plane.
@@ -244,7 +245,7 @@ def plane_through(p: Point3, q: Point3, r: Point3) -> Plane:
     for x in (p, q, r):
         require(x, Point3, "plane_through", "; use point_on_planes() for three planes")
     coords = triple_cross(p.coords, q.coords, r.coords)
-    if all(is_zero(c) for c in coords):
+    if all_zero(coords):
         pair = _coincident_pair((p, q, r))
         detail = f" (points {pair[0] + 1} and {pair[1] + 1} coincide)" if pair else ""
         raise CollinearPointsError(
@@ -272,7 +273,7 @@ def point_on_planes(a: Plane, b: Plane, c: Plane) -> Point3:
     for x in (a, b, c):
         require(x, Plane, "point_on_planes", "; use plane_through() for three points")
     coords = triple_cross(a.coords, b.coords, c.coords)
-    if all(is_zero(v) for v in coords):
+    if all_zero(coords):
         pair = _coincident_pair((a, b, c))
         detail = f"planes {pair[0] + 1} and {pair[1] + 1} are the same plane" if pair else "they share a line"
         raise DependentPlanesError(

@@ -28,6 +28,7 @@ import sympy
 from sympy import Expr, ImmutableMatrix, Matrix
 
 from .errors import CollinearPointsError, DimensionError, ObjectTypeError, SingularTransformationError
+from .exact import latex
 from .homogeneous import _format_entry, is_zero, to_exact
 from .projective_plane import Line, Point, collinear
 
@@ -273,7 +274,7 @@ class Transformation:
 
     def latex(self) -> str:
         """LaTeX of the matrix (without math delimiters)."""
-        return sympy.latex(self._matrix)
+        return latex(self._matrix)
 
     def _repr_latex_(self) -> str:
         return f"${self.latex()}$"

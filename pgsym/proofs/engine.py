@@ -39,6 +39,7 @@ import sympy
 from sympy.polys.rings import ring
 
 from ..errors import PgsymError
+from ..exact import is_zero
 from . import algebra as alg
 from .claims import Claim, Node
 from .verdicts import Certificate, Condition, Counterexample, Verdict
@@ -343,7 +344,7 @@ def _check_point(claim: Claim, values: dict[Node, Any], modp: bool) -> tuple[str
             if modp:
                 rk, rs, cs = _rank_mod(rows, PRIME)
             else:
-                rk = sympy.Matrix(rows).rank()
+                rk = sympy.Matrix(rows).rank(iszerofunc=lambda v: is_zero(sympy.sympify(v)))
                 rs = cs = ()
             if rk > r:
                 residuals.append(Fraction(rk - r) if not modp else rk - r)
@@ -539,7 +540,7 @@ def _core_objects(claim: Claim, point: dict[Any, Any]) -> dict[Node, Any]:
         elif op == "apply":
             objs[node] = vector_class[node.kind](*(a[0] * a[1].vector))
         elif op == "apply_line":
-            if a[0].det() == 0:
+            if is_zero(a[0].det()):
                 raise _CoreDegenerate(f"{node.args[0].name} is singular")
             objs[node] = vector_class[node.kind](*(a[0].adjugate().T * a[1].vector))
         elif op == "apply_conic":
