@@ -1,7 +1,9 @@
 """The structure of the built book in a real browser: short visible code cells, exercises with solutions.
 
 Uses the local server and the Chromium launch of the browser test. The lecture chapters are the pages of
-the parts "Part I" and "Part II" of the table of contents; the rule on code cells holds on every page.
+Parts I to IV of the table of contents (the lecture's mathematics, its proofs and its two exercises), not
+the introduction, the instructors' and engineers' parts or the appendix; the rule on code cells holds on
+every page.
 """
 
 from __future__ import annotations
@@ -18,9 +20,10 @@ MIN_EXERCISES = 4
 
 
 def lecture_chapters() -> list[str]:
-    """The chapters that follow the lecture: the pages of Part I and Part II."""
+    """The chapters that follow the lecture: the pages of Parts I to IV."""
     toc = yaml.safe_load((ROOT / "_toc.yml").read_text())
-    parts = [p for p in toc["parts"] if p.get("caption", "").split(":")[0] in ("Part I", "Part II")]
+    lecture = ("Part I", "Part II", "Part III", "Part IV")
+    parts = [p for p in toc["parts"] if p.get("caption", "").split(":")[0] in lecture]
     return [chapter["file"] for part in parts for chapter in part["chapters"]]
 
 
@@ -42,7 +45,8 @@ EXERCISES = """() => Array.from(document.querySelectorAll("div.exercise")).map(e
 
 def test_the_lecture_chapters_are_found():
     chapters = lecture_chapters()
-    assert "book/homogeneous-coordinates" in chapters and "book/lines-in-3d" in chapters
+    assert "book/homogeneous-coordinates" in chapters and "book/rectification" in chapters
+    assert len(chapters) == 17 and "book/exercise-sheets" not in chapters and "book/pgsym-errors" not in chapters
     assert "book/intro" not in chapters and all(page in toc_pages() for page in chapters)
 
 
