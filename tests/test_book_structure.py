@@ -8,13 +8,10 @@ every page.
 
 from __future__ import annotations
 
-from pathlib import Path
-
 import pytest
 import yaml
-from test_browser import browser, open_page, server, toc_pages  # noqa: F401 (shared fixtures)
+from _browser import ROOT, open_page, toc_pages
 
-ROOT = Path(__file__).resolve().parents[1]
 MAX_VISIBLE_LINES = 25
 MIN_EXERCISES = 4
 
@@ -51,7 +48,7 @@ def test_the_lecture_chapters_are_found():
 
 
 @pytest.mark.parametrize("page_path", toc_pages())
-def test_no_visible_code_cell_is_longer_than_25_lines(browser, server, page_path):  # noqa: F811
+def test_no_visible_code_cell_is_longer_than_25_lines(browser, server, page_path):
     page, _ = open_page(browser, f"{server}/{page_path}.html")
     try:
         counts = page.evaluate(VISIBLE_CODE_LINES)
@@ -61,7 +58,7 @@ def test_no_visible_code_cell_is_longer_than_25_lines(browser, server, page_path
         page.close()
 
 
-def test_the_line_count_sees_a_long_cell_once_it_is_opened(browser, server):  # noqa: F811
+def test_the_line_count_sees_a_long_cell_once_it_is_opened(browser, server):
     # the import cell of the 3D hierarchy chapter is longer than 25 lines and collapsed: opening it must
     # make the check above fail, so that the check can fail at all
     page, _ = open_page(browser, f"{server}/book/hierarchy-3d.html")
@@ -76,7 +73,7 @@ def test_the_line_count_sees_a_long_cell_once_it_is_opened(browser, server):  # 
 
 
 @pytest.mark.parametrize("page_path", lecture_chapters())
-def test_chapter_has_four_exercises_with_dropdown_solutions(browser, server, page_path):  # noqa: F811
+def test_chapter_has_four_exercises_with_dropdown_solutions(browser, server, page_path):
     page, _ = open_page(browser, f"{server}/{page_path}.html")
     try:
         # sphinx-togglebutton collapses the dropdowns after load: wait for it before looking

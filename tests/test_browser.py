@@ -8,18 +8,7 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
-import yaml
-from _browser import ROOT, PageProblems, open_page
-
-
-def toc_pages() -> list[str]:
-    """Every page of the table of contents, as a path below the book root without suffix."""
-    toc = yaml.safe_load((ROOT / "_toc.yml").read_text())
-    pages = [toc["root"]]
-    for part in toc.get("parts", []):
-        pages += [chapter["file"] for chapter in part["chapters"]]
-    return pages
-
+from _browser import ROOT, PageProblems, open_page, toc_pages
 
 # chapters are notebooks; prose pages (the introduction, "Using this book") have no boxes to check
 CHAPTERS = [page for page in toc_pages() if (ROOT / f"{page}.ipynb").is_file()]
