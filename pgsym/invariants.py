@@ -33,7 +33,7 @@ import sympy
 from sympy import ZZ, Rational
 from sympy.polys.rings import PolyElement, ring
 
-from .errors import ObjectTypeError
+from .errors import DegenerateConfigurationError, IdealPointError, ObjectTypeError, UndefinedCrossRatioError
 from .exact import is_zero
 from .hierarchy import CLASSES_2D, CLASSES_3D, TransformationClass, class_by_key, classify
 
@@ -164,8 +164,17 @@ def _dot(u: Sequence[Any], v: Sequence[Any]) -> Any:
     return sum((a * b for a, b in zip(u, v, strict=True)), 0)
 
 
+def _finite_w(x: Sequence[Any]) -> Any:
+    """The last coordinate of a finite point; an ideal point raises (a division would give zoo/nan)."""
+    w = x[-1]
+    if (w.n == 0) if isinstance(w, _Q) else is_zero(w):
+        raise IdealPointError(f"the point {list(x)} is ideal (last coordinate zero): it has no Euclidean position")
+    return w
+
+
 def _euclid(x: Sequence[Any]) -> list[Any]:
-    return [c / x[-1] for c in x[:-1]]
+    w = _finite_w(x)
+    return [c / w for c in x[:-1]]
 
 
 # -- Euclidean quantities of finite points (homogeneous input) ---------------------------------------
@@ -186,7 +195,7 @@ def signed_area(p: Sequence[Any], q: Sequence[Any], r: Sequence[Any]) -> Any:
     1/2
     """
     p, q, r = _ex(p), _ex(q), _ex(r)
-    return _det(_tr([p, q, r])) / (2 * p[2] * q[2] * r[2])
+    return _det(_tr([p, q, r])) / (2 * _finite_w(p) * _finite_w(q) * _finite_w(r))
 
 
 def signed_volume(p: Sequence[Any], q: Sequence[Any], r: Sequence[Any], s: Sequence[Any]) -> Any:
@@ -196,7 +205,7 @@ def signed_volume(p: Sequence[Any], q: Sequence[Any], r: Sequence[Any], s: Seque
     1/6
     """
     p, q, r, s = _ex(p), _ex(q), _ex(r), _ex(s)
-    return -_det(_tr([p, q, r, s])) / (6 * p[3] * q[3] * r[3] * s[3])
+    return -_det(_tr([p, q, r, s])) / (6 * _finite_w(p) * _finite_w(q) * _finite_w(r) * _finite_w(s))
 
 
 def cos2_angle(l: Sequence[Any], m: Sequence[Any]) -> Any:
@@ -206,7 +215,12 @@ def cos2_angle(l: Sequence[Any], m: Sequence[Any]) -> Any:
     1/2
     """
     u, v = _ex(l[:-1]), _ex(m[:-1])
-    return _dot(u, v) * _dot(u, v) / (_dot(u, u) * _dot(v, v))
+    uu, vv = _dot(u, u), _dot(v, v)
+    if not (_nonzero(uu) and _nonzero(vv)):
+        raise DegenerateConfigurationError(
+            "an angle needs two ordinary lines (planes) with real directions: the line (plane) at infinity "
+            "and isotropic lines have a normal of zero length")
+    return _dot(u, v) * _dot(u, v) / (uu * vv)
 
 
 def collinear_cross_ratio(a: Sequence[Any], b: Sequence[Any], c: Sequence[Any], d: Sequence[Any]) -> Any:
@@ -220,12 +234,17 @@ def collinear_cross_ratio(a: Sequence[Any], b: Sequence[Any], c: Sequence[Any], 
     """
     a, b, c, d = _ex(a), _ex(b), _ex(c), _ex(d)
     base = _cross(a, b)
-    k = next(i for i in range(3) if _nonzero(base[i]))
+    k = next((i for i in range(3) if _nonzero(base[i])), None)
+    if k is None:
+        raise UndefinedCrossRatioError("the cross-ratio needs A ≠ B: the first two points coincide")
 
     def br(x: Sequence[Any], y: Sequence[Any]) -> Any:
         return _cross(x, y)[k]
 
-    return br(a, c) * br(b, d) / (br(a, d) * br(b, c))
+    denominator = br(a, d) * br(b, c)
+    if not _nonzero(denominator):
+        raise UndefinedCrossRatioError("the cross-ratio is undefined: A = D or B = C makes its denominator zero")
+    return br(a, c) * br(b, d) / denominator
 
 
 # -- configurations and their images ------------------------------------------------------------------

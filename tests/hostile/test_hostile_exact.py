@@ -15,16 +15,20 @@ from pgsym import (
     CoincidentPointsError,
     Conic,
     DecompositionError,
+    DegenerateConfigurationError,
+    IdealPointError,
     Line,
     NonNumericError,
     Point,
     Transformation,
     UndecidableError,
+    UndefinedCrossRatioError,
     ZeroVectorError,
     circular_points,
     classify,
     conic_through,
     decompose,
+    invariants,
     is_zero,
     join,
     meet,
@@ -307,3 +311,25 @@ def test_algebraic_rescaling_is_the_same_point(v, k, choice):
     scaled = Point(*(SPELLINGS[k][c] * x for c, x in zip(choice, v, strict=True)))
     assert scaled == Point(*v)
     assert scaled.canonical().coords == Point(*v).canonical().coords
+
+
+@pytest.mark.parametrize(
+    ("call", "error"),
+    [
+        # an ideal point has no position: 1/0 would have given SymPy's zoo and a nan distance
+        (lambda: invariants.distance_squared([0, 0, 1], [1, 2, 0]), IdealPointError),
+        (lambda: invariants.signed_area([0, 0, 1], [1, 0, 0], [0, 1, 1]), IdealPointError),
+        (lambda: invariants.signed_volume([0, 0, 0, 1], [1, 0, 0, 0], [0, 1, 0, 1], [0, 0, 1, 1]), IdealPointError),
+        # l∞ = (0, 0, 1) has normal (0, 0); the isotropic line (1, i, 0) has normal·normal = 1 + i² = 0
+        (lambda: invariants.cos2_angle([0, 0, 1], [1, 0, 0]), DegenerateConfigurationError),
+        (lambda: invariants.cos2_angle([1, sympy.I, 0], [1, 0, 0]), DegenerateConfigurationError),
+        # A = B, and A = D (denominator [AD][BC] = 0)
+        (lambda: invariants.collinear_cross_ratio([0, 0, 1], [0, 0, 2], [1, 0, 1], [2, 0, 1]),
+         UndefinedCrossRatioError),
+        (lambda: invariants.collinear_cross_ratio([0, 0, 1], [1, 0, 1], [2, 0, 1], [0, 0, 3]),
+         UndefinedCrossRatioError),
+    ],
+)
+def test_euclidean_quantities_of_degenerate_input_are_named_errors(call, error):
+    with pytest.raises(error):
+        call()
