@@ -221,13 +221,21 @@ def classify_cells(cells: list[tuple[str, list[str]]]) -> list[dict[str, Any]]:
     True
     >>> classify_cells([("1 + 1", ["no-live"])])[0]["reason"]
     'Marked to run only locally'
+    >>> cells = classify_cells([("import sympy as sp", []), ("import cv2\\nimport sympy as sp\\ncv2.imread('a')", []),
+    ...                         ("sp.Integer(2)", [])])
+    >>> [c["live"] for c in cells]      # the skipped cell's sympy import binds sp as the page has it
+    [True, False, True]
     """
     tainted: dict[str, str] = {}  # name -> why it cannot be used in the page ("needs NumPy, which ...")
+    # name -> module it is bound to by an import the page has run: a skipped cell that imports the same
+    # module under the same name (``import sympy as sp`` again) leaves that name as the notebook has it
+    page_imports: dict[str, str] = {}
     result = []
     for source, tags in cells:
         why: str | None = None
         reason: str | None = None
         stubs: list[str] = []
+        imports: dict[str, str] = {}  # this cell's names bound by imports of modules that load in the page
         try:
             tree = ast.parse(source)
         except SyntaxError:
@@ -244,6 +252,7 @@ def classify_cells(cells: list[tuple[str, list[str]]]) -> list[dict[str, Any]]:
                             tainted[name] = _needs(package)
                     elif name:
                         tainted.pop(name, None)
+                        imports[name] = module
                 continue
             package = next((p for p in map(missing_package, _imported(stmt)) if p), None)
             used = sorted(loaded & tainted.keys())
@@ -270,8 +279,15 @@ def classify_cells(cells: list[tuple[str, list[str]]]) -> list[dict[str, Any]]:
         elif FORCE_ON in tags:
             why = reason = None
         if why is not None and tree is not None:
+            assigned = {n for stmt in tree.body if not isinstance(stmt, ast.Import | ast.ImportFrom)
+                        for n in _names(stmt)[0]}
             for name in _names(tree)[0]:
-                tainted[name] = why
+                if name in assigned or page_imports.get(name) != imports.get(name):
+                    tainted[name] = why
+        elif tree is not None:
+            for name in _names(tree)[0]:
+                page_imports.pop(name, None)
+            page_imports.update(imports)
         result.append({"source": source, "live": reason is None, "reason": reason or "",
                        "stubs": list(dict.fromkeys(stubs))})
     return result
