@@ -135,17 +135,14 @@ def _matvec(M: np.ndarray, x: Any, function: str, what: str, out: np.ndarray | N
             f"got an array of shape {a.shape}"
         )
     if M.ndim == 2 and a.ndim == 2 and axis in (0, -2):
-        # component-major (k, N): matrix products over column blocks, each checked while in cache
+        # component-major (k, N): one matrix product (column blocks would be strided outputs, which
+        # matmul cannot hand to BLAS), then one dot product per contiguous component row
         result = np.empty(a.shape) if out is None else out
         if result.shape != a.shape:
             raise DimensionError(f"{function}: out has shape {result.shape}, the result has shape {a.shape}")
-        suspect = False
         with np.errstate(over="ignore", invalid="ignore"):
-            for start in range(0, a.shape[1], CHUNK):
-                block = result[:, start : start + CHUNK]
-                np.matmul(M, a[:, start : start + CHUNK], out=block)
-                suspect = suspect or not _sum_finite(block.T)  # components on the last axis
-        return result, suspect
+            np.matmul(M, a, out=result)
+        return result, not _sum_finite(result.T)  # components on the last axis
     a = np.moveaxis(a, axis, -1)
     fast_out = out is None or out.flags.c_contiguous
     if M.ndim == 2 and a.ndim == 2 and a.flags.c_contiguous and fast_out:
