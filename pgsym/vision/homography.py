@@ -278,10 +278,15 @@ def dlt_homography(src: Any, dst: Any) -> np.ndarray:
     Tp_inv = np.array([[1.0 / sd, 0.0, cu], [0.0, 1.0 / sd, cv], [0.0, 0.0, 1.0]])
     with np.errstate(over="ignore", under="ignore", invalid="ignore"):
         H = Tp_inv @ Hn @ T
+    return _denormalized(H, "dlt_homography")
+
+
+def _denormalized(H: np.ndarray, function: str) -> np.ndarray:
+    """Homographies taken back from the normalised frames, at unit norm; entries past float64 raise."""
     if not np.isfinite(H).all():
         raise NonFiniteError(
-            "dlt_homography: the homography between these point sets has entries beyond the float64 range "
-            "(the two sets differ in scale by more than about 1e300); rescale one of them"
+            f"{function}: the homography between these point sets has entries beyond the float64 range "
+            "(source and destination differ in scale by more than about 1e300); rescale one of them"
         )
     return normalize_homography(H)
 
@@ -443,9 +448,4 @@ def homographies_from_four(src: Any, dst: Any) -> np.ndarray:
     Tq_inv[:, 2, 2] = 1.0
     with np.errstate(over="ignore", under="ignore", invalid="ignore"):
         H = Tq_inv @ Hn @ Tp
-    if not np.isfinite(H).all():
-        raise NonFiniteError(
-            "homographies_from_four: some homography has entries beyond the float64 range (source and "
-            "destination differ in scale by more than about 1e300); rescale them"
-        )
-    return normalize_homography(H)
+    return _denormalized(H, "homographies_from_four")
