@@ -13,7 +13,7 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 import pgsym
-from pgsym.cli_parsing import parse_coordinates, parse_number, parse_points
+from pgsym.cli._common import parse_coordinates, parse_number, parse_points
 from pgsym.errors import InputLimitError, PgsymError
 from pgsym.limits import MAX_DIGITS, MAX_EXPONENT
 
@@ -92,12 +92,12 @@ def test_an_unexpected_exception_is_one_line_not_a_traceback(monkeypatch):
     # the last resort for bugs: no hostile input reaches it (tests/hostile), so provoke it by hand
     from click.testing import CliRunner
 
-    import pgsym.cli
+    import pgsym.cli.geometry
 
     def broken(obj):  # type: ignore[no-untyped-def]
         raise RuntimeError("a bug\nsecond line")
 
-    monkeypatch.setattr(pgsym.cli, "_describe", broken)
+    monkeypatch.setattr(pgsym.cli.geometry, "_describe", broken)
     result = CliRunner().invoke(pgsym.cli.main, ["join", "0,0", "1,1"])
     assert result.exit_code == 1 and isinstance(result.exception, SystemExit)
     assert result.stderr == ("Error: internal error (RuntimeError: a bug); "
@@ -107,13 +107,13 @@ def test_an_unexpected_exception_is_one_line_not_a_traceback(monkeypatch):
 def test_a_pgsym_error_anywhere_in_a_command_is_one_clean_line(monkeypatch):
     from click.testing import CliRunner
 
-    import pgsym.cli
+    import pgsym.cli.geometry
     from pgsym.errors import UndecidableError
 
     def undecidable(obj):  # type: ignore[no-untyped-def]
         raise UndecidableError("cannot decide")
 
-    monkeypatch.setattr(pgsym.cli, "_describe", undecidable)
+    monkeypatch.setattr(pgsym.cli.geometry, "_describe", undecidable)
     result = CliRunner().invoke(pgsym.cli.main, ["meet", "1,0,0", "0,1,0"])
     assert (result.exit_code, result.stderr) == (1, "Error: UndecidableError: cannot decide\n")
 
@@ -126,7 +126,7 @@ def test_the_exact_commands_read_the_one_number_grammar():
     assert "canonical: (10000, 9, -9)" in result.stdout
 
 
-# The one grammar of numbers (pgsym.cli_parsing), as properties: exact values, limits on the text.
+# The one grammar of numbers (pgsym.cli._common), as properties: exact values, limits on the text.
 MANTISSAS = st.integers(-(10**MAX_DIGITS) + 1, 10**MAX_DIGITS - 1)
 EXPONENTS = st.integers(-MAX_EXPONENT, MAX_EXPONENT)
 

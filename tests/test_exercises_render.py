@@ -11,8 +11,10 @@ from xml.etree import ElementTree
 
 import pytest
 
+from pgsym.atomic import write_new_folder
+from pgsym.errors import OutputError
 from pgsym.exercises import render_html, render_ipynb, render_md, render_moodle, render_tex
-from pgsym.exercises.output import OutputError, render_all, write_atomically
+from pgsym.exercises.output import render_all
 from pgsym.exercises.render_tex import TeXMissingError, compile_pdf
 from pgsym.exercises.sheets import build_sheets
 
@@ -137,16 +139,16 @@ def test_atomic_output_leaves_nothing_on_error(tmp_path, sheets, monkeypatch):
 
     monkeypatch.setattr("pgsym.exercises.render_tex.compile_pdf", boom)
     with pytest.raises(TeXMissingError):
-        write_atomically(tmp_path / "out", lambda d: render_all(sheets, [("join", 1)], ["md", "pdf"], d))
+        write_new_folder(tmp_path / "out", lambda d: render_all(sheets, [("join", 1)], ["md", "pdf"], d))
     assert list(tmp_path.iterdir()) == []
     (tmp_path / "full").mkdir()
     (tmp_path / "full" / "x").write_text("old")
     with pytest.raises(OutputError, match="not empty"):
-        write_atomically(tmp_path / "full", lambda d: None)
+        write_new_folder(tmp_path / "full", lambda d: None)
     blocker = tmp_path / "file"
     blocker.write_text("")
     with pytest.raises(OutputError, match="cannot write"):
-        write_atomically(blocker / "out", lambda d: None)
+        write_new_folder(blocker / "out", lambda d: None)
 
 
 def test_html_output_copies_mathjax(tmp_path, sheets):

@@ -7,19 +7,14 @@ output: the target is either complete or untouched.
 
 from __future__ import annotations
 
-import os
-import shutil
-import signal
-import tempfile
-import threading
-from collections.abc import Callable, Iterator, Sequence
-from contextlib import contextmanager
+from collections.abc import Callable, Sequence
 from pathlib import Path
 
-from ..errors import OutputError
 from . import render_html, render_ipynb, render_md, render_moodle, render_tex
 from .model import Sheet
 from .sheets import manifest_json
+
+__all__ = ["FORMATS", "parse_formats", "render_all"]
 
 FORMATS = ("md", "tex", "pdf", "html", "ipynb", "moodle")
 
@@ -74,54 +69,3 @@ def render_all(sheets: Sequence[Sheet], topics: Sequence[tuple[str, int]], forma
     if "moodle" in formats:
         write("moodle.xml", render_moodle.render_quiz(sheets, solutions))
     return written
-
-
-def write_atomically(out: str | Path, fill: Callable[[Path], object]) -> Path:
-    """Create ``out`` with the content ``fill(tmp)`` writes into a temporary folder, or leave nothing.
-
-    ``out`` must not exist or be an empty folder (so earlier results are never mixed with new ones).
-    """
-    target = Path(out)
-    if target.exists() and (not target.is_dir() or any(target.iterdir())):
-        raise OutputError(f"the output folder {str(target)!r} exists and is not empty; choose a new folder")
-    parent = target.parent if str(target.parent) else Path(".")
-    try:
-        parent.mkdir(parents=True, exist_ok=True)
-        tmp = Path(tempfile.mkdtemp(prefix=f".{target.name}.partial-", dir=parent))
-        mask = os.umask(0)
-        os.umask(mask)
-        tmp.chmod(0o777 & ~mask)  # mkdtemp makes the folder private; the result should not be
-    except OSError as err:
-        raise OutputError(f"cannot write into {str(parent)!r}: {err.strerror or err}") from None
-    try:
-        with _terminate_as_exception():
-            fill(tmp)
-            if target.exists():
-                target.rmdir()
-            os.replace(tmp, target)
-    except BaseException:
-        shutil.rmtree(tmp, ignore_errors=True)
-        raise
-    return target
-
-
-class Terminated(BaseException):
-    """SIGTERM arrived while writing (raised so the temporary folder is removed before exiting)."""
-
-
-@contextmanager
-def _terminate_as_exception() -> Iterator[None]:
-    """Turn SIGTERM into :class:`Terminated` while writing (a killed run leaves no ``.partial`` folder);
-    only in the main thread, where Python can install signal handlers."""
-    if threading.current_thread() is not threading.main_thread():
-        yield
-        return
-
-    def handler(signum: int, frame: object) -> None:
-        raise Terminated(f"stopped by signal {signum}")
-
-    previous = signal.signal(signal.SIGTERM, handler)
-    try:
-        yield
-    finally:
-        signal.signal(signal.SIGTERM, previous)

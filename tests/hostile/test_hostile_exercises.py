@@ -348,7 +348,7 @@ def test_tex_loop_stops_names_the_student_and_leaves_nothing(tmp_path, monkeypat
 
 
 def test_tex_time_limit_is_documented():
-    from pgsym.exercises_cli import sheet_command
+    from pgsym.cli.exercises import sheet_command
 
     assert render_tex.tex_time_limit(10) == render_tex.TEX_BASE_SECONDS + 10 * render_tex.TEX_SECONDS_PER_SHEET
     epilog = " ".join(sheet_command.epilog.split())
@@ -580,13 +580,13 @@ def test_answers_file_errors_are_named(tmp_path):
 def test_sigterm_during_writing_leaves_nothing(tmp_path):
     """A run killed with SIGTERM while writing removes its temporary folder (a real process: the signal)."""
     script = ("import os, signal, sys, time\n"
-              "from pgsym.exercises.output import write_atomically, Terminated\n"
+              "from pgsym.atomic import write_new_folder, Terminated\n"
               "def fill(tmp):\n"
               "    (tmp / 'half.txt').write_text('x')\n"
               "    os.kill(os.getpid(), signal.SIGTERM)\n"
               "    time.sleep(30)\n"
               "try:\n"
-              f"    write_atomically({str(tmp_path / 'out')!r}, fill)\n"
+              f"    write_new_folder({str(tmp_path / 'out')!r}, fill)\n"
               "except Terminated:\n"
               "    sys.exit(143)\n")
     result = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, timeout=60)

@@ -14,9 +14,9 @@ import sys
 
 import click
 
-from .cli_parsing import DecimalRange
-from .errors import UnknownClaimError
-from .limits import MAX_ARGUMENT_CHARS
+from ..errors import UnknownClaimError
+from ..limits import MAX_ARGUMENT_CHARS
+from ._common import DecimalRange
 
 __all__ = ["prove_command"]
 
@@ -46,7 +46,7 @@ def prove_command(names: tuple[str, ...], list_: bool, all_: bool, as_json: bool
 
     Examples: pgsym prove --list; pgsym prove pappus desargues; pgsym prove --all --json
     """
-    from .proofs.catalogue import CATALOGUE, catalogue_names, prove  # SymPy loads only when a command runs
+    from ..proofs.catalogue import CATALOGUE, catalogue_names, prove  # SymPy loads only when a command runs
 
     if list_:
         if as_json:

@@ -7,30 +7,25 @@ written under a temporary name inside the output folder and then renamed into pl
 (a symlink in the way is replaced, never written through), so a failed run leaves no
 partial output and nothing is ever written outside the output folder. Images are read
 with the limits of :func:`pgsym.vision.images.read_image`; points, lines and sizes with
-the one grammar of :mod:`pgsym.cli_parsing`.
+the one grammar of :mod:`pgsym.cli._common`.
 """
 
 from __future__ import annotations
 
-import os
-import shutil
-import tempfile
 from pathlib import Path
 
 import click
 
-from .cli_parsing import LINES, POINTS, SIZE, DecimalRange, IntegerRange, parse_lines, parse_points, parse_size
-from .csv_cells import csv_text
-from .errors import OutputError, PgsymError
+from ..atomic import exists, replace_file, replace_files_in_folder
+from ..csv_cells import csv_text
+from ..errors import PgsymError
+from ._common import LINES, POINTS, SIZE, DecimalRange, IntegerRange, fail, parse_lines, parse_points, parse_size
 
 __all__ = ["harris_command", "parse_lines", "parse_points", "parse_size", "rectify_command"]
 
 _IMAGE_SUFFIXES = {".png", ".jpg", ".jpeg", ".bmp", ".tif", ".tiff"}
 _CONTEXT = {"help_option_names": ["-h", "--help"]}
 
-
-def _fail(err: PgsymError) -> click.ClickException:
-    return click.ClickException(f"{type(err).__name__}: {err}")
 
 
 def _check_output_file(out: Path) -> None:
@@ -39,7 +34,7 @@ def _check_output_file(out: Path) -> None:
             f"cannot tell the image format from {out.name!r}: use one of {', '.join(sorted(_IMAGE_SUFFIXES))}",
             param_hint="'--out'",
         )
-    if _exists(out) and out.is_dir():
+    if exists(out) and out.is_dir():
         raise click.BadParameter(f"{str(out)!r} is a directory; give a file name", param_hint="'--out'")
 
 
@@ -83,93 +78,27 @@ def harris_command(image: Path, out: Path, k: float, sigma: float, threshold: fl
       pgsym harris photo.png --out harris-out --sigma 1.5 --threshold 0.05
     """
     out = Path(out)
-    if _exists(out) and not out.is_dir():
+    if exists(out) and not out.is_dir():
         raise click.BadParameter(f"{str(out)!r} exists and is not a directory", param_hint="'--out'")
     try:
-        from .vision.harris import harris
-        from .vision.images import read_image
+        from ..vision.harris import harris
+        from ..vision.images import read_image
 
         result = harris(read_image(image), k=k, sigma=sigma, threshold=threshold, min_distance=min_distance)
         files = _harris_files(result)
-        _write_into_folder(out, files)
+        replace_files_in_folder(out, files, lambda tmp: _write_harris(tmp, files))
     except PgsymError as err:
-        raise _fail(err) from None
+        raise fail(err) from None
     click.echo(
         f"{len(result.corners)} corners (k={k:g}, sigma={sigma:g}, threshold={threshold:g} * max R, "
         f"min distance {min_distance}) written to {out}/corners.csv; {len(files) - 1} images in {out}"
     )
 
 
-def _exists(path: Path) -> bool:
-    """``path.exists()``, but False where it cannot even be looked at (name too long, no permission):
-    writing there then fails with a named error."""
-    try:
-        return path.exists()
-    except OSError:
-        return False
-
-
-def _make_folder(folder: Path) -> list[Path]:
-    """Create ``folder`` and its missing parents; return the folders created, outermost first."""
-    missing = []
-    f = folder
-    while not _exists(f) and f != f.parent:
-        missing.append(f)
-        f = f.parent
-    if _exists(f) and not f.is_dir():
-        raise OutputError(f"cannot write into {str(f)!r}: it is a file, not a folder")
-    folder.mkdir(parents=True, exist_ok=True)
-    return missing[::-1]
-
-
-def _remove_created(created: list[Path]) -> None:
-    for f in reversed(created):
-        try:
-            f.rmdir()  # only if still empty: never deletes anything the user put there meanwhile
-        except OSError:
-            return
-
-
-def _os_error(err: OSError, target: Path) -> OutputError:
-    where = err.filename if isinstance(err.filename, str) else str(target)
-    return OutputError(f"cannot write {where!r}: {err.strerror or err}")
-
-
-def _write_into_folder(out: Path, files: dict[str, object]) -> None:
-    """Write every file into a temporary folder inside ``out``, then move each into place.
-
-    Nothing is written outside ``out``; a run that fails leaves neither partial files nor
-    folders it created behind (existing files are replaced only after all were written).
-    """
-    created: list[Path] = []
-    tmp: Path | None = None
-    try:
-        taken = [name for name in files if _exists(out / name) and (out / name).is_dir()
-                 and not (out / name).is_symlink()]
-        if taken:
-            raise OutputError(f"cannot write {str(out / taken[0])!r}: a folder of that name is in the way")
-        created = _make_folder(out)
-        tmp = Path(tempfile.mkdtemp(prefix=".pgsym-harris-", dir=out))
-        _write_harris(tmp, files)
-        for name in files:
-            os.replace(tmp / name, out / name)  # replaces a symlink itself, never the file it points to
-    except OSError as err:
-        if tmp is not None:
-            shutil.rmtree(tmp, ignore_errors=True)
-            tmp = None
-        _remove_created(created)
-        if isinstance(err, OutputError):  # already named (OutputError is an OSError too)
-            raise
-        raise _os_error(err, out) from None
-    finally:
-        if tmp is not None:
-            shutil.rmtree(tmp, ignore_errors=True)
-
-
 def _harris_files(result) -> dict[str, object]:  # type: ignore[no-untyped-def]
     import numpy as np
 
-    from .vision.images import display_uint8
+    from ..vision.images import display_uint8
 
     files: dict[str, object] = {}
     signed = ["Ix", "Iy", "Ixy", "Sxy", "det", "response"]
@@ -206,7 +135,7 @@ def corner_overlay(image, corners):  # type: ignore[no-untyped-def]
 
 
 def _write_harris(folder: Path, files: dict[str, object]) -> None:
-    from .vision.images import write_image
+    from ..vision.images import write_image
 
     for name, content in files.items():
         if isinstance(content, str):
@@ -259,49 +188,29 @@ def rectify_command(image: Path, out: Path, method: str, points, lines, size) ->
     out = Path(out)
     _check_output_file(out)
     try:
-        from .vision.images import read_image
+        from ..vision.images import read_image
 
         img = read_image(image)
         H, out_size = _rectifying_homography(img.shape, method, points, lines, size)
-        from .vision.warp import warp
+        from ..vision.warp import warp
 
         rectified = warp(img, H, out_size)
         _write_file(out, rectified)
     except PgsymError as err:
-        raise _fail(err) from None
+        raise fail(err) from None
     click.echo(f"rectified ({method}) {out_size[0]}x{out_size[1]} image written to {out}")
 
 
 def _write_file(out: Path, image) -> None:  # type: ignore[no-untyped-def]
-    """Write an image to a temporary file next to ``out``, then rename it to ``out`` (atomic)."""
-    from .vision.images import write_image
+    from ..vision.images import write_image
 
-    created: list[Path] = []
-    tmp_name: str | None = None
-    try:
-        created = _make_folder(out.parent)
-        fd, tmp_name = tempfile.mkstemp(prefix=".pgsym-rectify-", suffix=out.suffix, dir=out.parent)
-        os.close(fd)
-        write_image(tmp_name, image)
-        os.replace(tmp_name, out)  # replaces a symlink itself, never the file it points to
-        tmp_name = None
-    except OSError as err:
-        if tmp_name is not None:
-            os.unlink(tmp_name)
-            tmp_name = None
-        _remove_created(created)
-        if isinstance(err, OutputError):  # already named (OutputError is an OSError too)
-            raise
-        raise _os_error(err, out) from None
-    finally:
-        if tmp_name is not None and os.path.exists(tmp_name):
-            os.unlink(tmp_name)
+    replace_file(out, lambda tmp: write_image(tmp, image))
 
 
 def _rectifying_homography(shape, method, points, lines, size):  # type: ignore[no-untyped-def]
     import numpy as np
 
-    from .vision.rectify import (
+    from ..vision.rectify import (
         affine_rectification,
         fit_to_size,
         line_through,

@@ -12,8 +12,9 @@ from pathlib import Path
 
 import click
 
-from .errors import PgsymError
-from .limits import MAX_ANSWER_CHARS, MAX_FILE_BYTES
+from ..errors import PgsymError
+from ..limits import MAX_ANSWER_CHARS, MAX_FILE_BYTES
+from ._common import fail
 
 _EPILOG_SHEET = """\b
 Examples:
@@ -61,18 +62,15 @@ Exit status:
 EXIT_UNREADABLE = 3
 
 
-def _fail(err: Exception) -> click.ClickException:
-    return click.ClickException(f"{type(err).__name__}: {err}")
-
 
 def _load_folders(folders: tuple[str, ...]) -> None:
-    from .exercises.template import load_template_folder
+    from ..exercises.template import load_template_folder
 
     for folder in folders:
         try:
             load_template_folder(folder)
         except PgsymError as err:
-            raise _fail(err) from None
+            raise fail(err) from None
 
 
 def _progress(total: int, label: str, show: bool):  # type: ignore[no-untyped-def]
@@ -112,8 +110,9 @@ class _NoBar:
 def sheet_command(topics: str, count: int, seed: int, roster: str | None, formats: str, level: int, solutions: bool,
                   out: str, template_dirs: tuple[str, ...], mathjax: str | None, progress: bool | None) -> None:
     """Generate per-student exercise sheets, their answer key and renderings."""
-    from .exercises.output import Terminated, parse_formats, render_all, write_atomically
-    from .exercises.sheets import anonymous_students, build_sheets, parse_topics, read_roster
+    from ..atomic import Terminated, write_new_folder
+    from ..exercises.output import parse_formats, render_all
+    from ..exercises.sheets import anonymous_students, build_sheets, parse_topics, read_roster
 
     _load_folders(template_dirs)
     try:
@@ -127,10 +126,10 @@ def sheet_command(topics: str, count: int, seed: int, roster: str | None, format
         with _progress(len(students), "building sheets", show) as bar:
             sheets = build_sheets(pairs, students, seed, progress=bar.update)
         with _progress(len(students), "rendering", show) as bar:
-            target = write_atomically(out, lambda tmp: render_all(sheets, pairs, fmt, tmp, solutions, mathjax,
+            target = write_new_folder(out, lambda tmp: render_all(sheets, pairs, fmt, tmp, solutions, mathjax,
                                                                   progress=bar.update))
     except PgsymError as err:
-        raise _fail(err) from None
+        raise fail(err) from None
     except Terminated:
         click.echo("stopped by SIGTERM; nothing was written", err=True)
         sys.exit(143)
@@ -146,17 +145,17 @@ def sheet_command(topics: str, count: int, seed: int, roster: str | None, format
 @click.pass_context
 def check_command(ctx: click.Context, manifest: str, answers: str, out: str | None, details: bool) -> None:
     """Grade the answers of every student against the manifest."""
-    from .csv_cells import csv_text
-    from .exercises._text import clean
-    from .exercises.grading import grade_rows, read_answer_file, results_csv, summary
-    from .exercises.sheets import load_manifest
+    from ..csv_cells import csv_text
+    from ..exercises._text import clean
+    from ..exercises.grading import grade_rows, read_answer_file, results_csv, summary
+    from ..exercises.sheets import load_manifest
 
     try:
         keys = load_manifest(manifest)
         rows, problems = read_answer_file(answers)
         report = grade_rows(keys, rows)
     except PgsymError as err:
-        raise _fail(err) from None
+        raise fail(err) from None
     click.echo(csv_text([["student", "right", "questions"], *summary(report)]), nl=False)
     unreadable = [r for rs in report.values() for r in rs if r.unreadable]
     for rs in report.values():
@@ -208,7 +207,7 @@ def templates_group() -> None:
 @click.option("--templates", "template_dirs", multiple=True, type=click.Path(file_okay=False))
 def templates_list(template_dirs: tuple[str, ...]) -> None:
     """List the known topics with their levels."""
-    from .exercises.template import all_templates
+    from ..exercises.template import all_templates
 
     _load_folders(template_dirs)
     for name, t in sorted(all_templates().items()):
@@ -299,14 +298,14 @@ def templates_check(name: str | None, seeds: int, template_dirs: tuple[str, ...]
 
     Example: pgsym templates check join --seeds 10000
     """
-    from .exercises.stress import stress
-    from .exercises.template import all_templates, get_template
+    from ..exercises.stress import stress
+    from ..exercises.template import all_templates, get_template
 
     _load_folders(template_dirs)
     try:
         templates = [get_template(name)] if name else list(all_templates().values())
     except PgsymError as err:
-        raise _fail(err) from None
+        raise fail(err) from None
     failed = False
     for t in templates:
         show = progress if progress is not None else sys.stderr.isatty()

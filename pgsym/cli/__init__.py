@@ -2,7 +2,7 @@
 
 Coordinates are given as one argument each, separated by commas or spaces;
 every entry is an integer, a fraction ``p/q`` or a decimal, read exactly
-(the grammar and its limits: :mod:`pgsym.cli_parsing`).
+(the grammar and its limits: :mod:`pgsym.cli._common`).
 
 Every command reports bad input as one line ``Error: ...``: usage errors (a bad
 argument or option) exit with status 2, a :class:`~pgsym.errors.PgsymError` raised
@@ -16,42 +16,17 @@ one line ``Error: internal error (...)`` with status 1, never as a traceback.
 from __future__ import annotations
 
 import errno
-from fractions import Fraction
-from typing import TYPE_CHECKING
 
 import click
 
-from . import __version__
-from .cli_parsing import COORDS
-from .errors import PgsymError
+from .. import __version__
+from ..errors import PgsymError
+from .exercises import check_command, sheet_command, templates_group
+from .geometry import join_command, meet_command
+from .prove import prove_command
+from .vision import harris_command, rectify_command
 
-if TYPE_CHECKING:
-    from .projective_plane import Line, Point
-
-
-def _describe(obj: Point | Line) -> str:
-    import sympy
-
-    from .projective_plane import Line
-
-    raw = ", ".join(str(c) for c in obj.coords)
-    canonical = ", ".join(str(c) for c in obj.canonical().coords)
-    if isinstance(obj, Line):
-        x, y = sympy.symbols("x y")
-        a, b, c = obj.canonical().coords
-        extra = f"equation: {sympy.sstr(a * x + b * y + c)} = 0"
-        kind = "line"
-    else:
-        kind = "point"
-        extra = "ideal point (at infinity)" if obj.is_ideal else "inhomogeneous: ({}, {})".format(*obj.dehomogenize())
-    return f"{kind}: ({raw})   canonical: ({canonical})   {extra}"
-
-
-def _run(build):  # type: ignore[no-untyped-def]
-    try:
-        click.echo(_describe(build()))
-    except PgsymError as err:
-        raise click.ClickException(f"{type(err).__name__}: {err}") from None
+__all__ = ["main"]
 
 
 _MAX_MESSAGE = 300
@@ -108,44 +83,10 @@ def main() -> None:
     """
 
 
-@main.command("join")
-@click.argument("p", type=COORDS)
-@click.argument("q", type=COORDS)
-def join_command(p: tuple[Fraction, ...], q: tuple[Fraction, ...]) -> None:
-    """The line through the points P and Q (their cross product).
-
-    Example: pgsym join "0,0" "1,1"
-    """
-    from .projective_plane import Point, join  # SymPy loads only when a command runs
-
-    _run(lambda: join(Point(*p), Point(*q)))
-
-
-@main.command("meet")
-@click.argument("l", type=COORDS)
-@click.argument("m", type=COORDS)
-def meet_command(l: tuple[Fraction, ...], m: tuple[Fraction, ...]) -> None:
-    """The point where the lines L and M meet (their cross product).
-
-    Example: pgsym meet "1,-1,0" "1,-1,3"   (parallel lines: an ideal point)
-    """
-    from .projective_plane import Line, meet
-
-    _run(lambda: meet(Line(*l), Line(*m)))
-
-
 # The vision, proof and instructor commands import their heavy modules only when they run.
-from .prove_cli import prove_command  # noqa: E402
-from .vision_cli import harris_command, rectify_command  # noqa: E402
-
-main.add_command(harris_command)
-main.add_command(rectify_command)
-main.add_command(prove_command)
-from .exercises_cli import check_command, sheet_command, templates_group  # noqa: E402
-
-main.add_command(sheet_command)
-main.add_command(check_command)
-main.add_command(templates_group)
+for _command in (join_command, meet_command, harris_command, rectify_command, prove_command,
+                 sheet_command, check_command, templates_group):
+    main.add_command(_command)
 
 
 if __name__ == "__main__":  # pragma: no cover

@@ -34,8 +34,8 @@ from fractions import Fraction
 
 import click
 
-from .errors import DimensionError, InputLimitError, InvalidCoordinatesError, NonNumericError, PgsymError
-from .limits import MAX_ARGUMENT_CHARS, MAX_DIGITS, MAX_EXPONENT, MAX_IMAGE_PIXELS
+from ..errors import DimensionError, InputLimitError, InvalidCoordinatesError, NonNumericError, PgsymError
+from ..limits import MAX_ARGUMENT_CHARS, MAX_DIGITS, MAX_EXPONENT, MAX_IMAGE_PIXELS
 
 __all__ = [
     "COORDS",
@@ -44,6 +44,7 @@ __all__ = [
     "SIZE",
     "DecimalRange",
     "IntegerRange",
+    "fail",
     "parse_argument",
     "parse_coordinates",
     "parse_lines",
@@ -281,3 +282,8 @@ class IntegerRange(click.IntRange):
                 self.fail(f"{_show(value)} is not an integer", param, ctx)
             value = int(number)
         return super().convert(value, param, ctx)
+
+
+def fail(err: Exception) -> click.ClickException:
+    """A library error as the one-line message every command prints (``Error: TypeName: message``)."""
+    return click.ClickException(f"{type(err).__name__}: {err}")
