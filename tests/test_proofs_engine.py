@@ -10,10 +10,10 @@ import sympy
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from pgsym import ring as alg
 from pgsym.errors import ObjectTypeError, PgsymError
 from pgsym.projective_plane import Point, cross, join
 from pgsym.proofs import Claim, NonPolynomialClaimError, UndefinedConstructionError, UnknownClaimError, prove
-from pgsym.proofs import algebra as alg
 from pgsym.proofs.catalogue import _cross_ratio_p2
 
 small = st.integers(-6, 6)

@@ -18,8 +18,8 @@ from dataclasses import dataclass
 
 import sympy
 
+from .. import ring as alg
 from ..errors import UnknownClaimError
-from . import algebra as alg
 from .claims import Claim
 from .engine import prove as _prove_claim
 from .verdicts import Verdict

@@ -25,8 +25,8 @@ from typing import Any
 
 import sympy
 
+from .. import ring as alg
 from ..errors import NonPolynomialClaimError, ObjectTypeError, UndefinedConstructionError
-from . import algebra as alg
 
 __all__ = [
     "KINDS",
@@ -408,7 +408,7 @@ class Claim:
 
         ``fn`` receives the values of ``args`` (tuples for vectors and matrices,
         a ``(numerator, denominator)`` pair for ratios) and must return a value
-        of ``kind``. The helpers of :mod:`pgsym.proofs.algebra` are written this way.
+        of ``kind``. The helpers of :mod:`pgsym.ring` are written this way.
         """
         if kind not in KINDS:
             raise ObjectTypeError(f"unknown kind {kind!r}; use one of {', '.join(KINDS)}")

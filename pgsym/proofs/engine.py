@@ -38,9 +38,9 @@ from typing import Any
 import sympy
 from sympy.polys.rings import ring
 
+from .. import ring as alg
 from ..errors import PgsymError
 from ..exact import is_zero
-from . import algebra as alg
 from .claims import Claim, Node
 from .verdicts import Certificate, Condition, Counterexample, Verdict
 from .verdicts import poly_str as _poly_str

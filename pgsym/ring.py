@@ -1,9 +1,10 @@
-"""Exact formulas written once for every kind of scalar.
+"""Exact linear algebra written once for every commutative ring: the one kit of the package.
 
-The proof engine evaluates the same construction with three kinds of numbers:
-polynomials of a SymPy ring (the certificate), integers modulo a large prime (the
-fast random pass) and exact fractions (counterexamples). The functions below use
-only ``+``, ``-`` and ``*``, so they work unchanged for all three.
+The same formulas run on SymPy expressions and polynomial-ring elements (the core, the
+invariant proofs, the proof engine's certificates), on integers modulo a prime (the proof
+engine's fast random pass), on :class:`fractions.Fraction` (exercise instances,
+counterexamples) and on Python integers. The functions use only ``+``, ``-`` and ``*``,
+never division, so they work unchanged for all of them and never leave the ring.
 
 >>> cross((1, 0, 0), (0, 1, 0))
 (0, 0, 1)
