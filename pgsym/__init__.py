@@ -10,56 +10,18 @@ Point(-2, -2, -2)
 
 # The exact core needs SymPy, which takes a noticeable time to import; the numeric path does not.
 # Names are therefore resolved on first use (PEP 562), so `import pgsym` stays light and a numeric
-# user never pays for SymPy. The errors are plain Python and are imported eagerly.
+# user never pays for SymPy. The core's errors are plain Python and are bound eagerly. Every public
+# name is listed once, in `_LAZY` or in `errors.__all__`; `__all__` is derived from them.
 from __future__ import annotations
 
 import importlib
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
-from .errors import (
-    AnswersFileError,
-    CoincidentLinesError,
-    CoincidentPointsError,
-    CollinearPointsError,
-    DecompositionError,
-    DegenerateConfigurationError,
-    DegenerateConicError,
-    DependentPlanesError,
-    DimensionError,
-    IdealPointError,
-    ImageError,
-    InputLimitError,
-    InvalidCoordinatesError,
-    ManifestError,
-    MathJaxMissingError,
-    NonFiniteError,
-    NonNumericError,
-    NonPolynomialClaimError,
-    NotAPencilError,
-    NotOnConicError,
-    NotOnKleinQuadricError,
-    NotOnQuadricError,
-    NotSkewSymmetricError,
-    ObjectTypeError,
-    OptionError,
-    OutputError,
-    PgsymError,
-    RosterError,
-    SingularTransformationError,
-    TemplateError,
-    TeXFailedError,
-    TeXMissingError,
-    UndecidableError,
-    UndefinedConstructionError,
-    UndefinedCrossRatioError,
-    UnknownClaimError,
-    UnknownTopicError,
-    UnparsableAnswerError,
-    ZeroCoordinateError,
-    ZeroVectorError,
-)
+from . import errors as _errors
 
 __version__ = "0.1.0"
+
+globals().update({name: getattr(_errors, name) for name in _errors.__all__})
 
 _LAZY: dict[str, str] = {
     "Claim": "proofs",
@@ -123,51 +85,21 @@ _LAZY: dict[str, str] = {
     "point_on_planes": "space",
     "rank_exact": "linalg",
     "reciprocal_product": "plucker",
+    # the errors of the subsystems live beside them (importing one loads only its small module)
+    "AnswersFileError": "exercises.errors",
+    "ManifestError": "exercises.errors",
+    "MathJaxMissingError": "exercises.errors",
+    "RosterError": "exercises.errors",
+    "TeXFailedError": "exercises.errors",
+    "TeXMissingError": "exercises.errors",
+    "TemplateError": "exercises.errors",
+    "UnknownTopicError": "exercises.errors",
+    "UnparsableAnswerError": "exercises.errors",
+    "NonPolynomialClaimError": "proofs.errors",
+    "UndefinedConstructionError": "proofs.errors",
+    "UnknownClaimError": "proofs.errors",
+    "ImageError": "vision.errors",
 }
-
-if TYPE_CHECKING:  # pragma: no cover
-    from .conics import Conic, DualConic, circular_points, conic_through, dual_conic_at_infinity
-    from .decomposition import decompose
-    from .hierarchy import (
-        AFFINE_2D,
-        AFFINE_3D,
-        CLASSES_2D,
-        CLASSES_3D,
-        EUCLIDEAN_2D,
-        EUCLIDEAN_3D,
-        ISOMETRY_2D,
-        PROJECTIVE_2D,
-        PROJECTIVE_3D,
-        SIMILARITY_2D,
-        SIMILARITY_3D,
-        classify,
-        rotation_2d,
-        rotation_3d,
-    )
-    from .homogeneous import HomogeneousVector, is_zero
-    from .invariants import INVARIANTS, invariant, summary_table
-    from .linalg import nullspace_exact, nullspace_svd, rank_exact
-    from .plucker import Line3, cross_ratio_planes, klein_form, reciprocal_product
-    from .projective_line import Point1, ProjectiveMap1, bracket, cross_ratio, cross_ratio_lines, harmonic_conjugate
-    from .projective_plane import (
-        Line,
-        Point,
-        collinear,
-        concurrent,
-        cross,
-        dual,
-        ideal_point,
-        incident,
-        join,
-        line_at_infinity,
-        meet,
-    )
-    from .proofs import Claim, Verdict
-    from .proofs import prove as prove_claim
-    from .quadrics import Quadric
-    from .space import Plane, Point3, coplanar, plane_at_infinity, plane_through, point_on_planes
-    from .transformations import Transformation, adjugate, homography_from_points
-
 
 _SUBPACKAGES = ("numeric", "vision")
 
@@ -189,109 +121,4 @@ def __dir__() -> list[str]:
     return sorted(set(globals()) | set(_LAZY) | set(_SUBPACKAGES) | {"prove_claim"})
 
 
-__all__ = [
-    "AFFINE_2D",
-    "AFFINE_3D",
-    "CLASSES_2D",
-    "CLASSES_3D",
-    "EUCLIDEAN_2D",
-    "EUCLIDEAN_3D",
-    "INVARIANTS",
-    "ISOMETRY_2D",
-    "PROJECTIVE_2D",
-    "PROJECTIVE_3D",
-    "SIMILARITY_2D",
-    "SIMILARITY_3D",
-    "AnswersFileError",
-    "Claim",
-    "CoincidentLinesError",
-    "CoincidentPointsError",
-    "CollinearPointsError",
-    "Conic",
-    "DecompositionError",
-    "DegenerateConfigurationError",
-    "DegenerateConicError",
-    "DependentPlanesError",
-    "DimensionError",
-    "DualConic",
-    "HomogeneousVector",
-    "IdealPointError",
-    "ImageError",
-    "InputLimitError",
-    "InvalidCoordinatesError",
-    "Line",
-    "Line3",
-    "ManifestError",
-    "MathJaxMissingError",
-    "NonFiniteError",
-    "NonNumericError",
-    "NonPolynomialClaimError",
-    "NotAPencilError",
-    "NotOnConicError",
-    "NotOnKleinQuadricError",
-    "NotOnQuadricError",
-    "NotSkewSymmetricError",
-    "ObjectTypeError",
-    "OptionError",
-    "OutputError",
-    "PgsymError",
-    "Plane",
-    "Point",
-    "Point1",
-    "Point3",
-    "ProjectiveMap1",
-    "Quadric",
-    "RosterError",
-    "SingularTransformationError",
-    "TeXFailedError",
-    "TeXMissingError",
-    "TemplateError",
-    "Transformation",
-    "UndecidableError",
-    "UndefinedConstructionError",
-    "UndefinedCrossRatioError",
-    "UnknownClaimError",
-    "UnknownTopicError",
-    "UnparsableAnswerError",
-    "Verdict",
-    "ZeroCoordinateError",
-    "ZeroVectorError",
-    "__version__",
-    "adjugate",
-    "bracket",
-    "circular_points",
-    "classify",
-    "collinear",
-    "concurrent",
-    "conic_through",
-    "coplanar",
-    "cross",
-    "cross_ratio",
-    "cross_ratio_lines",
-    "cross_ratio_planes",
-    "decompose",
-    "dual",
-    "dual_conic_at_infinity",
-    "harmonic_conjugate",
-    "homography_from_points",
-    "ideal_point",
-    "incident",
-    "invariant",
-    "is_zero",
-    "join",
-    "klein_form",
-    "line_at_infinity",
-    "meet",
-    "nullspace_exact",
-    "nullspace_svd",
-    "numeric",
-    "plane_at_infinity",
-    "plane_through",
-    "point_on_planes",
-    "prove_claim",
-    "rank_exact",
-    "reciprocal_product",
-    "rotation_2d",
-    "rotation_3d",
-    "summary_table",
-]
+__all__ = sorted([*_errors.__all__, *_LAZY, *_SUBPACKAGES, "prove_claim"])

@@ -16,7 +16,6 @@ CoincidentPointsError
 from __future__ import annotations
 
 __all__ = [
-    "AnswersFileError",
     "CoincidentLinesError",
     "CoincidentPointsError",
     "CollinearPointsError",
@@ -26,14 +25,10 @@ __all__ = [
     "DependentPlanesError",
     "DimensionError",
     "IdealPointError",
-    "ImageError",
     "InputLimitError",
     "InvalidCoordinatesError",
-    "ManifestError",
-    "MathJaxMissingError",
     "NonFiniteError",
     "NonNumericError",
-    "NonPolynomialClaimError",
     "NotAPencilError",
     "NotOnConicError",
     "NotOnKleinQuadricError",
@@ -43,17 +38,9 @@ __all__ = [
     "OptionError",
     "OutputError",
     "PgsymError",
-    "RosterError",
     "SingularTransformationError",
-    "TeXFailedError",
-    "TeXMissingError",
-    "TemplateError",
     "UndecidableError",
-    "UndefinedConstructionError",
     "UndefinedCrossRatioError",
-    "UnknownClaimError",
-    "UnknownTopicError",
-    "UnparsableAnswerError",
     "ZeroCoordinateError",
     "ZeroVectorError",
 ]
@@ -127,13 +114,6 @@ class DecompositionError(DegenerateConfigurationError):
     """A matrix has no decomposition of the requested form."""
 
 
-class ImageError(PgsymError, ValueError):
-    """An image cannot be read, or has the wrong shape or type for the operation."""
-
-
-class UnparsableAnswerError(PgsymError, ValueError):
-    """A typed answer cannot be read as the expected kind of value."""
-
 
 class ZeroCoordinateError(DegenerateConfigurationError):
     """The coordinate chosen to be fixed to 1 is zero in every solution (method #2 cannot be used)."""
@@ -159,55 +139,19 @@ class OptionError(PgsymError, ValueError):
     """A keyword option of a numeric function has a value it does not accept (e.g. ``ideal="skip"``)."""
 
 
-class NonPolynomialClaimError(InvalidCoordinatesError):
-    """A coordinate, hypothesis or conclusion is not a polynomial in the claim's parameters."""
 
-
-class UndefinedConstructionError(ObjectTypeError):
-    """A construction refers to an object or an operation the claim does not define."""
-
-
-class UnknownClaimError(UndefinedConstructionError):
-    """No claim of that name is in the catalogue."""
 
 
 class OutputError(PgsymError, OSError):
     """The output folder cannot be created or written."""
 
 
-class RosterError(PgsymError, ValueError):
-    """A roster CSV that cannot be read (no id column, empty, duplicate or blank ids)."""
 
 
-class ManifestError(PgsymError, ValueError):
-    """A manifest file that is missing, not JSON, or not a pgsym exercise manifest."""
 
 
-class MathJaxMissingError(PgsymError, FileNotFoundError):
-    """No local copy of MathJax was found for the HTML sheets."""
 
 
-class AnswersFileError(PgsymError, ValueError):
-    """An answers CSV that cannot be read (missing, not CSV, no id column)."""
-
-
-class UnknownTopicError(PgsymError, KeyError):
-    """A topic name that no built-in or instructor template provides."""
-
-    def __str__(self) -> str:  # KeyError would quote the message
-        return str(self.args[0]) if self.args else ""
-
-
-class TemplateError(DegenerateConfigurationError):
-    """A template produced an instance that fails its own checks (degenerate, wrong or too large)."""
-
-
-class TeXMissingError(PgsymError, RuntimeError):
-    """pdflatex (or latexmk) is not installed, so no PDF can be made."""
-
-
-class TeXFailedError(PgsymError, RuntimeError):
-    """pdflatex ran but failed; the message holds the end of its log."""
 
 
 class UndecidableError(PgsymError, ValueError):

@@ -9,8 +9,8 @@ import pytest
 from hypothesis import HealthCheck, Phase, given, settings
 from hypothesis import strategies as st
 
-from pgsym.errors import UnparsableAnswerError
 from pgsym.exercises.answers import MAX_DEPTH, grade, parse_answer, read_as, self_check
+from pgsym.exercises.errors import UnparsableAnswerError
 from pgsym.exercises.grading import grade_rows
 from pgsym.exercises.model import Answer
 

@@ -274,8 +274,9 @@ def test_a_full_disk_leaves_no_folder_and_no_temporary_file(square_png, tmp_path
 
 
 def test_the_image_reader_checks_the_header_before_decoding(tmp_path):
-    from pgsym.errors import ImageError, InputLimitError
+    from pgsym.errors import InputLimitError
     from pgsym.limits import MAX_IMAGE_PIXELS
+    from pgsym.vision.errors import ImageError
     from pgsym.vision.images import image_size, read_image
 
     # a header announcing 8000 x 6000 = 48e6 > 40e6 pixels, with a pixel stream far too short for it:

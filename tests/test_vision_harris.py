@@ -8,7 +8,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from pgsym.errors import ImageError
+from pgsym.vision.errors import ImageError
 from pgsym.vision.harris import _suppress, harris, harris_response
 from pgsym.vision.images import check_image, display_uint8, read_image, to_float_image, write_image
 

@@ -13,9 +13,9 @@ from pgsym.errors import (
     CollinearPointsError,
     DegenerateConfigurationError,
     DimensionError,
-    ImageError,
     SingularTransformationError,
 )
+from pgsym.vision.errors import ImageError
 from pgsym.vision.harris import harris
 from pgsym.vision.homography import apply_homography
 from pgsym.vision.rectify import (

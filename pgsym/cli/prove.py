@@ -14,8 +14,8 @@ import sys
 
 import click
 
-from ..errors import UnknownClaimError
 from ..limits import MAX_ARGUMENT_CHARS
+from ..proofs.errors import UnknownClaimError
 from ._common import DecimalRange
 
 __all__ = ["prove_command"]

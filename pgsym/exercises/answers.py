@@ -6,7 +6,7 @@ signs, vectors ``(1, -2/3, 0)`` or ``1, -2/3, 0`` and matrices ``[[1, 0], [0, 1]
 input length, the nesting depth, the number of entries and the size of every number (so its
 running time is bounded too: one pass over at most ``MAX_LENGTH`` characters; no wall-clock limit
 that could make grading differ between runs), and raises
-:class:`~pgsym.errors.UnparsableAnswerError` saying what it could not read.
+:class:`~pgsym.exercises.errors.UnparsableAnswerError` saying what it could not read.
 
 >>> parse_answer("(2, -4, 0)")
 (Fraction(2, 1), Fraction(-4, 1), Fraction(0, 1))
@@ -18,7 +18,7 @@ True
 >>> parse_answer("__import__('os')")
 Traceback (most recent call last):
 ...
-pgsym.errors.UnparsableAnswerError: cannot read the answer: unexpected character '_' at position 1; ...
+pgsym.exercises.errors.UnparsableAnswerError: cannot read the answer: unexpected character '_' at position 1; ...
 """
 
 from __future__ import annotations
@@ -26,9 +26,9 @@ from __future__ import annotations
 from fractions import Fraction
 from typing import Any
 
-from ..errors import UnparsableAnswerError
 from ..limits import MAX_ANSWER_CHARS, MAX_DIGITS
 from ._exact import canonical_ints
+from .errors import UnparsableAnswerError
 from .model import Answer
 
 MAX_LENGTH = MAX_ANSWER_CHARS
@@ -179,7 +179,7 @@ def parse_answer(text: str) -> Parsed:
     >>> parse_answer("1/0")
     Traceback (most recent call last):
     ...
-    pgsym.errors.UnparsableAnswerError: cannot read the answer: division by zero at position 2
+    pgsym.exercises.errors.UnparsableAnswerError: cannot read the answer: division by zero at position 2
     """
     reader = _Reader(_tokens(text))
     items = reader.sequence(0)

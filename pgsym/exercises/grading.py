@@ -21,9 +21,9 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from ..csv_cells import write_csv
-from ..errors import AnswersFileError, UnparsableAnswerError
 from ..limits import MAX_ANSWER_CHARS, MAX_FILE_BYTES
 from .answers import grade
+from .errors import AnswersFileError, UnparsableAnswerError
 from .model import Answer
 from .reading import csv_rows, read_user_text
 

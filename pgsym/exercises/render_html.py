@@ -21,8 +21,8 @@ import os
 import shutil
 from pathlib import Path
 
-from ..errors import MathJaxMissingError
 from ._text import NO_MATH_CLASS, html_escape, one_line, to_html
+from .errors import MathJaxMissingError
 from .model import KIND_HINTS, Sheet
 
 MATHJAX_DIR = "mathjax"

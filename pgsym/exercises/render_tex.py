@@ -24,8 +24,8 @@ import time
 from collections.abc import Sequence
 from pathlib import Path
 
-from ..errors import TeXFailedError, TeXMissingError
 from ._text import one_line, tex_escape, to_tex
+from .errors import TeXFailedError, TeXMissingError
 from .model import KIND_HINTS, Exercise, Sheet
 
 PREAMBLE = r"""\documentclass[11pt,a4paper]{article}

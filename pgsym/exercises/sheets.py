@@ -16,9 +16,10 @@ from collections.abc import Callable, Iterable, Sequence
 from pathlib import Path
 from typing import Any
 
-from ..errors import ManifestError, PgsymError, RosterError, UnknownTopicError
+from ..errors import PgsymError
 from ..limits import MAX_NAME_CHARS
 from ._text import one_line
+from .errors import ManifestError, RosterError, UnknownTopicError
 from .model import Answer, Sheet
 from .reading import csv_rows, load_json, read_user_text
 from .seeds import form_id, slot_keys, variant_seed

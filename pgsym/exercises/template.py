@@ -21,8 +21,8 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from ..errors import TemplateError, UnknownTopicError
 from ._text import one_line
+from .errors import TemplateError, UnknownTopicError
 from .model import Answer, Exercise, Part
 from .reading import read_user_text
 
@@ -113,7 +113,7 @@ def get_template(name: str) -> Template:
     >>> get_template("nope")
     Traceback (most recent call last):
     ...
-    pgsym.errors.UnknownTopicError: unknown topic 'nope'; known topics: ...
+    pgsym.exercises.errors.UnknownTopicError: unknown topic 'nope'; known topics: ...
     """
     templates = all_templates()
     if name not in templates:

@@ -28,7 +28,7 @@ processor cache; pass ``out=`` to reuse an output array.
    :mod:`pgsym.numeric.tolerances`; transformation matrices are judged after balancing by a
    change of units (:mod:`pgsym.numeric.conditioning`).
 5. Images are checked by :func:`pgsym.vision.images.check_image`, which raises
-   :class:`~pgsym.errors.ImageError` for NaN or inf pixels.
+   :class:`~pgsym.vision.errors.ImageError` for NaN or inf pixels.
 
 The check costs one BLAS dot product of each output block with itself while the block is
 in cache (NaN and inf propagate into a sum of squares); only when it is not finite is

@@ -8,24 +8,38 @@ True
 ('false', True)
 """
 
-from .catalogue import CATALOGUE, UnknownClaimError, catalogue_names, get_claim, prove, prove_all
-from .claims import Claim, NonPolynomialClaimError, UndefinedConstructionError
-from .engine import PRIME
-from .verdicts import Certificate, Condition, Counterexample, Verdict
+# Names resolve on first use (PEP 562): the command line imports the errors of this package
+# without paying for SymPy, which the engine and the catalogue need.
+from __future__ import annotations
 
-__all__ = [
-    "CATALOGUE",
-    "PRIME",
-    "Certificate",
-    "Claim",
-    "Condition",
-    "Counterexample",
-    "NonPolynomialClaimError",
-    "UndefinedConstructionError",
-    "UnknownClaimError",
-    "Verdict",
-    "catalogue_names",
-    "get_claim",
-    "prove",
-    "prove_all",
-]
+import importlib
+from typing import Any
+
+from . import errors as _errors
+from .errors import NonPolynomialClaimError, UndefinedConstructionError, UnknownClaimError  # noqa: F401 (re-exported)
+
+_LAZY = {
+    "CATALOGUE": "catalogue",
+    "catalogue_names": "catalogue",
+    "get_claim": "catalogue",
+    "prove": "catalogue",
+    "prove_all": "catalogue",
+    "Claim": "claims",
+    "PRIME": "engine",
+    "Certificate": "verdicts",
+    "Condition": "verdicts",
+    "Counterexample": "verdicts",
+    "Verdict": "verdicts",
+}
+
+
+def __getattr__(name: str) -> Any:
+    module = _LAZY.get(name)
+    if module is None:
+        raise AttributeError(f"module 'pgsym.proofs' has no attribute {name!r}")
+    value = getattr(importlib.import_module(f".{module}", __name__), name)
+    globals()[name] = value
+    return value
+
+
+__all__ = sorted([*_LAZY, *_errors.__all__])

@@ -19,9 +19,9 @@ from dataclasses import dataclass
 import sympy
 
 from .. import ring as alg
-from ..errors import UnknownClaimError
 from .claims import Claim
 from .engine import prove as _prove_claim
+from .errors import UnknownClaimError
 from .verdicts import Verdict
 
 __all__ = ["CATALOGUE", "Entry", "UnknownClaimError", "catalogue_names", "get_claim", "prove", "prove_all"]
@@ -72,7 +72,7 @@ def get_claim(name: str) -> Claim:
     >>> get_claim("no-such-claim")
     Traceback (most recent call last):
     ...
-    pgsym.errors.UnknownClaimError: no claim named 'no-such-claim' in the catalogue; ...
+    pgsym.proofs.errors.UnknownClaimError: no claim named 'no-such-claim' in the catalogue; ...
     """
     if name not in CATALOGUE:
         close = [n for n in CATALOGUE if name.split("-")[0] in n][:5]

@@ -26,7 +26,8 @@ from typing import Any
 import sympy
 
 from .. import ring as alg
-from ..errors import NonPolynomialClaimError, ObjectTypeError, UndefinedConstructionError
+from ..errors import ObjectTypeError
+from .errors import NonPolynomialClaimError, UndefinedConstructionError
 
 __all__ = [
     "KINDS",
@@ -287,7 +288,7 @@ class Claim:
         >>> c.construct("frobnicate", "z")
         Traceback (most recent call last):
         ...
-        pgsym.errors.UndefinedConstructionError: unknown construction 'frobnicate'; ...
+        pgsym.proofs.errors.UndefinedConstructionError: unknown construction 'frobnicate'; ...
         """
         methods = {"join", "meet", "combine", "plane_through", "point_on_planes", "line3", "apply", "apply_line",
                    "apply_plane", "apply_conic", "polar", "conic_through", "dual_conic", "cross_ratio",
@@ -475,7 +476,7 @@ class Claim:
         >>> c.conclude_zero(sympy.sin(a))
         Traceback (most recent call last):
         ...
-        pgsym.errors.NonPolynomialClaimError: conclusion: sin(a) is not a polynomial ...
+        pgsym.proofs.errors.NonPolynomialClaimError: conclusion: sin(a) is not a polynomial ...
         """
         if isinstance(x, (Node, str)):
             node = self._get(x, (), "conclude_zero")

@@ -33,7 +33,8 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..errors import ImageError, NonFiniteError
+from ..errors import NonFiniteError
+from .errors import ImageError
 from .images import check_image
 
 __all__ = ["HarrisResult", "harris", "harris_response"]
@@ -203,7 +204,7 @@ def harris(
     >>> harris(img.astype(float))
     Traceback (most recent call last):
     ...
-    pgsym.errors.ImageError: image must have dtype float32, got float64; convert it with to_float_image()
+    pgsym.vision.errors.ImageError: image must have dtype float32, got float64; convert it with to_float_image()
     """
     check_image(image)
     _check_parameters(k, sigma, threshold, min_distance)

@@ -18,8 +18,9 @@ from pathlib import Path
 
 import numpy as np
 
-from ..errors import ImageError, InputLimitError
+from ..errors import InputLimitError
 from ..limits import MAX_IMAGE_BYTES, MAX_IMAGE_PIXELS, read_bounded
+from .errors import ImageError
 
 __all__ = ["check_image", "display_uint8", "image_size", "read_image", "read_image_bytes", "to_float_image",
            "write_image"]
@@ -28,7 +29,7 @@ __all__ = ["check_image", "display_uint8", "image_size", "read_image", "read_ima
 def check_image(image: object, name: str = "image") -> np.ndarray:
     """Return ``image`` unchanged if it is a non-empty finite ``float32`` array of shape ``(H, W)``.
 
-    Raises :class:`~pgsym.errors.ImageError` otherwise, saying how to convert it.
+    Raises :class:`~pgsym.vision.errors.ImageError` otherwise, saying how to convert it.
 
     >>> import numpy as np
     >>> check_image(np.zeros((2, 3), np.float32)).shape
@@ -36,7 +37,7 @@ def check_image(image: object, name: str = "image") -> np.ndarray:
     >>> check_image(np.zeros((2, 3)))
     Traceback (most recent call last):
     ...
-    pgsym.errors.ImageError: image must have dtype float32, got float64; convert it with to_float_image()
+    pgsym.vision.errors.ImageError: image must have dtype float32, got float64; convert it with to_float_image()
     """
     if not isinstance(image, np.ndarray):
         raise ImageError(f"{name} must be a NumPy array, got {type(image).__name__}; convert it with to_float_image()")
@@ -93,13 +94,13 @@ def read_image(path: str | Path) -> np.ndarray:
     (not a folder, pipe or device) of at most :data:`~pgsym.limits.MAX_IMAGE_BYTES` bytes,
     and its header must announce at most :data:`~pgsym.limits.MAX_IMAGE_PIXELS` pixels,
     checked before anything is decoded (a small compressed file can decode to gigabytes).
-    Raises :class:`~pgsym.errors.ImageError` when the file is missing or is not an image
+    Raises :class:`~pgsym.vision.errors.ImageError` when the file is missing or is not an image
     OpenCV can decode, and :class:`~pgsym.errors.InputLimitError` past a limit.
 
     >>> read_image("no-such-file.png")
     Traceback (most recent call last):
     ...
-    pgsym.errors.ImageError: cannot read image 'no-such-file.png': the file does not exist
+    pgsym.vision.errors.ImageError: cannot read image 'no-such-file.png': the file does not exist
     """
     data = read_image_bytes(path)
     width, height = image_size(data, str(path))
@@ -129,7 +130,7 @@ def read_image_bytes(path: str | Path) -> bytes:
     ...     read_image_bytes(d)  # doctest: +ELLIPSIS
     Traceback (most recent call last):
     ...
-    pgsym.errors.ImageError: cannot read image '...': it is a folder, not a file
+    pgsym.vision.errors.ImageError: cannot read image '...': it is a folder, not a file
     """
     name = str(path)
     try:
@@ -168,7 +169,7 @@ def image_size(data: bytes, name: str = "image") -> tuple[int, int]:
     >>> image_size(b"not an image")
     Traceback (most recent call last):
     ...
-    pgsym.errors.ImageError: cannot read image 'image': not an image format pgsym reads (use PNG or JPEG)
+    pgsym.vision.errors.ImageError: cannot read image 'image': not an image format pgsym reads (use PNG or JPEG)
     """
     import io
     import warnings

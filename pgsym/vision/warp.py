@@ -22,8 +22,9 @@ from typing import Any
 
 import numpy as np
 
-from ..errors import DimensionError, ImageError, NonFiniteError, SingularTransformationError
+from ..errors import DimensionError, NonFiniteError, SingularTransformationError
 from ..numeric.conditioning import require_finite, singular
+from .errors import ImageError
 from .images import check_image
 
 __all__ = ["check_homography", "warp", "warp_numpy"]

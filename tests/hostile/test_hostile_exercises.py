@@ -30,9 +30,10 @@ from click.testing import CliRunner
 
 from pgsym.cli import main
 from pgsym.csv_cells import csv_text, safe_cell
-from pgsym.errors import AnswersFileError, InputLimitError, ManifestError, RosterError, TeXFailedError
+from pgsym.errors import InputLimitError
 from pgsym.exercises import render_html, render_ipynb, render_md, render_moodle, render_tex
 from pgsym.exercises._text import REPLACEMENT, math_is_safe, one_line
+from pgsym.exercises.errors import AnswersFileError, ManifestError, RosterError, TeXFailedError
 from pgsym.exercises.grading import read_answers
 from pgsym.exercises.model import Answer, Exercise, Part, Sheet
 from pgsym.exercises.sheets import build_sheets, load_manifest, read_roster
@@ -500,7 +501,7 @@ def test_roster_limits_and_bad_bytes(tmp_path):
 
 
 def test_template_file_with_deep_nesting_is_a_template_error(tmp_path):
-    from pgsym.errors import TemplateError
+    from pgsym.exercises.errors import TemplateError
 
     (tmp_path / "deep.py").write_text("x = " + "(" * 100_000 + ")" * 100_000 + "\n")
     with pytest.raises(TemplateError, match=r"deep\.py"):
@@ -650,8 +651,8 @@ def test_markdown_headings_keep_every_character(name):
 
 @pytest.mark.parametrize("text", ["8¹", "٣", "1/²", "(1, ³, 0)"])
 def test_unicode_digits_are_a_named_error(text):
-    from pgsym.errors import UnparsableAnswerError
     from pgsym.exercises.answers import parse_answer
+    from pgsym.exercises.errors import UnparsableAnswerError
 
     with pytest.raises(UnparsableAnswerError, match="unexpected character"):
         parse_answer(text)

@@ -20,16 +20,11 @@ from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
 import pgsym.numeric as pn
-from pgsym.errors import (
-    IdealPointError,
-    ImageError,
-    InputLimitError,
-    NonFiniteError,
-    SingularTransformationError,
-)
+from pgsym.errors import IdealPointError, InputLimitError, NonFiniteError, SingularTransformationError
 from pgsym.hierarchy import classify, rotation_2d
 from pgsym.linalg import nullspace_svd, numeric_rank, plane_through_numeric, point_on_planes_numeric
 from pgsym.vision import harris, homography, rectify, warp
+from pgsym.vision.errors import ImageError
 from pgsym.vision.homography import (
     apply_homography,
     dlt_homography,
