@@ -41,6 +41,7 @@ from .errors import (
 )
 from .exact import all_zero, latex
 from .homogeneous import HomogeneousVector, Scalar, _format_entry, is_zero, require, to_exact
+from .kinds import Kind
 from .projective_plane import Line, Point, collinear, cross
 
 __all__ = [
@@ -122,7 +123,7 @@ def _symmetric_matrix(v: Sequence[Expr]) -> ImmutableMatrix:
     return ImmutableMatrix([[a, b * h, d * h], [b * h, c, e * h], [d * h, e * h, f]])
 
 
-class _SymmetricForm:
+class _SymmetricForm(Kind):
     """Shared machinery of conics and dual conics: a symmetric 3×3 matrix up to scale."""
 
     __slots__ = ("_matrix",)
@@ -209,7 +210,7 @@ class _SymmetricForm:
         return latex(Matrix(self._matrix), mat_delim="[")
 
 
-class Conic(_SymmetricForm):
+class Conic(_SymmetricForm, kind="conic"):
     """A conic ``xᵀ C x = 0`` of the projective plane, from a symmetric 3×3 matrix C.
 
     Equality is up to a nonzero scale; ``repr`` is the :meth:`from_coefficients`
@@ -431,7 +432,7 @@ class Conic(_SymmetricForm):
         return Point._from_exact(both[0]), Point._from_exact(both[1])
 
 
-class DualConic(_SymmetricForm):
+class DualConic(_SymmetricForm, kind="dual_conic"):
     """A dual (line) conic: the lines l with ``lᵀ C* l = 0``, from a symmetric 3×3 matrix C*.
 
     Degenerate dual conics are allowed: the dual conic at infinity ``diag(1, 1, 0)``

@@ -24,6 +24,7 @@ from sympy import Expr, Matrix
 
 from .errors import DimensionError, ObjectTypeError, UndecidableError, ZeroVectorError
 from .exact import Scalar, all_zero, canonical_coords, format_entry, is_zero, latex, to_exact
+from .kinds import Kind
 
 __all__ = ["HomogeneousVector", "is_zero", "to_exact"]
 
@@ -44,7 +45,7 @@ def require(obj: object, cls: type, operation: str, hint: str = "") -> None:
         raise ObjectTypeError(f"{operation} expects {cls.__name__}s, got {type(obj).__name__} {obj!r}{hint}")
 
 
-class HomogeneousVector:
+class HomogeneousVector(Kind):
     """Base class of projective objects given by one homogeneous vector.
 
     Subclasses set ``size`` (the number of homogeneous coordinates). Instances

@@ -112,7 +112,7 @@ def _klein(coords: Sequence[Expr]) -> Expr:
 
 
 
-class Line3(HomogeneousVector):
+class Line3(HomogeneousVector, kind="line3"):
     """A line of projective 3-space, stored by its six Plücker coordinates ``(l12, l13, l14, l23, l42, l34)``.
 
     Build one with :meth:`join` (two points), :meth:`meet` (two planes),

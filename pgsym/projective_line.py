@@ -57,7 +57,7 @@ __all__ = [
 ]
 
 
-class Point1(HomogeneousVector):
+class Point1(HomogeneousVector, kind="point1"):
     """A point of the projective line P¹.
 
     ``Point1(x)`` is the finite point with coordinate ``x``, stored as ``(x, 1)``;

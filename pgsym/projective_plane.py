@@ -60,7 +60,7 @@ def cross(u: Sequence[Expr], v: Sequence[Expr]) -> tuple[Expr, Expr, Expr]:
     return tuple(sympy.expand(e) for e in (u2 * v3 - u3 * v2, u3 * v1 - u1 * v3, u1 * v2 - u2 * v1))  # type: ignore[return-value]
 
 
-class Point(HomogeneousVector):
+class Point(HomogeneousVector, kind="point"):
     """A point of the projective plane.
 
     ``Point(x, y)`` is the Euclidean point ``(x, y)``, stored as ``(x, y, 1)``;
@@ -126,7 +126,7 @@ class Point(HomogeneousVector):
         return Line._from_exact(self._coords)
 
 
-class Line(HomogeneousVector):
+class Line(HomogeneousVector, kind="line"):
     """A line ``a x + b y + c w = 0`` of the projective plane, given by ``(a, b, c)``.
 
     Lines are printed as row vectors, so that ``lᵀ x`` reads as a row times a column.

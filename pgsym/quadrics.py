@@ -31,6 +31,7 @@ from .errors import (
 )
 from .exact import all_zero, latex
 from .homogeneous import Scalar, _format_entry, is_zero, to_exact
+from .kinds import Kind
 from .space import Plane, Point3
 
 __all__ = ["NotOnQuadricError", "Quadric"]
@@ -52,7 +53,7 @@ def _exact_square(M: Any, size: int) -> ImmutableMatrix:
     return ImmutableMatrix([[to_exact(v) for v in r] for r in rows])
 
 
-class Quadric:
+class Quadric(Kind, kind="quadric"):
     """A quadric surface ``Xᵀ Q X = 0`` of P³, from a symmetric 4×4 matrix.
 
     The matrix entries are exact (integers, fractions, symbols). Two quadrics

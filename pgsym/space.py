@@ -70,7 +70,7 @@ def triple_cross(u: Sequence[Expr], v: Sequence[Expr], w: Sequence[Expr]) -> tup
     return tuple(result)  # type: ignore[return-value]
 
 
-class Point3(HomogeneousVector):
+class Point3(HomogeneousVector, kind="point3"):
     """A point of projective 3-space.
 
     ``Point3(x, y, z)`` is the Euclidean point ``(x, y, z)``, stored as
@@ -147,7 +147,7 @@ class Point3(HomogeneousVector):
         return Plane._from_exact(self._coords)
 
 
-class Plane(HomogeneousVector):
+class Plane(HomogeneousVector, kind="plane"):
     """A plane ``a x + b y + c z + d w = 0`` of projective 3-space, given by ``(a, b, c, d)``.
 
     Planes are printed as row vectors, so that ``πᵀX`` reads as a row times a column.

@@ -30,6 +30,7 @@ from sympy import Expr, ImmutableMatrix, Matrix
 from .errors import CollinearPointsError, DimensionError, ObjectTypeError, SingularTransformationError
 from .exact import latex
 from .homogeneous import _format_entry, is_zero, to_exact
+from .kinds import Kind
 from .projective_plane import Line, Point, collinear
 
 __all__ = ["Transformation", "adjugate", "as_exact_matrix", "homography_from_points"]
@@ -73,7 +74,7 @@ def _expand(m: Matrix) -> ImmutableMatrix:
     return ImmutableMatrix(m.applyfunc(sympy.expand))
 
 
-class Transformation:
+class Transformation(Kind, kind="transformation"):
     """A projective transformation of P² (3×3 matrix) or P³ (4×4 matrix), defined up to scale.
 
     The matrix is exact and must be non-singular; ``det H = 0`` raises
