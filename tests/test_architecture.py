@@ -1,0 +1,126 @@
+"""The import graph goes one way (ARCHITECTURE.md).
+
+The imports are read from the source (``ast``), so the test sees lazy imports inside functions too:
+an upward import is a mistake wherever it is written. The few lazy imports across siblings that the
+architecture allows (the numeric conversions build exact objects on request; ``classify`` hands float
+matrices to the numeric classifier) are listed in ``LAZY_ALLOWED``.
+"""
+
+from __future__ import annotations
+
+import ast
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+import pgsym
+
+ROOT = Path(pgsym.__file__).parent
+
+# layer of a module, by its dotted name below pgsym ("" = the package itself)
+BASE = {"errors", "limits", "kinds", "atomic", "csv_cells", "ring"}
+LAYERS = ["base", "core", "numeric", "vision", "proofs", "exercises", "cli"]
+# which layers each layer may import (at load or lazily)
+ALLOWED = {
+    "base": {"base"},
+    "core": {"base", "core"},
+    "numeric": {"base", "numeric"},
+    "vision": {"base", "numeric", "vision"},
+    "proofs": {"base", "core", "proofs"},
+    "exercises": {"base", "core", "proofs", "exercises"},
+    "cli": set(LAYERS),
+    "package": set(LAYERS),  # pgsym/__init__.py resolves public names lazily from every layer
+}
+# lazy (function-level) imports allowed across siblings: (importing layer, imported layer)
+LAZY_ALLOWED = {("numeric", "core"), ("vision", "core"), ("core", "numeric")}
+
+
+def layer(module: str) -> str:
+    """'pgsym.numeric.plane' → 'numeric'; 'pgsym.conics' → 'core'."""
+    parts = module.split(".")[1:]
+    if not parts or parts == ["__init__"]:
+        return "package"
+    head = parts[0]
+    if head in ("numeric", "vision", "proofs", "exercises", "cli"):
+        if head == "vision" and parts[1:] == ["errors"]:
+            return "vision"
+        return head
+    return "base" if head in BASE else "core"
+
+
+def _module_name(path: Path) -> str:
+    rel = path.relative_to(ROOT.parent).with_suffix("")
+    parts = list(rel.parts)
+    if parts[-1] == "__init__":
+        parts.pop()
+    return ".".join(parts)
+
+
+def _imports(path: Path, name: str | None = None) -> list[tuple[str, bool]]:
+    """(imported pgsym module, at load?) for every import statement of the file."""
+    tree = ast.parse(path.read_text(encoding="utf-8"))
+    name = name or _module_name(path)
+    package = name if path.name == "__init__.py" else name.rsplit(".", 1)[0]
+    found: list[tuple[str, bool]] = []
+
+    def visit(node: ast.AST, top: bool) -> None:
+        for child in ast.iter_child_nodes(node):
+            inner = top and not isinstance(child, (ast.FunctionDef, ast.AsyncFunctionDef, ast.Lambda))
+            if isinstance(child, ast.If) and "TYPE_CHECKING" in ast.unparse(child.test):
+                continue  # annotations only
+            if isinstance(child, ast.ImportFrom):
+                if child.level:
+                    base = package.split(".")
+                    base = base[: len(base) - (child.level - 1)]
+                    target = ".".join(base + ([child.module] if child.module else []))
+                else:
+                    target = child.module or ""
+                if target.startswith("pgsym"):
+                    if child.module is None or target in ("pgsym", package):
+                        found.extend((f"{target}.{a.name}", inner) for a in child.names)
+                    else:
+                        found.append((target, inner))
+            elif isinstance(child, ast.Import):
+                found.extend((a.name, inner) for a in child.names if a.name.startswith("pgsym"))
+            visit(child, inner)
+
+    visit(tree, True)
+    return found
+
+
+SOURCES = sorted(ROOT.rglob("*.py"))
+
+
+@pytest.mark.parametrize("path", SOURCES, ids=lambda p: str(p.relative_to(ROOT.parent)))
+def test_imports_go_one_way(path: Path) -> None:
+    me = layer(_module_name(path))
+    wrong = []
+    for target, at_load in _imports(path):
+        theirs = layer(target)
+        if theirs in ALLOWED[me] or (not at_load and (me, theirs) in LAZY_ALLOWED):
+            continue
+        wrong.append(f"{target} ({theirs}, {'at load' if at_load else 'lazily'})")
+    assert not wrong, f"{_module_name(path)} ({me}) imports a layer it must not: {wrong}"
+
+
+def test_layer_rules_catch_an_upward_import(tmp_path: Path) -> None:
+    # the checker itself: a lazy import of the exercises inside a core module is found and is not allowed
+    fake = tmp_path / "fake.py"
+    fake.write_text("import sympy\n\ndef f():\n    from .exercises import sheets\n    return sheets\n")
+    found = _imports(fake, "pgsym.fake")
+    assert found == [("pgsym.exercises", False)]
+    assert layer("pgsym.fake") == "core" and layer("pgsym.exercises") not in ALLOWED["core"]
+    assert ("core", "exercises") not in LAZY_ALLOWED
+
+
+@pytest.mark.parametrize("package", ["numeric", "vision"])
+def test_numeric_and_vision_modules_load_without_sympy(package: str) -> None:
+    modules = sorted(_module_name(p) for p in (ROOT / package).rglob("*.py"))
+    code = ("import importlib, sys\n"
+            f"for m in {modules!r}:\n"
+            "    importlib.import_module(m)\n"
+            "print(sorted(m for m in ('sympy', 'cv2', 'matplotlib') if m in sys.modules))\n")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    assert out.stdout.strip() == "[]"
