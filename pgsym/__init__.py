@@ -14,10 +14,8 @@ Point(-2, -2, -2)
 # name is listed once, in `_LAZY` or in `errors.__all__`; `__all__` is derived from them.
 from __future__ import annotations
 
-import importlib
-from typing import Any
-
 from . import errors as _errors
+from ._lazy import lazy_names
 
 __version__ = "0.1.0"
 
@@ -101,24 +99,9 @@ _LAZY: dict[str, str] = {
     "ImageError": "vision.errors",
 }
 
-_SUBPACKAGES = ("numeric", "vision")
+# the subpackages themselves, and the proof engine under a name less generic than `prove`
+_LAZY.update({"numeric": "numeric:", "vision": "vision:", "prove_claim": "proofs:prove"})
 
+__getattr__, __dir__ = lazy_names(__name__, _LAZY)
 
-def __getattr__(name: str) -> Any:
-    if name in _SUBPACKAGES:
-        return importlib.import_module(f".{name}", __name__)
-    if name == "prove_claim":  # `prove` would be too generic a top-level name
-        return importlib.import_module(".proofs", __name__).prove
-    module = _LAZY.get(name)
-    if module is None:
-        raise AttributeError(f"module 'pgsym' has no attribute {name!r}")
-    value = getattr(importlib.import_module(f".{module}", __name__), name)
-    globals()[name] = value
-    return value
-
-
-def __dir__() -> list[str]:
-    return sorted(set(globals()) | set(_LAZY) | set(_SUBPACKAGES) | {"prove_claim"})
-
-
-__all__ = sorted([*_errors.__all__, *_LAZY, *_SUBPACKAGES, "prove_claim"])
+__all__ = sorted([*_errors.__all__, *_LAZY])

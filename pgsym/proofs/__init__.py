@@ -12,9 +12,7 @@ True
 # without paying for SymPy, which the engine and the catalogue need.
 from __future__ import annotations
 
-import importlib
-from typing import Any
-
+from .._lazy import lazy_names
 from . import errors as _errors
 from .errors import NonPolynomialClaimError, UndefinedConstructionError, UnknownClaimError  # noqa: F401 (re-exported)
 
@@ -33,13 +31,7 @@ _LAZY = {
 }
 
 
-def __getattr__(name: str) -> Any:
-    module = _LAZY.get(name)
-    if module is None:
-        raise AttributeError(f"module 'pgsym.proofs' has no attribute {name!r}")
-    value = getattr(importlib.import_module(f".{module}", __name__), name)
-    globals()[name] = value
-    return value
+__getattr__, __dir__ = lazy_names(__name__, _LAZY)
 
 
 __all__ = sorted([*_LAZY, *_errors.__all__])

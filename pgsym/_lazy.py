@@ -1,0 +1,42 @@
+"""Public names resolved on first use (PEP 562), so that importing a package stays light.
+
+A package lists each public name once, with where it lives, and installs the two hooks::
+
+    __getattr__, __dir__ = lazy_names(__name__, {"Point": "projective_plane",   # module.Point
+                                                  "prove_claim": "proofs:prove",  # module.attribute
+                                                  "numeric": "numeric:"})         # the module itself
+
+>>> getattr_, dir_ = lazy_names("pgsym", {"Point": "projective_plane", "numeric": "numeric:"})
+>>> getattr_("Point").__name__, getattr_("numeric").__name__
+('Point', 'pgsym.numeric')
+"""
+
+from __future__ import annotations
+
+import importlib
+import sys
+from collections.abc import Callable, Mapping
+from typing import Any
+
+__all__ = ["lazy_names"]
+
+
+def lazy_names(package: str, table: Mapping[str, str]) -> tuple[Callable[[str], Any], Callable[[], list[str]]]:
+    """``(__getattr__, __dir__)`` for ``package``: each name of ``table`` is imported when first used
+    and then bound in the package, so the lookup happens once."""
+
+    def __getattr__(name: str) -> Any:
+        target = table.get(name)
+        if target is None:
+            raise AttributeError(f"module {package!r} has no attribute {name!r}")
+        module_name, colon, attribute = target.partition(":")
+        value = importlib.import_module(f".{module_name}", package)
+        if not colon or attribute:
+            value = getattr(value, attribute or name)
+        vars(sys.modules[package])[name] = value
+        return value
+
+    def __dir__() -> list[str]:
+        return sorted(set(vars(sys.modules[package])) | set(table))
+
+    return __getattr__, __dir__
