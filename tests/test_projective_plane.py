@@ -5,9 +5,9 @@ from __future__ import annotations
 from fractions import Fraction
 
 import sympy
-from conftest import lines, nonzero_rational, points, scaled
 from hypothesis import assume, given
 from hypothesis import strategies as st
+from strategies import lines, nonzero_rational, points, scaled
 from sympy import Rational, S, symbols
 
 import pgsym

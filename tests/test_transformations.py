@@ -8,9 +8,9 @@ from __future__ import annotations
 
 import pytest
 import sympy
-from conftest import homogeneous_triples, lines, points
 from hypothesis import assume, given, settings
 from hypothesis import strategies as st
+from strategies import homogeneous_triples, lines, points
 
 from pgsym.errors import DimensionError, ObjectTypeError, PgsymError, SingularTransformationError
 from pgsym.projective_plane import Line, Point, collinear, concurrent, cross, incident, join, meet

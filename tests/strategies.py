@@ -1,0 +1,48 @@
+"""Shared hypothesis strategies: exact random configurations, ideal elements included.
+
+One home for the random data of the property tests, so that "a random point" means the same thing
+in every test file.
+"""
+
+from __future__ import annotations
+
+from fractions import Fraction
+
+from hypothesis import strategies as st
+
+from pgsym import Line, Point
+
+small = st.integers(min_value=-12, max_value=12)
+nonzero_rational = st.fractions(min_value=-9, max_value=9, max_denominator=7).filter(lambda f: f != 0)
+
+
+@st.composite
+def homogeneous_vectors(draw, k: int = 3, allow_ideal: bool = True, entries: st.SearchStrategy[int] = small
+                        ) -> tuple[int, ...]:
+    """Integer k-vectors that are not the zero vector; a third of them ideal (last entry 0) when allowed."""
+    if allow_ideal:
+        last = 0 if draw(st.integers(0, 2)) == 0 else draw(entries)
+    else:
+        last = draw(entries.filter(lambda v: v != 0))
+    head = [draw(entries) for _ in range(k - 1)]
+    if not any(head) and last == 0:
+        head[0] = 1
+    return (*head, last)
+
+
+def homogeneous_triples(allow_ideal: bool = True) -> st.SearchStrategy[tuple[int, ...]]:
+    """Integer triples that are not the zero vector; a third of them ideal when allowed."""
+    return homogeneous_vectors(3, allow_ideal)
+
+
+def points(allow_ideal: bool = True) -> st.SearchStrategy[Point]:
+    return homogeneous_triples(allow_ideal).map(lambda t: Point(*t))
+
+
+def lines() -> st.SearchStrategy[Line]:
+    return homogeneous_triples(True).map(lambda t: Line(*t))
+
+
+def scaled(obj, factor: Fraction):
+    """The same projective object with every coordinate multiplied by ``factor``."""
+    return type(obj)(*(c * factor for c in obj.coords))
