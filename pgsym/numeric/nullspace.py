@@ -21,7 +21,7 @@ from __future__ import annotations
 import math
 import numbers
 import sys
-from collections.abc import Callable, Sequence
+from collections.abc import Sequence
 from typing import Any
 
 import numpy as np
@@ -137,8 +137,9 @@ def _sign_normalised(v: np.ndarray) -> np.ndarray:
 
 
 def _smallest_right_singular_vector(
-    rows: Any, name: str, error: Callable[[int], DegenerateConfigurationError], what: str, rtol: float | None
+    rows: Any, name: str, what: str, rtol: float | None, error: type[DegenerateConfigurationError], message: str
 ) -> np.ndarray:
+    """The fitted plane (point) of ``rows``; ``error(message.format(rank=…))`` when the rank is below 3."""
     array = float_matrix(rows, name)
     if array.shape[1] != 4 or array.shape[0] < 3:
         raise DimensionError(f"{name} must have shape (n, 4) with n >= 3 {what}, got {array.shape}")
@@ -154,7 +155,7 @@ def _smallest_right_singular_vector(
     _, singular_values, vt = np.linalg.svd(balanced, full_matrices=True)
     rank = int(np.sum(singular_values > rank_tolerance(singular_values, balanced.shape, rtol)))
     if rank < 3:
-        raise error(rank)
+        raise error(message.format(rank=rank))
     if array.shape[0] == 3:  # the exact null vector: the balanced matrix gives it to full relative accuracy
         v = vt[-1].copy()
         v[3] = np.ldexp(v[3], shift)  # back to the given units: x·π = x'·π' with x'_4 = 2^shift x_4
@@ -177,14 +178,12 @@ def plane_through_numeric(points: Any, rtol: float | None = None) -> np.ndarray:
     >>> bool(np.allclose(pi / pi[0], [1, 1, 1, -1]))
     True
     """
-
-    def error(rank: int) -> DegenerateConfigurationError:
-        return CollinearPointsError(
-            f"the matrix of the points has numerical rank {rank} < 3: they are collinear or coincide, so no "
-            f"unique plane passes through them; add a point off their line (or pass a smaller rtol)"
-        )
-
-    return _smallest_right_singular_vector(points, "points", error, "(one homogeneous point per row)", rtol)
+    message = (
+        "the matrix of the points has numerical rank {rank} < 3: they are collinear or coincide, so no unique "
+        "plane passes through them; add a point off their line (or pass a smaller rtol)"
+    )
+    what = "(one homogeneous point per row)"
+    return _smallest_right_singular_vector(points, "points", what, rtol, CollinearPointsError, message)
 
 
 def point_on_planes_numeric(planes: Any, rtol: float | None = None) -> np.ndarray:
@@ -200,11 +199,8 @@ def point_on_planes_numeric(planes: Any, rtol: float | None = None) -> np.ndarra
     >>> bool(np.allclose(X[:3] / X[3], [1, 2, 3]))
     True
     """
-
-    def error(rank: int) -> DegenerateConfigurationError:
-        return DependentPlanesError(
-            f"the matrix of the planes has numerical rank {rank} < 3: they share a line or repeat, so they do not "
-            f"meet in a single point; replace one plane by a plane not through that line (or pass a smaller rtol)"
-        )
-
-    return _smallest_right_singular_vector(planes, "planes", error, "(one plane per row)", rtol)
+    message = (
+        "the matrix of the planes has numerical rank {rank} < 3: they share a line or repeat, so they do not meet "
+        "in a single point; replace one plane by a plane not through that line (or pass a smaller rtol)"
+    )
+    return _smallest_right_singular_vector(planes, "planes", "(one plane per row)", rtol, DependentPlanesError, message)

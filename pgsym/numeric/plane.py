@@ -68,13 +68,7 @@ _ZERO_OR_POLICY = ("zero", *DEGENERATE)
 
 
 def join(
-    p: Any,
-    q: Any,
-    *,
-    out: np.ndarray | None = None,
-    axis: int = -1,
-    nonfinite: str = "raise",
-    degenerate: str = "zero",
+    p: Any, q: Any, *, out: np.ndarray | None = None, axis: int = -1, nonfinite: str = "raise", degenerate: str = "zero"
 ) -> Any:
     """The lines ``p × q`` through pairs of points of P² (the numeric :func:`pgsym.projective_plane.join`).
 
@@ -96,13 +90,7 @@ def join(
 
 
 def meet(
-    l: Any,
-    m: Any,
-    *,
-    out: np.ndarray | None = None,
-    axis: int = -1,
-    nonfinite: str = "raise",
-    degenerate: str = "zero",
+    l: Any, m: Any, *, out: np.ndarray | None = None, axis: int = -1, nonfinite: str = "raise", degenerate: str = "zero"
 ) -> Any:
     """The points ``l × m`` where pairs of lines of P² meet (the numeric :func:`pgsym.projective_plane.meet`).
 

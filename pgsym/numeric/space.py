@@ -65,14 +65,18 @@ def triple_cross(
     return rowwise(_triple_cross_kernel, "triple_cross", inputs, 4, out, axis, 7, nonfinite)
 
 
+def _construct(
+    function: str, inputs: list[tuple[Any, int, str]], out: Any, axis: int, nonfinite: str, degenerate: str,
+    error: type[Exception], what: str,
+) -> Any:
+    """The minors of the three inputs under both policies: non-finite (``nonfinite``) and degenerate input."""
+    check_option(degenerate, DEGENERATE, "degenerate", function)
+    value = rowwise(_triple_cross_kernel, function, inputs, 4, out, axis, 7, nonfinite)
+    return degenerate_result(value, degenerate, axis, function, error, what)
+
+
 def plane_through(
-    p: Any,
-    q: Any,
-    r: Any,
-    *,
-    out: np.ndarray | None = None,
-    axis: int = -1,
-    nonfinite: str = "raise",
+    p: Any, q: Any, r: Any, *, out: np.ndarray | None = None, axis: int = -1, nonfinite: str = "raise",
     degenerate: str = "raise",
 ) -> Any:
     """The planes through triples of points of P³.
@@ -87,34 +91,21 @@ def plane_through(
     (array([[ 0.,  0.,  1.,  0.],
            [nan, nan, nan, nan]]), array([ True, False]))
     """
-    check_option(degenerate, DEGENERATE, "degenerate", "plane_through")
-    inputs = [(p, 4, "p"), (q, 4, "q"), (r, 4, "r")]
-    value = rowwise(_triple_cross_kernel, "plane_through", inputs, 4, out, axis, 7, nonfinite)
     what = "are collinear points (every 3×3 minor is zero), through which no single plane passes"
-    return degenerate_result(value, degenerate, axis, "plane_through", CollinearPointsError, what)
+    inputs = [(p, 4, "p"), (q, 4, "q"), (r, 4, "r")]
+    return _construct("plane_through", inputs, out, axis, nonfinite, degenerate, CollinearPointsError, what)
 
 
 def point_on_planes(
-    a: Any,
-    b: Any,
-    c: Any,
-    *,
-    out: np.ndarray | None = None,
-    axis: int = -1,
-    nonfinite: str = "raise",
+    a: Any, b: Any, c: Any, *, out: np.ndarray | None = None, axis: int = -1, nonfinite: str = "raise",
     degenerate: str = "raise",
 ) -> Any:
-    """The points where triples of planes of P³ meet.
-
-    Planes through one line (all minors exactly zero) raise
-    :class:`~pgsym.errors.DependentPlanesError`; with ``degenerate="mask"`` the result is
-    ``(points, ok)`` with NaN rows where ``ok`` is False.
+    """The points where triples of planes of P³ meet: :class:`~pgsym.errors.DependentPlanesError` for planes
+    through one line (all minors exactly zero), or NaN rows and a mask as in :func:`plane_through`.
 
     >>> point_on_planes([1.0, 0, 0, -1], [0.0, 1, 0, -2], [0.0, 0, 1, -3])   # (1, 2, 3), up to scale
     array([-1., -2., -3., -1.])
     """
-    check_option(degenerate, DEGENERATE, "degenerate", "point_on_planes")
-    inputs = [(a, 4, "a"), (b, 4, "b"), (c, 4, "c")]
-    value = rowwise(_triple_cross_kernel, "point_on_planes", inputs, 4, out, axis, 7, nonfinite)
     what = "are planes through one line (every 3×3 minor is zero), which meet in no single point"
-    return degenerate_result(value, degenerate, axis, "point_on_planes", DependentPlanesError, what)
+    inputs = [(a, 4, "a"), (b, 4, "b"), (c, 4, "c")]
+    return _construct("point_on_planes", inputs, out, axis, nonfinite, degenerate, DependentPlanesError, what)

@@ -35,15 +35,8 @@ from .plane import cross
 from .space import triple_cross
 from .tolerances import SINGULAR_RTOL
 
-__all__ = [
-    "adjugate",
-    "transform_conics",
-    "transform_dual_conics",
-    "transform_lines",
-    "transform_planes",
-    "transform_points",
-    "transform_quadrics",
-]
+__all__ = ["adjugate", "transform_conics", "transform_dual_conics", "transform_lines", "transform_planes",
+           "transform_points", "transform_quadrics"]
 
 
 def _square(H: Any, function: str, sizes: tuple[int, ...] = (2, 3, 4)) -> np.ndarray:
