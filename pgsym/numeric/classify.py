@@ -81,7 +81,8 @@ def classify_matrix(H: Any, tol: float | None = None) -> str:
     g = float(np.trace(G)) / k
     if np.abs(G - g * np.eye(k)).max() > tol * g:
         return keys[-2]
-    proper = bool(np.linalg.det(A / alpha) * w > 0)
+    # orientation of the affine map x ↦ (A x + t) / w: the sign of det(A / w) = det(A) / wᵏ, whatever the scale of H
+    proper = bool(np.linalg.det(A / alpha) * np.sign(w) ** k > 0)
     # the similarity ratio r = √g α / |w|; an isometry when |r² − 1| ≤ tol (computed in logarithms)
     log_r2 = math.log(g) + 2 * (math.log(alpha) - math.log(omega))
     isometry = abs(log_r2) < 1 and abs(math.expm1(log_r2)) <= tol
