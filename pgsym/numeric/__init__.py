@@ -9,6 +9,11 @@ exact result on the same integer data. Only NumPy is imported: ``import pgsym.nu
 does not import SymPy, and neither does any kernel call (the conversions
 :func:`to_array` / :func:`from_array` load the exact core when they run).
 
+The linear algebra of small dense matrices lives here too: numerical rank, null spaces
+and least-squares planes by the SVD (:mod:`pgsym.numeric.nullspace`), the SVD of a 2×2
+matrix as rotate–stretch–rotate (:mod:`pgsym.numeric.svd`) and the float classifier of
+the transformation hierarchy (:mod:`pgsym.numeric.classify`).
+
 Kernels run block by block over the rows, so that their scratch buffers stay in the
 processor cache; pass ``out=`` to reuse an output array.
 
