@@ -274,29 +274,26 @@ def dlt_homography(src: Any, dst: Any) -> np.ndarray:
     s_n = np.linalg.svd(Hn, compute_uv=False)  # Ĥ is in the normalised frames: balanced already
     if s_n[-1] <= SINGULAR_RTOL * s_n[0]:
         raise DegenerateConfigurationError("the estimated homography is singular; the correspondences are degenerate")
-    H = _denormalized(Hn[None], np.array([s]), np.array([[cx, cy]]), np.array([sd]), np.array([[cu, cv]]),
-                      "dlt_homography")
-    return H[0]
+    return _denormalized(Hn, np.float64(s), np.array([cx, cy]), np.float64(sd), np.array([cu, cv]), "dlt_homography")
 
 
 def _denormalized(
     Hn: np.ndarray, sp: np.ndarray, cp: np.ndarray, sq: np.ndarray, cq: np.ndarray, function: str
 ) -> np.ndarray:
-    """``H = Tq⁻¹ Ĥ Tp`` for stacks ``Ĥ`` (N, 3, 3), at unit norm; entries past float64 raise.
+    """``H = Tq⁻¹ Ĥ Tp`` for one ``Ĥ`` (3, 3) or a stack (N, 3, 3), at unit norm; entries past float64 raise.
 
-    ``Tp = [[sp I, −sp cp], [0, 1]]`` normalised the sources (scales ``sp`` (N,), centroids ``cp`` (N, 2)),
-    ``Tq`` the destinations; ``Tq⁻¹ = [[I / sq, cq], [0, 1]]``, not the integer-looking multiple
-    ``sq Tq⁻¹``, whose corner ``sq`` overflows for data near 1e-200.
+    ``Tp = [[sp I, −sp cp], [0, 1]]`` normalised the sources (scales ``sp``: a scalar or (N,), centroids
+    ``cp``: (2,) or (N, 2)), ``Tq`` the destinations; ``Tq⁻¹ = [[I / sq, cq], [0, 1]]``, not the
+    integer-looking multiple ``sq Tq⁻¹``, whose corner ``sq`` overflows for data near 1e-200.
     """
-    n = len(Hn)
-    Tp = np.zeros((n, 3, 3))
-    Tp[:, 0, 0] = Tp[:, 1, 1] = sp
-    Tp[:, :2, 2] = -sp[:, None] * cp
-    Tp[:, 2, 2] = 1.0
-    Tq_inv = np.zeros((n, 3, 3))
-    Tq_inv[:, 0, 0] = Tq_inv[:, 1, 1] = 1.0 / sq
-    Tq_inv[:, :2, 2] = cq
-    Tq_inv[:, 2, 2] = 1.0
+    Tp = np.zeros(Hn.shape)
+    Tp[..., 0, 0] = Tp[..., 1, 1] = sp
+    Tp[..., :2, 2] = -sp[..., None] * cp
+    Tp[..., 2, 2] = 1.0
+    Tq_inv = np.zeros(Hn.shape)
+    Tq_inv[..., 0, 0] = Tq_inv[..., 1, 1] = 1.0 / sq
+    Tq_inv[..., :2, 2] = cq
+    Tq_inv[..., 2, 2] = 1.0
     with np.errstate(over="ignore", under="ignore", invalid="ignore"):
         H = Tq_inv @ Hn @ Tp
     if not np.isfinite(H).all():
