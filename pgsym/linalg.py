@@ -212,6 +212,10 @@ def __getattr__(name: str) -> Any:
     raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 
+def __dir__() -> list[str]:
+    return sorted(set(globals()) | set(_NUMERIC))
+
+
 def _is_ndarray(M: Any) -> bool:
     # an ndarray exists only once NumPy is loaded: asking sys.modules keeps this module NumPy-free
     np = sys.modules.get("numpy")
