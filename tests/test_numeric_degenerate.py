@@ -83,9 +83,23 @@ def test_join_and_meet_keep_the_zero_vector_by_default_and_offer_the_policy():
     assert not ok and np.isnan(point).all()
 
 
-@pytest.mark.parametrize("f", [pn.plane_through, pn.point_on_planes, pn.join, pn.meet])
+def test_plucker_join_and_meet_offer_the_policy_too():
+    a, b = np.array([[1.0, 2, 3, 1], [0, 0, 0, 1]]), np.array([[2.0, 4, 6, 2], [1, 0, 0, 1]])  # one point twice
+    assert pn.plucker_join(a, b)[0].tolist() == [0] * 6
+    with pytest.raises(CoincidentPointsError, match="coincident points"):
+        pn.plucker_join(a, b, degenerate="raise")
+    lines, ok = pn.plucker_join(a, b, degenerate="mask")
+    # the x-axis through (0,0,0,1) and (1,0,0,1): l14 = A1 B4 − B1 A4 = 0·1 − 1·1 = −1, every other l_ij is 0
+    assert ok.tolist() == [False, True] and lines[1].tolist() == [0, 0, -1, 0, 0, 0] and np.isnan(lines[0]).all()
+    with pytest.raises(DependentPlanesError, match="equal planes"):
+        pn.plucker_meet([0.0, 1, 0, 0], [0.0, -2, 0, 0], degenerate="raise")
+
+
+@pytest.mark.parametrize("f", [pn.plane_through, pn.point_on_planes, pn.join, pn.meet, pn.plucker_join])
 def test_an_unknown_option_is_an_option_error(f):
-    args = (P, Q, R) if f in (pn.plane_through, pn.point_on_planes) else (P[:, :3], Q[:, :3])
+    args = {pn.plane_through: (P, Q, R), pn.point_on_planes: (P, Q, R), pn.plucker_join: (P, Q)}.get(
+        f, (P[:, :3], Q[:, :3])
+    )
     with pytest.raises(OptionError, match="degenerate='ignore'"):
         f(*args, degenerate="ignore")
 

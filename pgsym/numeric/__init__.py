@@ -48,11 +48,12 @@ processor cache; pass ``out=`` to reuse an output array.
    ``nonfinite="mask"`` (with both, ``ok`` is False for either cause). The batch kernels decide
    degeneracy exactly (every minor is 0), as the exact core does; the SVD constructions decide
    it by numerical rank (:data:`~pgsym.numeric.tolerances.RANK_EPS`).
-8. :func:`join` and :func:`meet` in P² and the bare formulas :func:`cross` and
-   :func:`triple_cross` return the zero vector for coincident input by default
-   (``degenerate="zero"``, tested by :func:`is_zero_vector`); ``join`` and ``meet`` accept
-   ``degenerate="raise"`` (:class:`~pgsym.errors.CoincidentPointsError`,
-   :class:`~pgsym.errors.CoincidentLinesError`) and ``"mask"`` as well.
+8. The joins and meets of lines (:func:`join`, :func:`meet`, :func:`plucker_join`,
+   :func:`plucker_meet`) return the zero vector for coincident input by default
+   (``degenerate="zero"``, tested by :func:`is_zero_vector`), as the bare formulas
+   :func:`cross` and :func:`triple_cross` always do; they accept ``degenerate="raise"``
+   (:class:`~pgsym.errors.CoincidentPointsError`, :class:`~pgsym.errors.CoincidentLinesError`,
+   :class:`~pgsym.errors.DependentPlanesError`) and ``"mask"`` as well.
 
 The check costs one BLAS dot product of each output block with itself while the block is
 in cache (NaN and inf propagate into a sum of squares); only when it is not finite is

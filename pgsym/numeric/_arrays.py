@@ -29,9 +29,11 @@ __all__ = [
     "CHUNK",
     "DEGENERATE",
     "NONFINITE",
+    "ZERO_OR_DEGENERATE",
     "OptionError",
     "as_float_array",
     "block_finite",
+    "construction",
     "degenerate_result",
     "nonfinite_result",
     "rowwise",
@@ -45,6 +47,9 @@ NONFINITE = ("raise", "mask")
 
 DEGENERATE = ("raise", "mask")
 """The values of a construction's ``degenerate=`` option: raise the named error, or return ``(values, ok)``."""
+
+ZERO_OR_DEGENERATE = ("zero", *DEGENERATE)
+"""The ``degenerate=`` values of the joins and meets, whose default ``"zero"`` returns the zero vector."""
 
 Kernel = Callable[[list[np.ndarray], np.ndarray, list[np.ndarray]], None]
 
@@ -290,3 +295,31 @@ def degenerate_result(
         components[zero] = np.nan
     ok = ~zero if finite is None else finite & ~zero
     return result, np.asarray(ok)
+
+
+def construction(
+    kernel: Kernel,
+    function: str,
+    inputs: Sequence[tuple[Any, int, str]],
+    k_out: int,
+    out: np.ndarray | None,
+    axis: int,
+    n_scratch: int,
+    nonfinite: str,
+    degenerate: str,
+    error: type[Exception],
+    what: str,
+) -> np.ndarray | tuple[np.ndarray, np.ndarray]:
+    """:func:`rowwise`, then :func:`degenerate_result`: a construction under both policies of :mod:`pgsym.numeric`.
+
+    >>> def add(ins, o, ws):
+    ...     np.add(ins[0], ins[1], out=o)
+    >>> construction(add, "add", [([1.0, -1], 2, "a"), ([[1.0, 1], [-1, 1]], 2, "b")], 2, None, -1, 0, "raise",
+    ...              "mask", ValueError, "cancel")
+    (array([[ 2.,  0.],
+           [nan, nan]]), array([ True, False]))
+    """
+    if degenerate != "zero":  # the default of the joins costs no check
+        check_option(degenerate, ZERO_OR_DEGENERATE, "degenerate", function)
+    value = rowwise(kernel, function, inputs, k_out, out, axis, n_scratch, nonfinite)
+    return degenerate_result(value, degenerate, axis, function, error, what)

@@ -27,7 +27,7 @@ from typing import Any
 import numpy as np
 
 from ..errors import CoincidentLinesError, CoincidentPointsError, DimensionError
-from ._arrays import DEGENERATE, as_float_array, check_option, degenerate_result, rowwise
+from ._arrays import as_float_array, construction, rowwise
 from .conditioning import require_finite
 from .tolerances import INCIDENT_RTOL
 
@@ -64,9 +64,6 @@ def cross(
     return rowwise(_cross_kernel, "cross", [(u, 3, "u"), (v, 3, "v")], 3, out, axis, 1, nonfinite)
 
 
-_ZERO_OR_POLICY = ("zero", *DEGENERATE)
-
-
 def join(
     p: Any, q: Any, *, out: np.ndarray | None = None, axis: int = -1, nonfinite: str = "raise", degenerate: str = "zero"
 ) -> Any:
@@ -82,11 +79,9 @@ def join(
     (array([[nan, nan, nan],
            [ 2., -1.,  0.]]), array([False,  True]))
     """
-    if degenerate != "zero":
-        check_option(degenerate, _ZERO_OR_POLICY, "degenerate", "join")
-    value = rowwise(_cross_kernel, "join", [(p, 3, "p"), (q, 3, "q")], 3, out, axis, 1, nonfinite)
-    what = "are pairs of coincident points, which fix no line"
-    return degenerate_result(value, degenerate, axis, "join", CoincidentPointsError, what)
+    error, what = CoincidentPointsError, "are pairs of coincident points, which fix no line"
+    return construction(_cross_kernel, "join", [(p, 3, "p"), (q, 3, "q")], 3, out, axis, 1, nonfinite, degenerate,
+                        error, what)
 
 
 def meet(
@@ -101,11 +96,9 @@ def meet(
     >>> meet([1.0, -1, 0], [1.0, -1, 3])
     array([-3., -3.,  0.])
     """
-    if degenerate != "zero":
-        check_option(degenerate, _ZERO_OR_POLICY, "degenerate", "meet")
-    value = rowwise(_cross_kernel, "meet", [(l, 3, "l"), (m, 3, "m")], 3, out, axis, 1, nonfinite)
-    what = "are pairs of equal lines, which meet in no single point"
-    return degenerate_result(value, degenerate, axis, "meet", CoincidentLinesError, what)
+    error, what = CoincidentLinesError, "are pairs of equal lines, which meet in no single point"
+    return construction(_cross_kernel, "meet", [(l, 3, "l"), (m, 3, "m")], 3, out, axis, 1, nonfinite, degenerate,
+                        error, what)
 
 
 def incident(x: Any, y: Any, *, rtol: float = INCIDENT_RTOL, axis: int = -1) -> np.ndarray:

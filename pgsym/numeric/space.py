@@ -25,7 +25,7 @@ from typing import Any
 import numpy as np
 
 from ..errors import CollinearPointsError, DependentPlanesError
-from ._arrays import DEGENERATE, check_option, degenerate_result, rowwise
+from ._arrays import DEGENERATE, check_option, construction, rowwise
 
 __all__ = ["plane_through", "point_on_planes", "triple_cross"]
 
@@ -65,14 +65,12 @@ def triple_cross(
     return rowwise(_triple_cross_kernel, "triple_cross", inputs, 4, out, axis, 7, nonfinite)
 
 
-def _construct(
+def _minors(
     function: str, inputs: list[tuple[Any, int, str]], out: Any, axis: int, nonfinite: str, degenerate: str,
     error: type[Exception], what: str,
 ) -> Any:
-    """The minors of the three inputs under both policies: non-finite (``nonfinite``) and degenerate input."""
-    check_option(degenerate, DEGENERATE, "degenerate", function)
-    value = rowwise(_triple_cross_kernel, function, inputs, 4, out, axis, 7, nonfinite)
-    return degenerate_result(value, degenerate, axis, function, error, what)
+    check_option(degenerate, DEGENERATE, "degenerate", function)  # no "zero": these raise by default
+    return construction(_triple_cross_kernel, function, inputs, 4, out, axis, 7, nonfinite, degenerate, error, what)
 
 
 def plane_through(
@@ -93,7 +91,7 @@ def plane_through(
     """
     what = "are collinear points (every 3×3 minor is zero), through which no single plane passes"
     inputs = [(p, 4, "p"), (q, 4, "q"), (r, 4, "r")]
-    return _construct("plane_through", inputs, out, axis, nonfinite, degenerate, CollinearPointsError, what)
+    return _minors("plane_through", inputs, out, axis, nonfinite, degenerate, CollinearPointsError, what)
 
 
 def point_on_planes(
@@ -108,4 +106,4 @@ def point_on_planes(
     """
     what = "are planes through one line (every 3×3 minor is zero), which meet in no single point"
     inputs = [(a, 4, "a"), (b, 4, "b"), (c, 4, "c")]
-    return _construct("point_on_planes", inputs, out, axis, nonfinite, degenerate, DependentPlanesError, what)
+    return _minors("point_on_planes", inputs, out, axis, nonfinite, degenerate, DependentPlanesError, what)
