@@ -36,6 +36,7 @@ When the two bounds agree, the DoF is proved.
 from __future__ import annotations
 
 import random
+import sys
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from fractions import Fraction
@@ -45,7 +46,7 @@ from typing import Any
 import sympy
 from sympy import ImmutableMatrix, Rational
 
-from .errors import DimensionError, ObjectTypeError, SingularTransformationError
+from .errors import DimensionError, ObjectTypeError
 from .exact import sign
 from .homogeneous import is_zero, to_exact
 from .transformations import Transformation, as_exact_matrix
@@ -516,11 +517,9 @@ def dof_table(seed: int = 0) -> list[dict[str, Any]]:
 
 # -- classify -------------------------------------------------------------------------------------
 def _is_float_input(H: Any) -> bool:
-    try:
-        import numpy as np
-    except ImportError:  # pragma: no cover
-        return False
-    if isinstance(H, np.ndarray):
+    # NumPy values exist only once NumPy is loaded: asking sys.modules keeps exact classification NumPy-free
+    np = sys.modules.get("numpy")
+    if np is not None and isinstance(H, np.ndarray):
         return H.dtype.kind in "fc"
     try:
         return any(isinstance(e, float) or type(e).__module__ == "numpy" for row in H for e in row)
@@ -544,7 +543,7 @@ def classify(H: Any, tol: float | None = None) -> TransformationClass:
     'Isometry'
     """
     if tol is not None or _is_float_input(H):
-        return _classify_numeric(H, 1e-9 if tol is None else tol)
+        return _classify_numeric(H, tol)
     T = H if isinstance(H, Transformation) else Transformation(H)
     M, n = T.matrix, T.matrix.rows
     classes = CLASSES_2D if n == 3 else CLASSES_3D
@@ -565,62 +564,14 @@ def classify(H: Any, tol: float | None = None) -> TransformationClass:
     return EUCLIDEAN_3D if is_zero(G[0, 0] - 1) else SIMILARITY_3D
 
 
-def _classify_numeric(H: Any, tol: float) -> TransformationClass:
-    """Float classification that no change of units can alter (see :mod:`pgsym.numeric.tolerances`).
+def _classify_numeric(H: Any, tol: float | None) -> TransformationClass:
+    """Float classification by :func:`pgsym.numeric.classify.classify_matrix` (default ``tol``: ``CLASS_RTOL``).
 
-    With ``H = [[A, t], [vᵀ, w]]`` (max-norms ``α, τ, ν, ω``): singular when the balanced
-    matrix has ``σ_min ≤ SINGULAR_RTOL σ_max``; affine when ``ν τ ≤ tol α ω`` (and ``ν = 0`` if
-    ``τ = 0``: with no translation, units can make any ``v ≠ 0`` as large as ``A``); a similarity when
-    ``AᵀA`` is within ``tol`` of a multiple of ``I``; an isometry when that multiple is ``w²``.
-    Every test is a ratio that conjugating ``H`` by ``diag(s, …, s, 1)`` or scaling it leaves unchanged.
+    NumPy is loaded here, on the first float input, not with this module.
     """
-    import math
+    from .numeric.classify import classify_matrix
 
-    import numpy as np
-
-    from .numeric.conditioning import require_finite, singular
-    from .numeric.tolerances import SINGULAR_RTOL
-
-    if isinstance(H, Transformation):
-        H = H.matrix
-    try:
-        M = np.array(H.tolist() if hasattr(H, "tolist") else H, dtype=float)
-    except (TypeError, ValueError) as err:
-        raise DimensionError(f"classify needs a square 3×3 or 4×4 matrix of numbers, got {H!r}") from err
-    if M.shape not in ((3, 3), (4, 4)):
-        raise DimensionError(f"classify needs a 3×3 or 4×4 matrix, got shape {M.shape}")
-    require_finite(M, "H", "classify")
-    if not np.abs(M).max() > 0 or singular(M):
-        raise SingularTransformationError(
-            f"the matrix {M.tolist()} is singular (σ_min ≤ {SINGULAR_RTOL} σ_max in balanced units): no projective "
-            "transformation"
-        )
-    n = M.shape[0]
-    k = n - 1
-    M = np.ldexp(M, -int(np.frexp(np.abs(M).max())[1]))  # exact power-of-two scale: no overflow below
-    A, t, v, w = M[:k, :k], M[:k, k], M[k, :k], float(M[k, k])
-    alpha, tau, nu, omega = float(np.abs(A).max()), float(np.abs(t).max()), float(np.abs(v).max()), abs(w)
-    classes = CLASSES_2D if n == 3 else CLASSES_3D
-    if nu > 0:
-        if tau == 0 or omega == 0:
-            return classes[-1]
-        if math.log(nu) + math.log(tau) > math.log(tol) + math.log(alpha) + math.log(omega):
-            return classes[-1]
-    G = (A / alpha).T @ (A / alpha)
-    g = float(np.trace(G)) / k
-    if np.abs(G - g * np.eye(k)).max() > tol * g:
-        return classes[-2]
-    proper = bool(np.linalg.det(A / alpha) * w > 0)
-    # the similarity ratio r = √g α / |w|; an isometry when |r² − 1| ≤ tol (computed in logarithms)
-    log_r2 = math.log(g) + 2 * (math.log(alpha) - math.log(omega))
-    isometry = abs(log_r2) < 1 and abs(math.expm1(log_r2)) <= tol
-    if n == 3:
-        if not isometry:
-            return SIMILARITY_2D
-        return EUCLIDEAN_2D if proper else ISOMETRY_2D
-    if not proper:
-        return AFFINE_3D
-    return EUCLIDEAN_3D if isometry else SIMILARITY_3D
+    return class_by_key(classify_matrix(H.matrix if isinstance(H, Transformation) else H, tol))
 
 
 def as_matrix(H: Any) -> ImmutableMatrix:

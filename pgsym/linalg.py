@@ -7,15 +7,17 @@ two ways of computing it that the lecture presents, each exactly and
 numerically:
 
 * **method #1**, the null space itself: :func:`nullspace_exact` (SymPy, exact)
-  and :func:`nullspace_svd` (numpy: the right singular vectors of the zero
+  and ``nullspace_svd`` (NumPy: the right singular vectors of the zero
   singular values);
 * **method #2**, fixing one homogeneous coordinate to 1 and solving the square
   system that remains: :func:`solve_by_fixing_coordinate`.
 
-:func:`plane_through_numeric` and :func:`point_on_planes_numeric` are the
-floating-point counterparts of :func:`pgsym.space.plane_through` and
-:func:`pgsym.space.point_on_planes`; :func:`svd_steps` splits a 2×2 matrix into
-the rotate–stretch–rotate factors of its SVD.
+The numeric functions live in :mod:`pgsym.numeric` and are reachable here under their
+names, loaded on first use so that this module does not import NumPy:
+``numeric_rank``, ``nullspace_svd``, ``plane_through_numeric`` and ``point_on_planes_numeric``
+(:mod:`pgsym.numeric.nullspace`: the floating-point counterparts of
+:func:`pgsym.space.plane_through` and :func:`pgsym.space.point_on_planes`), and ``svd_steps`` /
+``SVDSteps`` (:mod:`pgsym.numeric.svd`: the rotate–stretch–rotate factors of a 2×2 SVD).
 
 >>> nullspace_exact([[1, 0, 0, -1], [0, 1, 0, -2], [0, 0, 1, -3]])
 [(1, 2, 3, 1)]
@@ -27,10 +29,10 @@ from __future__ import annotations
 
 import math
 import numbers
+import sys
 from collections.abc import Sequence
-from typing import Any, NamedTuple
+from typing import Any
 
-import numpy as np
 import sympy
 from sympy import Expr, Matrix
 
@@ -39,23 +41,15 @@ from .errors import (
     DegenerateConfigurationError,
     DependentPlanesError,
     DimensionError,
-    InvalidCoordinatesError,
-    NonFiniteError,
     ZeroCoordinateError,
 )
-from .homogeneous import HomogeneousVector, is_zero, to_exact
+from .homogeneous import is_zero, to_exact
 
 __all__ = [
-    "SVDSteps",
     "ZeroCoordinateError",
     "nullspace_exact",
-    "nullspace_svd",
-    "numeric_rank",
-    "plane_through_numeric",
-    "point_on_planes_numeric",
     "rank_exact",
     "solve_by_fixing_coordinate",
-    "svd_steps",
 ]
 
 
@@ -67,7 +61,7 @@ def _exact_matrix(M: Any, name: str = "M") -> Matrix:
     if isinstance(M, sympy.MatrixBase):
         rows = M.tolist()
     else:
-        if isinstance(M, np.ndarray):
+        if _is_ndarray(M):
             M = M.tolist()
         try:
             rows = [list(r) for r in M]
@@ -163,7 +157,7 @@ def solve_by_fixing_coordinate(M: Any, index: int = 3) -> tuple[Expr, ...]:
     index = int(index)
     rank = rank_exact(matrix)
     if rank < rows:
-        kinds = {type(r) for r in M} if not isinstance(M, (sympy.MatrixBase, np.ndarray)) else set()
+        kinds = {type(r) for r in M} if not (isinstance(M, sympy.MatrixBase) or _is_ndarray(M)) else set()
         message = (
             f"the {rows}×{cols} matrix has rank {rank} < {rows}, so the solutions form a space of dimension "
             f"{cols - rank} and fixing one coordinate does not single one out"
@@ -191,205 +185,38 @@ def solve_by_fixing_coordinate(M: Any, index: int = 3) -> tuple[Expr, ...]:
     return tuple(values)
 
 
-# -- numeric -------------------------------------------------------------------------------------------
+# -- the numeric names, at home in pgsym.numeric ---------------------------------------------------
+
+_NUMERIC = {
+    "SVDSteps": "svd",
+    "svd_steps": "svd",
+    "nullspace_svd": "nullspace",
+    "numeric_rank": "nullspace",
+    "plane_through_numeric": "nullspace",
+    "point_on_planes_numeric": "nullspace",
+}
 
 
-def _float_matrix(A: Any, name: str = "A") -> np.ndarray:
-    if isinstance(A, HomogeneousVector):
-        raise DimensionError(f"{name} must be a 2D array, got the single vector {A!r}")
-    try:
-        if isinstance(A, Sequence) and A and all(isinstance(r, HomogeneousVector) for r in A):
-            A = [[float(v) for v in r.coords] for r in A]
-        array = np.asarray(A, dtype=float)
-    except (TypeError, ValueError) as err:
-        raise InvalidCoordinatesError(
-            f"{name} must be an array of real numbers (substitute values for any symbols first): {err}"
-        ) from None
-    if array.ndim != 2 or 0 in array.shape:
-        raise DimensionError(f"{name} must be a non-empty 2D array, got shape {array.shape}")
-    if not np.all(np.isfinite(array)):
-        raise NonFiniteError(f"{name} contains NaN or infinite entries; remove or repair those rows")
-    return array
+def __getattr__(name: str) -> Any:
+    """The numeric functions under their names here, loaded from :mod:`pgsym.numeric` on first use (PEP 562).
 
-
-def _unit_scaled(array: np.ndarray) -> np.ndarray:
-    """``array`` times the power of two that brings its largest entry to [0.5, 1).
-
-    The scaling is exact, so the SVD sees no overflow or underflow and the ratios of singular
-    values, which are all that rank decisions use, are unchanged.
+    ``from pgsym.linalg import nullspace_svd`` is :func:`pgsym.numeric.nullspace.nullspace_svd`; NumPy loads
+    then, not with this module, so the exact functions run where NumPy is absent.
     """
-    largest = float(np.abs(array).max())
-    return np.ldexp(array, -int(np.frexp(largest)[1])) if largest > 0 else array
+    if name in _NUMERIC:
+        import importlib
+
+        value = getattr(importlib.import_module(f".numeric.{_NUMERIC[name]}", __package__), name)
+        globals()[name] = value
+        return value
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 
-def _tolerance(singular_values: np.ndarray, shape: tuple[int, int], rtol: float | None) -> float:
-    from .numeric.tolerances import RANK_EPS
-
-    largest = float(singular_values.max()) if singular_values.size else 0.0
-    if rtol is None:
-        rtol = max(shape) * RANK_EPS
-    elif not (isinstance(rtol, numbers.Real) and math.isfinite(rtol) and rtol >= 0):
-        raise InvalidCoordinatesError(f"rtol must be a finite number >= 0, got {rtol!r}")
-    return float(rtol) * largest
+def __dir__() -> list[str]:
+    return sorted(set(globals()) | set(_NUMERIC))
 
 
-def numeric_rank(A: Any, rtol: float | None = None) -> int:
-    """The numerical rank: the number of singular values above ``rtol · σ_max``.
-
-    The default ``rtol`` is ``max(m, n) · ε`` (machine epsilon), the default of
-    :func:`numpy.linalg.matrix_rank`.
-
-    >>> numeric_rank([[1.0, 2.0], [2.0, 4.0 + 1e-17]])
-    1
-    """
-    array = _unit_scaled(_float_matrix(A))
-    singular_values = np.linalg.svd(array, compute_uv=False)
-    return int(np.sum(singular_values > _tolerance(singular_values, array.shape, rtol)))
-
-
-def nullspace_svd(A: Any, rtol: float | None = None) -> np.ndarray:
-    """An orthonormal basis of the numerical null space of ``A`` (shape ``(m, n)``), by the SVD.
-
-    With ``A = U Σ Vᵀ`` (full SVD), the columns of ``V`` whose singular values
-    are (numerically) zero span the null space. A singular value counts as zero
-    when it is at most ``rtol · σ_max``; the default ``rtol = max(m, n) · ε``
-    is the rule of :func:`numpy.linalg.matrix_rank`. For a wide matrix
-    (``m < n``) the last ``n - m`` columns of ``V`` always belong to the null
-    space. Returns an array of shape ``(n, k)`` whose ``k`` columns are the
-    basis vectors (``k = 0`` for full column rank).
-
-    >>> N = nullspace_svd([[1.0, 0.0, 0.0, -1.0], [0.0, 1.0, 0.0, -2.0], [0.0, 0.0, 1.0, -3.0]])
-    >>> N.shape, bool(np.allclose(N[:, 0] / N[3, 0], [1, 2, 3, 1]))
-    ((4, 1), True)
-    """
-    array = _unit_scaled(_float_matrix(A))
-    _, singular_values, vt = np.linalg.svd(array, full_matrices=True)
-    rank = int(np.sum(singular_values > _tolerance(singular_values, array.shape, rtol)))
-    return vt[rank:].T.copy()
-
-
-def _sign_normalised(v: np.ndarray) -> np.ndarray:
-    """Unit vector with its largest-magnitude entry positive (a deterministic representative)."""
-    v = v / np.linalg.norm(v)
-    return v if v[np.argmax(np.abs(v))] > 0 else -v
-
-
-def _smallest_right_singular_vector(rows: Any, name: str, error: type[Exception], what: str, rtol: float | None):
-    array = _float_matrix(rows, name)
-    if array.shape[1] != 4 or array.shape[0] < 3:
-        raise DimensionError(f"{name} must have shape (n, 4) with n >= 3 {what}, got {array.shape}")
-    # The rank is decided after a change of units, exactly (powers of two): each row (a point or plane,
-    # defined up to scale) to largest entry of order one, then the homogeneous column against the other
-    # three. That keeps the null space (once the column scaling is undone), and the decision no longer
-    # depends on whether coordinates are in millimetres or kilometres.
-    rows_max = np.abs(array).max(axis=1, keepdims=True)
-    balanced = np.ldexp(array, -np.frexp(np.where(rows_max > 0, rows_max, 1.0))[1])
-    head, last = float(np.abs(balanced[:, :3]).max()), float(np.abs(balanced[:, 3]).max())
-    shift = int(np.frexp(head)[1] - np.frexp(last)[1]) if head > 0 and last > 0 else 0
-    balanced[:, 3] = np.ldexp(balanced[:, 3], shift)
-    _, singular_values, vt = np.linalg.svd(balanced, full_matrices=True)
-    rank = int(np.sum(singular_values > _tolerance(singular_values, balanced.shape, rtol)))
-    if rank < 3:
-        raise error(rank)
-    if array.shape[0] == 3:  # the exact null vector: the balanced matrix gives it to full relative accuracy
-        v = vt[-1].copy()
-        v[3] = np.ldexp(v[3], shift)  # back to the given units: x·π = x'·π' with x'_4 = 2^shift x_4
-    else:  # least squares: min ‖A π‖ for the rows as given (weights are part of the problem), scaled exactly
-        v = np.linalg.svd(_unit_scaled(array), full_matrices=True)[2][-1]
-    return _sign_normalised(np.ldexp(v, -int(np.frexp(np.abs(v).max())[1])))
-
-
-def plane_through_numeric(points: Any, rtol: float | None = None) -> np.ndarray:
-    """The plane through three (or, in the least-squares sense, more) points given as homogeneous rows.
-
-    ``points`` has shape ``(n, 4)`` with ``n >= 3``. The plane is the right
-    singular vector of the smallest singular value: the exact null vector for
-    three points, the least-squares plane (minimising ``‖A π‖`` with ``‖π‖ = 1``)
-    for more. It is returned as a unit 4-vector with its largest-magnitude entry
-    positive. Raises :class:`CollinearPointsError` when the numerical rank (see
-    :func:`numeric_rank`) is below 3.
-
-    >>> pi = plane_through_numeric([[1, 0, 0, 1], [0, 1, 0, 1], [0, 0, 1, 1]])
-    >>> bool(np.allclose(pi / pi[0], [1, 1, 1, -1]))
-    True
-    """
-
-    def error(rank: int) -> Exception:
-        return CollinearPointsError(
-            f"the matrix of the points has numerical rank {rank} < 3: they are collinear or coincide, so no "
-            f"unique plane passes through them; add a point off their line (or pass a smaller rtol)"
-        )
-
-    return _smallest_right_singular_vector(points, "points", error, "(one homogeneous point per row)", rtol)
-
-
-def point_on_planes_numeric(planes: Any, rtol: float | None = None) -> np.ndarray:
-    """The point on three (or, least squares, more) planes given as rows ``(a, b, c, d)``.
-
-    The dual of :func:`plane_through_numeric`: the right singular vector of the
-    smallest singular value, as a unit 4-vector with its largest-magnitude entry
-    positive; an ideal point has last entry (numerically) zero. Raises
-    :class:`DependentPlanesError` when the numerical rank is below 3 (the
-    planes share a line, or repeat).
-
-    >>> X = point_on_planes_numeric([[1, 0, 0, -1], [0, 1, 0, -2], [0, 0, 1, -3]])
-    >>> bool(np.allclose(X[:3] / X[3], [1, 2, 3]))
-    True
-    """
-
-    def error(rank: int) -> Exception:
-        return DependentPlanesError(
-            f"the matrix of the planes has numerical rank {rank} < 3: they share a line or repeat, so they do not "
-            f"meet in a single point; replace one plane by a plane not through that line (or pass a smaller rtol)"
-        )
-
-    return _smallest_right_singular_vector(planes, "planes", error, "(one plane per row)", rtol)
-
-
-class SVDSteps(NamedTuple):
-    """The factors of ``A = U Σ Vᵀ`` for a 2×2 matrix, applied as ``x ↦ Vᵀx ↦ Σ Vᵀx ↦ U Σ Vᵀx``."""
-
-    V: np.ndarray
-    """Right singular vectors (columns); the first step applies ``V.T``."""
-    Sigma: np.ndarray
-    """Diagonal 2×2 matrix of the singular values ``σ1 ≥ σ2 ≥ 0``."""
-    U: np.ndarray
-    """Left singular vectors (columns); the last step applies ``U``."""
-
-
-def svd_steps(A: Any) -> SVDSteps:
-    """The SVD of a real 2×2 matrix as rotate, stretch, rotate: ``A = U Σ Vᵀ``.
-
-    ``Vᵀ`` turns the right singular vectors onto the axes, ``Σ`` stretches the
-    axes by ``σ1 ≥ σ2 ≥ 0`` and ``U`` turns the axes onto the left singular
-    vectors. Signs are chosen so that ``V`` is always a rotation
-    (``det V = 1``) whose first column has its largest-magnitude entry
-    positive (so the result does not depend on the LAPACK build); ``U`` is
-    then a rotation too when ``det A ≥ 0`` and a reflection when ``det A < 0``
-    (no rotation–stretch–rotation can reverse orientation).
-
-    >>> V, S, U = svd_steps([[3.0, 0.0], [0.0, -2.0]])
-    >>> np.diag(S).tolist(), round(float(np.linalg.det(V)), 12)
-    ([3.0, 2.0], 1.0)
-    >>> bool(np.allclose(U @ S @ V.T, [[3, 0], [0, -2]]))
-    True
-    """
-    given = _float_matrix(A)
-    if given.shape != (2, 2):
-        raise DimensionError(f"svd_steps takes a 2×2 matrix, got shape {given.shape}")
-    # factor the matrix scaled by a power of two to unit size (exact), so that A v / σ stays a unit
-    # vector even for entries near the ends of the float64 range; Σ is scaled back at the end
-    largest = float(np.abs(given).max())
-    exponent = int(np.frexp(largest)[1]) if largest > 0 else 0
-    array = np.ldexp(given, -exponent)
-    _, s, vt = np.linalg.svd(array)
-    tol = _tolerance(s, (2, 2), None)
-    v1 = vt[0] if vt[0][np.argmax(np.abs(vt[0]))] > 0 else -vt[0]  # a deterministic sign
-    v = np.column_stack([v1, [-v1[1], v1[0]]])  # the second column makes V a rotation
-    u = np.empty((2, 2))
-    u[:, 0] = array @ v[:, 0] / s[0] if s[0] > tol else [1.0, 0.0]
-    # u2 is ±u1 turned by 90°; dividing A v2 by a small σ2 would lose orthogonality, so take only its sign
-    perpendicular = np.array([-u[1, 0], u[0, 0]])
-    flip = s[1] > tol and float(perpendicular @ (array @ v[:, 1])) < 0
-    u[:, 1] = -perpendicular if flip else perpendicular  # σ2 = 0: U a rotation too
-    return SVDSteps(V=v, Sigma=np.diag(np.ldexp(s, exponent)), U=u)
+def _is_ndarray(M: Any) -> bool:
+    # an ndarray exists only once NumPy is loaded: asking sys.modules keeps this module NumPy-free
+    np = sys.modules.get("numpy")
+    return np is not None and isinstance(M, np.ndarray)

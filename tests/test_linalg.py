@@ -2,6 +2,9 @@
 
 from __future__ import annotations
 
+import subprocess
+import sys
+
 import numpy as np
 import pytest
 from hypothesis import assume, given, settings
@@ -243,3 +246,25 @@ def test_svd_steps_recompose_the_matrix(entries):
     assert np.allclose(V.T @ V, np.eye(2)) and np.allclose(U.T @ U, np.eye(2))
     assert np.isclose(np.linalg.det(V), 1)
     assert S[0, 0] >= S[1, 1] >= 0
+
+
+def test_importing_linalg_loads_no_numpy_and_the_numeric_names_come_from_pgsym_numeric():
+    # exact cells must run where NumPy is absent: the module and its exact functions never load it
+    code = (
+        "import sys\n"
+        "import pgsym.linalg as la\n"
+        "assert la.nullspace_exact([[1, 0, 0, -1], [0, 1, 0, -2], [0, 0, 1, -3]]) == [(1, 2, 3, 1)]\n"
+        "assert la.solve_by_fixing_coordinate([[1, 0, 0, -1], [0, 1, 0, -2], [0, 0, 1, -3]]) == (1, 2, 3, 1)\n"
+        "print('numpy' in sys.modules)\n"
+    )
+    assert subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout == "False\n"
+    import pgsym.linalg as la
+    import pgsym.numeric as pn
+
+    for name in ("nullspace_svd", "numeric_rank", "plane_through_numeric", "point_on_planes_numeric", "svd_steps",
+                 "SVDSteps"):
+        assert getattr(la, name) is getattr(pn, name)
+    # an ndarray is still read exactly once NumPy is loaded (integer entries stay integers)
+    assert la.nullspace_exact(np.array([[1, 0, 0, -1], [0, 1, 0, -2], [0, 0, 1, -3]])) == [(1, 2, 3, 1)]
+    with pytest.raises(AttributeError, match="no attribute 'nullspace_numeric'"):
+        la.nullspace_numeric  # noqa: B018

@@ -184,16 +184,27 @@ def test_plane_through_and_point_on_planes_equal_the_exact_minors(data):
     from pgsym.space import Plane, Point3, plane_through, point_on_planes
 
     p, q, r = data
-    planes, points = pn.plane_through(p, q, r), pn.point_on_planes(p, q, r)
-    assert np.array_equal(planes, pn.triple_cross(p, q, r))
+    planes, plane_ok = pn.plane_through(p, q, r, degenerate="mask")
+    points, point_ok = pn.point_on_planes(p, q, r, degenerate="mask")
+    minors = pn.triple_cross(p, q, r)
+    # the policy: a row is masked exactly where every minor is zero, and is the minors elsewhere
+    assert np.array_equal(plane_ok, minors.any(axis=-1)) and np.array_equal(point_ok, plane_ok)
+    assert np.array_equal(planes[plane_ok], minors[plane_ok]) and np.isnan(planes[~plane_ok]).all()
     for i in range(len(p)):
         rows = [v[i].astype(int).tolist() for v in (p, q, r)]
         want = exact_or_zero(plane_through, tuple(Point3(*x) for x in rows), 4, (CollinearPointsError,))
-        assert np.array_equal(planes[i], want)
+        assert plane_ok[i] == want.any()  # masked exactly where the exact core raises
+        assert not plane_ok[i] or np.array_equal(planes[i], want)
         want = exact_or_zero(point_on_planes, tuple(Plane(*x) for x in rows), 4, (DependentPlanesError,))
-        assert np.array_equal(points[i], want)
+        assert point_ok[i] == want.any()
+        assert not point_ok[i] or np.array_equal(points[i], want)
     # the plane contains the three points: det[X; p; q; r] = 0 for X = p, q, r
-    assert pn.incident(p, planes, rtol=0).all() and pn.incident(r, planes, rtol=0).all()
+    assert pn.incident(p, minors, rtol=0).all() and pn.incident(r, minors, rtol=0).all()
+    if not plane_ok.all():  # the default raises the named errors instead
+        with pytest.raises(CollinearPointsError, match="collinear"):
+            pn.plane_through(p, q, r)
+        with pytest.raises(DependentPlanesError, match="one line"):
+            pn.point_on_planes(p, q, r)
 
 
 def test_worked_example_in_space():

@@ -203,3 +203,12 @@ def test_warp_matches_the_numpy_reference_and_checks_its_input():
         warp(image, np.eye(3), (0, 10))
     with pytest.raises(ImageError):
         warp(image.astype(float), np.eye(3), (10, 10))
+
+
+def test_transform_lines_has_one_meaning_the_image_of_the_lines_by_the_adjugate():
+    import pgsym.numeric as pn
+
+    assert transform_lines is pn.transform_lines
+    # H = diag(2, 1, 1) stretches x: adj(H) = diag(1·1, 2·1, 2·1) = diag(1, 2, 2), so the line x = 1, (1, 0, −1),
+    # goes to adj(H)ᵀ (1, 0, −1) = (1, 0, −2): the line x = 2, which is H⁻ᵀ l = (1/2, 0, −1) up to scale
+    assert transform_lines(np.diag([2.0, 1.0, 1.0]), [[1.0, 0.0, -1.0]]).tolist() == [[1.0, 0.0, -2.0]]

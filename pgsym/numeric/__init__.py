@@ -9,6 +9,11 @@ exact result on the same integer data. Only NumPy is imported: ``import pgsym.nu
 does not import SymPy, and neither does any kernel call (the conversions
 :func:`to_array` / :func:`from_array` load the exact core when they run).
 
+The linear algebra of small dense matrices lives here too: numerical rank, null spaces
+and least-squares planes by the SVD (:mod:`pgsym.numeric.nullspace`), the SVD of a 2×2
+matrix as rotate–stretch–rotate (:mod:`pgsym.numeric.svd`) and the float classifier of
+the transformation hierarchy (:mod:`pgsym.numeric.classify`).
+
 Kernels run block by block over the rows, so that their scratch buffers stay in the
 processor cache; pass ``out=`` to reuse an output array.
 
@@ -30,6 +35,26 @@ processor cache; pass ``out=`` to reuse an output array.
 5. Images are checked by :func:`pgsym.vision.images.check_image`, which raises
    :class:`~pgsym.vision.errors.ImageError` for NaN or inf pixels.
 
+**Degenerate input: one policy for the constructions.**
+
+6. A construction whose input does not determine its result — collinear points for
+   :func:`plane_through`, planes through one line for :func:`point_on_planes`, fewer than
+   three independent rows for :func:`plane_through_numeric` / :func:`point_on_planes_numeric`
+   — raises the named :class:`~pgsym.errors.DegenerateConfigurationError` subclass
+   (:class:`~pgsym.errors.CollinearPointsError`, :class:`~pgsym.errors.DependentPlanesError`).
+   It never returns a silent zero vector.
+7. The batch constructions take ``degenerate="mask"``: they then return ``(values, ok)`` with
+   the degenerate rows set to NaN and ``ok`` False there — the shape of ``ideal="mask"`` and
+   ``nonfinite="mask"`` (with both, ``ok`` is False for either cause). The batch kernels decide
+   degeneracy exactly (every minor is 0), as the exact core does; the SVD constructions decide
+   it by numerical rank (:data:`~pgsym.numeric.tolerances.RANK_EPS`).
+8. The joins and meets of lines (:func:`join`, :func:`meet`, :func:`plucker_join`,
+   :func:`plucker_meet`) return the zero vector for coincident input by default
+   (``degenerate="zero"``, tested by :func:`is_zero_vector`), as the bare formulas
+   :func:`cross` and :func:`triple_cross` always do; they accept ``degenerate="raise"``
+   (:class:`~pgsym.errors.CoincidentPointsError`, :class:`~pgsym.errors.CoincidentLinesError`,
+   :class:`~pgsym.errors.DependentPlanesError`) and ``"mask"`` as well.
+
 The check costs one BLAS dot product of each output block with itself while the block is
 in cache (NaN and inf propagate into a sum of squares); only when it is not finite is
 every entry tested.
@@ -44,6 +69,10 @@ pgsym.errors.NonFiniteError: join: 2 of the 2 results are NaN or infinite; the f
 (array([[nan, nan, nan],
        [-1.,  1.,  0.]]), array([False,  True]))
 
+>>> pn.plane_through([0.0, 0, 0, 1], [1.0, 1, 1, 1], [[2.0, 2, 2, 1], [0, 0, 1, 1]], degenerate="mask")
+(array([[nan, nan, nan, nan],
+       [ 1., -1.,  0.,  0.]]), array([False,  True]))
+
 >>> lines = pn.join(np.array([[0.0, 0, 1], [0, 1, 1]]), np.array([[1.0, 1, 1], [1, 1, 1]]))
 >>> pn.dehomogenize(pn.meet(lines, [1.0, 0, -2]))     # where y = x and y = 1 cross x = 2
 array([[2., 2.],
@@ -53,12 +82,15 @@ array([[2., 2.],
 from __future__ import annotations
 
 from ._arrays import CHUNK, OptionError
+from .classify import classify_matrix
 from .convert import from_array, to_array
 from .homogeneous import dehomogenize, homogenize, is_ideal
+from .nullspace import nullspace_svd, numeric_rank, plane_through_numeric, point_on_planes_numeric
 from .plane import cross, incident, is_zero_vector, join, meet
 from .plucker import klein_form, plucker_join, plucker_meet
 from .projective_line import bracket, cross_ratio, cross_ratio_homogeneous
 from .space import plane_through, point_on_planes, triple_cross
+from .svd import SVDSteps, svd_steps
 from .transform import (
     adjugate,
     transform_conics,
@@ -72,8 +104,10 @@ from .transform import (
 __all__ = [
     "CHUNK",
     "OptionError",
+    "SVDSteps",
     "adjugate",
     "bracket",
+    "classify_matrix",
     "cross",
     "cross_ratio",
     "cross_ratio_homogeneous",
@@ -86,10 +120,15 @@ __all__ = [
     "join",
     "klein_form",
     "meet",
+    "nullspace_svd",
+    "numeric_rank",
     "plane_through",
+    "plane_through_numeric",
     "plucker_join",
     "plucker_meet",
     "point_on_planes",
+    "point_on_planes_numeric",
+    "svd_steps",
     "to_array",
     "transform_conics",
     "transform_dual_conics",

@@ -25,13 +25,31 @@ import numpy as np
 
 from ..errors import DimensionError, NonFiniteError, NonNumericError, OptionError
 
-__all__ = ["CHUNK", "NONFINITE", "OptionError", "as_float_array", "block_finite", "nonfinite_result", "rowwise"]
+__all__ = [
+    "CHUNK",
+    "DEGENERATE",
+    "NONFINITE",
+    "ZERO_OR_DEGENERATE",
+    "OptionError",
+    "as_float_array",
+    "block_finite",
+    "construction",
+    "degenerate_result",
+    "nonfinite_result",
+    "rowwise",
+]
 
 CHUNK = 8192
 """Rows per block: a few blocks of 8192 float64 triples fit in a typical L2 cache."""
 
 NONFINITE = ("raise", "mask")
 """The values of every kernel's ``nonfinite=`` option: raise NonFiniteError, or return ``(values, finite)``."""
+
+DEGENERATE = ("raise", "mask")
+"""The values of a construction's ``degenerate=`` option: raise the named error, or return ``(values, ok)``."""
+
+ZERO_OR_DEGENERATE = ("zero", *DEGENERATE)
+"""The ``degenerate=`` values of the joins and meets, whose default ``"zero"`` returns the zero vector."""
 
 Kernel = Callable[[list[np.ndarray], np.ndarray, list[np.ndarray]], None]
 
@@ -239,3 +257,69 @@ def rowwise(
     if nonfinite == "mask":
         return result, finite
     return nonfinite_result(result, finite, nonfinite, function, arrays)
+
+
+def degenerate_result(
+    value: np.ndarray | tuple[np.ndarray, np.ndarray],
+    degenerate: str,
+    axis: int,
+    function: str,
+    error: type[Exception],
+    what: str,
+) -> np.ndarray | tuple[np.ndarray, np.ndarray]:
+    """Apply the degeneracy policy to a construction's ``value`` (an array, or ``(array, finite)``).
+
+    A result that is the zero vector (every component exactly 0) is no projective object: with
+    ``degenerate="raise"`` it raises ``error`` (naming how many rows and the first), with ``"mask"``
+    its row is set to NaN and ``(values, ok)`` is returned, ``ok`` False there and where ``finite``
+    was False. ``"zero"`` (accepted by the P² join and meet only) returns ``value`` unchanged.
+
+    >>> degenerate_result(np.array([[1.0, 2], [0, 0]]), "mask", -1, "f", ValueError, "are zero")
+    (array([[ 1.,  2.],
+           [nan, nan]]), array([ True, False]))
+    """
+    if degenerate == "zero":
+        return value
+    result, finite = value if isinstance(value, tuple) else (value, None)
+    components = np.moveaxis(result, axis, -1)
+    zero = ~components.any(axis=-1)  # a NaN row (masked as non-finite) is not zero
+    if degenerate == "raise":
+        if zero.any():
+            first = tuple(int(i) for i in np.argwhere(zero)[0]) if zero.ndim else ()
+            raise error(
+                f"{function}: {int(zero.sum())} of the {zero.size} inputs {what}, the first at index {first}; "
+                "pass degenerate='mask' to get NaN rows there and a mask of the good ones"
+            )
+        return value
+    if zero.any():
+        components[zero] = np.nan
+    ok = ~zero if finite is None else finite & ~zero
+    return result, np.asarray(ok)
+
+
+def construction(
+    kernel: Kernel,
+    function: str,
+    inputs: Sequence[tuple[Any, int, str]],
+    k_out: int,
+    out: np.ndarray | None,
+    axis: int,
+    n_scratch: int,
+    nonfinite: str,
+    degenerate: str,
+    error: type[Exception],
+    what: str,
+) -> np.ndarray | tuple[np.ndarray, np.ndarray]:
+    """:func:`rowwise`, then :func:`degenerate_result`: a construction under both policies of :mod:`pgsym.numeric`.
+
+    >>> def add(ins, o, ws):
+    ...     np.add(ins[0], ins[1], out=o)
+    >>> construction(add, "add", [([1.0, -1], 2, "a"), ([[1.0, 1], [-1, 1]], 2, "b")], 2, None, -1, 0, "raise",
+    ...              "mask", ValueError, "cancel")
+    (array([[ 2.,  0.],
+           [nan, nan]]), array([ True, False]))
+    """
+    if degenerate != "zero":  # the default of the joins costs no check
+        check_option(degenerate, ZERO_OR_DEGENERATE, "degenerate", function)
+    value = rowwise(kernel, function, inputs, k_out, out, axis, n_scratch, nonfinite)
+    return degenerate_result(value, degenerate, axis, function, error, what)

@@ -9,7 +9,10 @@ the point on two lines are both the cross product, computed with the same formul
 Arrays have shape ``(..., 3)`` (or ``(3, ...)`` with ``axis=0``) and broadcast. Nothing
 is normalised: the result is the raw cross product, exactly as in the exact core, so
 integer data gives the same numbers. Coincident inputs give the zero vector, which is
-no projective object; test for it with :func:`pgsym.numeric.is_zero_vector`.
+no projective object: :func:`join` and :func:`meet` return it by default
+(``degenerate="zero"``; test for it with :func:`pgsym.numeric.is_zero_vector`), raise
+:class:`~pgsym.errors.CoincidentPointsError` / :class:`~pgsym.errors.CoincidentLinesError`
+with ``degenerate="raise"``, or mask it with ``degenerate="mask"``.
 
 >>> import numpy as np
 >>> meet(np.array([[1.0, 0, -1], [1, -1, 0]]), np.array([0.0, 1, -2]))   # x = 1 and y = x, with y = 2
@@ -23,8 +26,8 @@ from typing import Any
 
 import numpy as np
 
-from ..errors import DimensionError
-from ._arrays import as_float_array, rowwise
+from ..errors import CoincidentLinesError, CoincidentPointsError, DimensionError
+from ._arrays import as_float_array, construction, rowwise
 from .conditioning import require_finite
 from .tolerances import INCIDENT_RTOL
 
@@ -62,28 +65,40 @@ def cross(
 
 
 def join(
-    p: Any, q: Any, *, out: np.ndarray | None = None, axis: int = -1, nonfinite: str = "raise"
+    p: Any, q: Any, *, out: np.ndarray | None = None, axis: int = -1, nonfinite: str = "raise", degenerate: str = "zero"
 ) -> Any:
     """The lines ``p × q`` through pairs of points of P² (the numeric :func:`pgsym.projective_plane.join`).
+
+    Coincident points give the zero vector (``degenerate="zero"``), raise
+    :class:`~pgsym.errors.CoincidentPointsError` (``"raise"``), or a NaN row and a mask (``"mask"``).
 
     >>> join([0.0, 0, 1], [[1.0, 1, 1], [1, 0, 0]])   # y = x, and the x-axis through an ideal point
     array([[-1.,  1.,  0.],
            [ 0.,  1.,  0.]])
+    >>> join([1.0, 2, 1], [[2.0, 4, 2], [0, 0, 1]], degenerate="mask")
+    (array([[nan, nan, nan],
+           [ 2., -1.,  0.]]), array([False,  True]))
     """
-    return rowwise(_cross_kernel, "join", [(p, 3, "p"), (q, 3, "q")], 3, out, axis, 1, nonfinite)
+    error, what = CoincidentPointsError, "are pairs of coincident points, which fix no line"
+    return construction(_cross_kernel, "join", [(p, 3, "p"), (q, 3, "q")], 3, out, axis, 1, nonfinite, degenerate,
+                        error, what)
 
 
 def meet(
-    l: Any, m: Any, *, out: np.ndarray | None = None, axis: int = -1, nonfinite: str = "raise"
+    l: Any, m: Any, *, out: np.ndarray | None = None, axis: int = -1, nonfinite: str = "raise", degenerate: str = "zero"
 ) -> Any:
     """The points ``l × m`` where pairs of lines of P² meet (the numeric :func:`pgsym.projective_plane.meet`).
 
-    Parallel lines meet in an ideal point (last coordinate 0):
+    Parallel lines meet in an ideal point (last coordinate 0); equal lines give the zero
+    vector, :class:`~pgsym.errors.CoincidentLinesError` or a masked row, as ``degenerate`` says
+    (see :func:`join`).
 
     >>> meet([1.0, -1, 0], [1.0, -1, 3])
     array([-3., -3.,  0.])
     """
-    return rowwise(_cross_kernel, "meet", [(l, 3, "l"), (m, 3, "m")], 3, out, axis, 1, nonfinite)
+    error, what = CoincidentLinesError, "are pairs of equal lines, which meet in no single point"
+    return construction(_cross_kernel, "meet", [(l, 3, "l"), (m, 3, "m")], 3, out, axis, 1, nonfinite, degenerate,
+                        error, what)
 
 
 def incident(x: Any, y: Any, *, rtol: float = INCIDENT_RTOL, axis: int = -1) -> np.ndarray:

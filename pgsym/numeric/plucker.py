@@ -16,8 +16,8 @@ from typing import Any
 
 import numpy as np
 
-from ..errors import DimensionError
-from ._arrays import as_float_array, nonfinite_result, rowwise
+from ..errors import CoincidentPointsError, DependentPlanesError, DimensionError
+from ._arrays import as_float_array, construction, nonfinite_result
 
 __all__ = ["klein_form", "plucker_join", "plucker_meet"]
 
@@ -39,27 +39,40 @@ def _reversed_wedge_kernel(ins: list[np.ndarray], o: np.ndarray, ws: list[np.nda
 
 
 def plucker_join(
-    a: Any, b: Any, *, out: np.ndarray | None = None, axis: int = -1, nonfinite: str = "raise"
+    a: Any, b: Any, *, out: np.ndarray | None = None, axis: int = -1, nonfinite: str = "raise", degenerate: str = "zero"
 ) -> Any:
     """Plücker coordinates ``(l12, l13, l14, l23, l42, l34)`` of the lines through pairs of points.
 
-    Equal to ``Line3.join(A, B).coordinates`` on the same data; coincident points give zeros.
+    Equal to ``Line3.join(A, B).coordinates`` on the same data. Coincident points give zeros
+    (``degenerate="zero"``), :class:`~pgsym.errors.CoincidentPointsError` (``"raise"``) or NaN
+    rows and a mask (``"mask"``), as :func:`pgsym.numeric.join` does.
 
     >>> plucker_join([[0.0, 0, 0, 1]], [[1.0, 2, 3, 0]])   # through the origin, direction (1, 2, 3)
     array([[ 0.,  0., -1.,  0.,  2., -3.]])
     """
-    return rowwise(_wedge_kernel, "plucker_join", [(a, 4, "a"), (b, 4, "b")], 6, out, axis, 1, nonfinite)
+    what = "are pairs of coincident points, which fix no line"
+    inputs = [(a, 4, "a"), (b, 4, "b")]
+    return construction(
+        _wedge_kernel, "plucker_join", inputs, 6, out, axis, 1, nonfinite, degenerate, CoincidentPointsError, what
+    )
 
 
 def plucker_meet(
-    p: Any, q: Any, *, out: np.ndarray | None = None, axis: int = -1, nonfinite: str = "raise"
+    p: Any, q: Any, *, out: np.ndarray | None = None, axis: int = -1, nonfinite: str = "raise", degenerate: str = "zero"
 ) -> Any:
     """Plücker coordinates of the lines where pairs of planes meet (``Line3.meet(P, Q).coordinates``).
+
+    Equal planes give zeros, :class:`~pgsym.errors.DependentPlanesError` or a mask, as ``degenerate`` says.
 
     >>> plucker_meet([0.0, 1, 0, 0], [0.0, 0, 1, 0])      # y = 0 and z = 0: the x-axis again
     array([0., 0., 1., 0., 0., 0.])
     """
-    return rowwise(_reversed_wedge_kernel, "plucker_meet", [(p, 4, "p"), (q, 4, "q")], 6, out, axis, 1, nonfinite)
+    what = "are pairs of equal planes, which meet in no single line"
+    inputs = [(p, 4, "p"), (q, 4, "q")]
+    return construction(
+        _reversed_wedge_kernel, "plucker_meet", inputs, 6, out, axis, 1, nonfinite, degenerate, DependentPlanesError,
+        what,
+    )
 
 
 def klein_form(lines: Any, *, axis: int = -1) -> np.ndarray:

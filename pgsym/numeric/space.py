@@ -8,7 +8,11 @@ The numeric twin of :mod:`pgsym.space`. Both constructions are the same formula,
 
 Each minor is expanded along ``u`` with the six 2×2 minors ``m_jk = v_j w_k − v_k w_j``:
 ``det(columns j<k<l) = u_j m_kl − u_k m_jl + u_l m_jk``. Collinear points (or three
-planes through one line) give the zero vector.
+planes through one line) make every minor zero: :func:`plane_through` then raises
+:class:`~pgsym.errors.CollinearPointsError` and :func:`point_on_planes`
+:class:`~pgsym.errors.DependentPlanesError`, or, with ``degenerate="mask"``, they return
+NaN rows and a mask (the policy of :mod:`pgsym.numeric`). :func:`triple_cross` is the bare
+formula, zero vectors included.
 
 >>> plane_through([1.0, 0, 0, 1], [0.0, 1, 0, 1], [0.0, 0, 1, 1])   # x + y + z = 1
 array([ 1.,  1.,  1., -1.])
@@ -20,7 +24,8 @@ from typing import Any
 
 import numpy as np
 
-from ._arrays import rowwise
+from ..errors import CollinearPointsError, DependentPlanesError
+from ._arrays import DEGENERATE, check_option, construction, rowwise
 
 __all__ = ["plane_through", "point_on_planes", "triple_cross"]
 
@@ -60,27 +65,45 @@ def triple_cross(
     return rowwise(_triple_cross_kernel, "triple_cross", inputs, 4, out, axis, 7, nonfinite)
 
 
-def plane_through(
-    p: Any, q: Any, r: Any, *, out: np.ndarray | None = None, axis: int = -1, nonfinite: str = "raise"
+def _minors(
+    function: str, inputs: list[tuple[Any, int, str]], out: Any, axis: int, nonfinite: str, degenerate: str,
+    error: type[Exception], what: str,
 ) -> Any:
-    """The planes through triples of points of P³ (zero where the points are collinear).
+    check_option(degenerate, DEGENERATE, "degenerate", function)  # no "zero": these raise by default
+    return construction(_triple_cross_kernel, function, inputs, 4, out, axis, 7, nonfinite, degenerate, error, what)
 
-    >>> from pgsym.numeric import is_zero_vector
-    >>> planes = plane_through([0.0, 0, 0, 1], [1.0, 0, 0, 1], [[0.0, 1, 0, 1], [2, 0, 0, 1]])
-    >>> planes[0], is_zero_vector(planes)                      # the plane z = 0; then collinear points
-    (array([0., 0., 1., 0.]), array([False,  True]))
+
+def plane_through(
+    p: Any, q: Any, r: Any, *, out: np.ndarray | None = None, axis: int = -1, nonfinite: str = "raise",
+    degenerate: str = "raise",
+) -> Any:
+    """The planes through triples of points of P³.
+
+    Collinear or coincident points (all minors exactly zero) raise
+    :class:`~pgsym.errors.CollinearPointsError`; with ``degenerate="mask"`` the result is
+    ``(planes, ok)`` with NaN rows where ``ok`` is False (also for rows masked by ``nonfinite="mask"``).
+
+    >>> plane_through([0.0, 0, 0, 1], [1.0, 0, 0, 1], [0.0, 1, 0, 1])        # the plane z = 0
+    array([0., 0., 1., 0.])
+    >>> plane_through([0.0, 0, 0, 1], [1.0, 0, 0, 1], [[0.0, 1, 0, 1], [2, 0, 0, 1]], degenerate="mask")
+    (array([[ 0.,  0.,  1.,  0.],
+           [nan, nan, nan, nan]]), array([ True, False]))
     """
+    what = "are collinear points (every 3×3 minor is zero), through which no single plane passes"
     inputs = [(p, 4, "p"), (q, 4, "q"), (r, 4, "r")]
-    return rowwise(_triple_cross_kernel, "plane_through", inputs, 4, out, axis, 7, nonfinite)
+    return _minors("plane_through", inputs, out, axis, nonfinite, degenerate, CollinearPointsError, what)
 
 
 def point_on_planes(
-    a: Any, b: Any, c: Any, *, out: np.ndarray | None = None, axis: int = -1, nonfinite: str = "raise"
+    a: Any, b: Any, c: Any, *, out: np.ndarray | None = None, axis: int = -1, nonfinite: str = "raise",
+    degenerate: str = "raise",
 ) -> Any:
-    """The points where triples of planes of P³ meet (zero where the planes share a line).
+    """The points where triples of planes of P³ meet: :class:`~pgsym.errors.DependentPlanesError` for planes
+    through one line (all minors exactly zero), or NaN rows and a mask as in :func:`plane_through`.
 
     >>> point_on_planes([1.0, 0, 0, -1], [0.0, 1, 0, -2], [0.0, 0, 1, -3])   # (1, 2, 3), up to scale
     array([-1., -2., -3., -1.])
     """
+    what = "are planes through one line (every 3×3 minor is zero), which meet in no single point"
     inputs = [(a, 4, "a"), (b, 4, "b"), (c, 4, "c")]
-    return rowwise(_triple_cross_kernel, "point_on_planes", inputs, 4, out, axis, 7, nonfinite)
+    return _minors("point_on_planes", inputs, out, axis, nonfinite, degenerate, DependentPlanesError, what)

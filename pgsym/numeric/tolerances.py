@@ -34,12 +34,12 @@ i.e. the inverse of its condition number. Why 1e-13 (≈ 450 ε): the singular v
 matrix whose entries carry rounding errors of size ε are exact to about ``n ε σ_max``, so
 a rank-deficient matrix computed in floats shows ``σ_min`` of a few ε times ``σ_max``;
 1e-13 stays well above that noise and still accepts every matrix whose inverse loses fewer
-than 13 of the 16 significant digits. Used by :func:`pgsym.hierarchy.classify`, the
+than 13 of the 16 significant digits. Used by :func:`pgsym.numeric.classify.classify_matrix`, the
 ``transform_*`` kernels (their ``rtol=`` default) and :func:`pgsym.vision.warp.check_homography`.
 """
 
 CLASS_RTOL = 1e-9
-"""The default ``tol`` of float classification (:func:`pgsym.hierarchy.classify`).
+"""The default ``tol`` of float classification (:func:`pgsym.numeric.classify.classify_matrix`).
 
 Measures: relative deviations from a class, each a ratio that neither a change of units
 (conjugation by ``diag(s, …, s, 1)``) nor the overall scale alters. With ``H = [[A, t], [vᵀ, w]]``
@@ -91,7 +91,7 @@ path would lose more than three digits relative to the SVD of ``A``.
 """
 
 RANK_EPS = 2.0**-52
-"""Numerical rank (:mod:`pgsym.linalg`): singular values ``≤ max(m, n) · RANK_EPS · σ_max`` count as zero.
+"""Numerical rank (:mod:`pgsym.numeric.nullspace`): singular values ``≤ max(m, n) · RANK_EPS · σ_max`` count as zero.
 
 Measures: the ratio ``σ / σ_max``, after the rows of homogeneous points or planes are scaled to
 unit size and the homogeneous column is balanced against the others (both by powers of two, a

@@ -35,15 +35,8 @@ from .plane import cross
 from .space import triple_cross
 from .tolerances import SINGULAR_RTOL
 
-__all__ = [
-    "adjugate",
-    "transform_conics",
-    "transform_dual_conics",
-    "transform_lines",
-    "transform_planes",
-    "transform_points",
-    "transform_quadrics",
-]
+__all__ = ["adjugate", "transform_conics", "transform_dual_conics", "transform_lines", "transform_planes",
+           "transform_points", "transform_quadrics"]
 
 
 def _square(H: Any, function: str, sizes: tuple[int, ...] = (2, 3, 4)) -> np.ndarray:
@@ -63,25 +56,32 @@ def adjugate(H: Any) -> np.ndarray:
            [0., 0., 6.]])
     """
     h = _square(H, "adjugate")
-    # the cofactors of a balanced matrix cannot overflow; undo the (exact, power-of-two) overall scale at the end
-    exponent = np.frexp(np.max(np.abs(h), axis=(-2, -1)))[1]
-    h = np.ldexp(h, -exponent[..., None, None])
     k = h.shape[-1]
-    cof = np.empty(h.shape)
+    # The cofactors of a matrix scaled to unit size cannot overflow; the scaling (a power of two per matrix,
+    # exact) changes no digit, so it is paid only when some matrix has entries far from 1 in size.
+    with np.errstate(over="ignore", under="ignore"):
+        size = np.einsum("...ij,...ij->...", h, h)
+    scaled = not np.all((size > 2.0**-300) & (size < 2.0**300))
+    if scaled:
+        exponent = np.frexp(np.max(np.abs(h), axis=(-2, -1)))[1]
+        h = np.ldexp(h, -exponent[..., None, None])
+    adj = np.empty(h.shape)
     if k == 2:
-        cof[..., 0, 0], cof[..., 0, 1] = h[..., 1, 1], -h[..., 1, 0]
-        cof[..., 1, 0], cof[..., 1, 1] = -h[..., 0, 1], h[..., 0, 0]
-    elif k == 3:  # cofactor row i = (row i+1) × (row i+2)
+        adj[..., 0, 0], adj[..., 0, 1] = h[..., 1, 1], -h[..., 0, 1]
+        adj[..., 1, 0], adj[..., 1, 1] = -h[..., 1, 0], h[..., 0, 0]
+    elif k == 3:  # row i of adj(H) = (column i+1) × (column i+2): the cofactors, already transposed
         for i in range(3):
-            cross(h[..., (i + 1) % 3, :], h[..., (i + 2) % 3, :], out=cof[..., i, :])
-    else:  # cofactor row i = (−1)^i triple_cross(the other rows, in order)
+            cross(h[..., :, (i + 1) % 3], h[..., :, (i + 2) % 3], out=adj[..., i, :])
+    else:  # cofactor row i = (−1)^i triple_cross(the other rows, in order); adj(H) is their transpose
+        cof = np.swapaxes(adj, -1, -2)
         for i in range(4):
             others = [r for r in range(4) if r != i]
             triple_cross(h[..., others[0], :], h[..., others[1], :], h[..., others[2], :], out=cof[..., i, :])
             if i % 2:
                 np.negative(cof[..., i, :], out=cof[..., i, :])
-    with np.errstate(over="ignore"):
-        adj = np.ldexp(np.swapaxes(cof, -1, -2), ((k - 1) * exponent)[..., None, None])
+    if scaled:
+        with np.errstate(over="ignore"):
+            adj = np.ldexp(adj, ((k - 1) * exponent)[..., None, None])
     return _finite_result(adj, "adjugate", "the adjugate")
 
 

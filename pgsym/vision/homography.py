@@ -40,6 +40,7 @@ from ..numeric.conditioning import require_finite
 from ..numeric.homogeneous import dehomogenize
 from ..numeric.plane import cross
 from ..numeric.tolerances import COLLINEAR_RTOL, DLT_EIGEN_GAP_RTOL, DLT_RTOL, DLT_SNAP_RTOL, SINGULAR_RTOL
+from ..numeric.transform import adjugate
 
 if TYPE_CHECKING:  # the exact four-point path loads SymPy only when it is used
     import sympy
@@ -266,23 +267,35 @@ def dlt_homography(src: Any, dst: Any) -> np.ndarray:
         Hn = np.linalg.svd(A, full_matrices=2 * n < 9)[2][-1].reshape(3, 3)
     else:
         Hn = V[:, 0].reshape(3, 3)
-    # H = T'⁻¹ Ĥ T, T = [[s, 0, -s cx], [0, s, -s cy], [0, 0, 1]], T'⁻¹ = [[1/s', 0, cu], [0, 1/s', cv], [0, 0, 1]]
-    # (not the integer-looking multiple s' T'⁻¹, whose corner s' overflows for data near 1e-200)
+    # H = T'⁻¹ Ĥ T (see _denormalized)
     # Entries of Ĥ below its rounding error are noise; zero them, which changes Ĥ by less than its own
     # error, so that denormalising cannot blow noise up (v̂ = 1e-17 becomes 1e183 for data near 1e-200).
     Hn = np.where(np.abs(Hn) <= DLT_SNAP_RTOL * np.abs(Hn).max(), 0.0, Hn)
     s_n = np.linalg.svd(Hn, compute_uv=False)  # Ĥ is in the normalised frames: balanced already
     if s_n[-1] <= SINGULAR_RTOL * s_n[0]:
         raise DegenerateConfigurationError("the estimated homography is singular; the correspondences are degenerate")
-    T = np.array([[s, 0.0, -s * cx], [0.0, s, -s * cy], [0.0, 0.0, 1.0]])
-    Tp_inv = np.array([[1.0 / sd, 0.0, cu], [0.0, 1.0 / sd, cv], [0.0, 0.0, 1.0]])
+    return _denormalized(Hn, np.float64(s), np.array([cx, cy]), np.float64(sd), np.array([cu, cv]), "dlt_homography")
+
+
+def _denormalized(
+    Hn: np.ndarray, sp: np.ndarray, cp: np.ndarray, sq: np.ndarray, cq: np.ndarray, function: str
+) -> np.ndarray:
+    """``H = Tq⁻¹ Ĥ Tp`` for one ``Ĥ`` (3, 3) or a stack (N, 3, 3), at unit norm; entries past float64 raise.
+
+    ``Tp = [[sp I, −sp cp], [0, 1]]`` normalised the sources (scales ``sp``: a scalar or (N,), centroids
+    ``cp``: (2,) or (N, 2)), ``Tq`` the destinations; ``Tq⁻¹ = [[I / sq, cq], [0, 1]]``, not the
+    integer-looking multiple ``sq Tq⁻¹``, whose corner ``sq`` overflows for data near 1e-200.
+    """
+    Tp = np.zeros(Hn.shape)
+    Tp[..., 0, 0] = Tp[..., 1, 1] = sp
+    Tp[..., :2, 2] = -sp[..., None] * cp
+    Tp[..., 2, 2] = 1.0
+    Tq_inv = np.zeros(Hn.shape)
+    Tq_inv[..., 0, 0] = Tq_inv[..., 1, 1] = 1.0 / sq
+    Tq_inv[..., :2, 2] = cq
+    Tq_inv[..., 2, 2] = 1.0
     with np.errstate(over="ignore", under="ignore", invalid="ignore"):
-        H = Tp_inv @ Hn @ T
-    return _denormalized(H, "dlt_homography")
-
-
-def _denormalized(H: np.ndarray, function: str) -> np.ndarray:
-    """Homographies taken back from the normalised frames, at unit norm; entries past float64 raise."""
+        H = Tq_inv @ Hn @ Tp
     if not np.isfinite(H).all():
         raise NonFiniteError(
             f"{function}: the homography between these point sets has entries beyond the float64 range "
@@ -341,24 +354,12 @@ def exact_homography(src: Sequence[Any], dst: Sequence[Any]) -> sympy.ImmutableM
 
 
 def _canonical_matrix(H: sympy.Matrix) -> sympy.ImmutableMatrix:
+    """``H`` in the core's canonical form for homogeneous coordinates (:func:`pgsym.exact.canonical_coords`)."""
     import sympy
 
-    from ..homogeneous import is_zero
+    from ..exact import canonical_coords
 
-    entries = list(H)
-    if all(e.is_Rational for e in entries):
-        den = sympy.ilcm(*[sympy.Rational(e).q for e in entries])
-        ints = [int(e * den) for e in entries]
-        g = 0
-        for v in ints:
-            g = sympy.igcd(g, v)
-        first = next(v for v in ints if v != 0)
-        sign = 1 if first > 0 else -1
-        return sympy.ImmutableMatrix(3, 3, [sympy.Integer(sign * v // g) for v in ints])
-    first = next(e for e in entries if not is_zero(e))
-    return sympy.ImmutableMatrix(H.applyfunc(lambda e: sympy.cancel(e / first)))
-
-
+    return sympy.ImmutableMatrix(3, 3, list(canonical_coords(list(H))))
 
 
 def _frames(p: np.ndarray) -> np.ndarray:
@@ -372,12 +373,6 @@ def _frames(p: np.ndarray) -> np.ndarray:
     l2 = np.einsum("ni,ni->n", p1, cross(p4, p3))
     l3 = np.einsum("ni,ni->n", p1, cross(p2, p4))
     return np.stack([p1 * l1[:, None], p2 * l2[:, None], p3 * l3[:, None]], axis=2)
-
-
-def _adjugate3(M: np.ndarray) -> np.ndarray:
-    """Adjugates of a stack of 3×3 matrices: rows of adj(M) are cross products of columns of M."""
-    c0, c1, c2 = M[..., :, 0], M[..., :, 1], M[..., :, 2]
-    return np.stack([cross(c1, c2), cross(c2, c0), cross(c0, c1)], axis=-2)
 
 
 def _normalize_batch(p: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -435,17 +430,6 @@ def homographies_from_four(src: Any, dst: Any) -> np.ndarray:
                 f"{int(bad.sum())} of the {n} problems have three collinear {label} points (first: problem {i}); "
                 "four correspondences determine a homography only when no three points lie on one line"
             )
-    Hn = B @ _adjugate3(A)
+    Hn = B @ adjugate(A)
     Hn = np.where(np.abs(Hn) <= DLT_SNAP_RTOL * np.abs(Hn).max(axis=(1, 2), keepdims=True), 0.0, Hn)  # as in the DLT
-    # undo the normalisations: H = Tq^-1 Hn Tp, with Tp = [[s I, -s c], [0, 1]]
-    Tp = np.zeros((n, 3, 3))
-    Tp[:, 0, 0] = Tp[:, 1, 1] = sp_
-    Tp[:, :2, 2] = -sp_[:, None] * cp
-    Tp[:, 2, 2] = 1.0
-    Tq_inv = np.zeros((n, 3, 3))
-    Tq_inv[:, 0, 0] = Tq_inv[:, 1, 1] = 1.0 / sq
-    Tq_inv[:, :2, 2] = cq
-    Tq_inv[:, 2, 2] = 1.0
-    with np.errstate(over="ignore", under="ignore", invalid="ignore"):
-        H = Tq_inv @ Hn @ Tp
-    return _denormalized(H, "homographies_from_four")
+    return _denormalized(Hn, sp_, cp, sq, cq, "homographies_from_four")

@@ -18,7 +18,10 @@ plane) at three levels of knowledge about the world (Hartley & Zisserman, §2.7)
   the upgrade is ``[[K, 0], [0ᵀ, 1]]⁻¹``. The result is the world up to a similarity.
 
 Lines are homogeneous 3-vectors ``(a, b, c)`` for ``a x + b y + c = 0`` in pixel
-coordinates; :func:`line_through` builds them from two points.
+coordinates; :func:`line_through` builds them from two points. Joins, meets and the
+image of lines under a homography (:func:`transform_lines`, which is
+:func:`pgsym.numeric.transform_lines`: ``l' ∝ H⁻ᵀ l`` by the adjugate) are the kernels of
+:mod:`pgsym.numeric`.
 
 >>> import numpy as np
 >>> H = rectangle_homography([[10, 10], [50, 12], [48, 40], [12, 38]], (101, 51))
@@ -38,9 +41,10 @@ from ..errors import (
     CoincidentPointsError,
     DegenerateConfigurationError,
     DimensionError,
-    SingularTransformationError,
 )
-from ..numeric.conditioning import require_finite, singular
+from ..numeric.conditioning import require_finite
+from ..numeric.plane import join, meet
+from ..numeric.transform import transform_lines
 from .homography import apply_homography, dlt_homography
 
 __all__ = [
@@ -64,9 +68,9 @@ def line_through(p: Sequence[float], q: Sequence[float]) -> np.ndarray:
     """
     a = require_finite(np.array([p[0], p[1], 1.0], dtype=np.float64), "p", "line_through")
     b = require_finite(np.array([q[0], q[1], 1.0], dtype=np.float64), "q", "line_through")
-    with np.errstate(over="ignore", invalid="ignore"):
-        l = require_finite(np.cross(a, b), "the line (its coordinates overflow)", "line_through")
-        n = float(np.hypot(l[0], l[1]))
+    l = join(a, b)
+    # a − b is exactly zero only for equal points, so a zero normal (a, b) means p = q
+    n = float(np.hypot(l[0], l[1]))
     if n == 0:
         raise CoincidentPointsError(f"the points {tuple(p)} and {tuple(q)} coincide; they do not fix a line")
     return l / n
@@ -84,7 +88,7 @@ def _line(value: Any) -> np.ndarray:
 
 
 def _meet(l: np.ndarray, m: np.ndarray) -> np.ndarray:
-    v = np.cross(l, m)
+    v = meet(l, m)
     if np.linalg.norm(v) <= 1e-12 * np.linalg.norm(l) * np.linalg.norm(m):
         raise CoincidentLinesError(f"the lines {l.tolist()} and {m.tolist()} coincide; they have no single meet")
     return v
@@ -105,7 +109,7 @@ def vanishing_line(pair1: Sequence[Any], pair2: Sequence[Any]) -> np.ndarray:
     v2 = _meet(l2, m2)
     v1 = v1 / np.linalg.norm(v1)
     v2 = v2 / np.linalg.norm(v2)
-    l = np.cross(v1, v2)
+    l = join(v1, v2)
     n = np.linalg.norm(l)
     if n <= 1e-12:
         raise DegenerateConfigurationError(
@@ -144,23 +148,6 @@ def affine_rectification(line_at_infinity: Any, reference: Sequence[float] = (0.
     H = np.eye(3)
     H[2] = l
     return H
-
-
-def transform_lines(H: Any, lines: Any) -> np.ndarray:
-    """Map lines (rows of an ``(n, 3)`` array) by the point homography ``H``: ``l' = H⁻ᵀ l``.
-
-    >>> transform_lines(np.diag([2.0, 1.0, 1.0]), [[1.0, 0.0, -1.0]]).tolist()   # x = 1 becomes x = 2
-    [[0.5, 0.0, -1.0]]
-    """
-    M = np.asarray(H, dtype=np.float64)
-    if M.shape != (3, 3):
-        raise DimensionError(f"transform_lines: H must be a 3×3 matrix, got shape {M.shape}")
-    L = require_finite(np.asarray(lines, dtype=np.float64).reshape(-1, 3), "lines", "transform_lines")
-    if singular(require_finite(M, "H", "transform_lines")):
-        raise SingularTransformationError("transform_lines: H is singular, so it has no action on lines")
-    with np.errstate(over="ignore", invalid="ignore"):
-        image = np.linalg.solve(M.T, L.T).T
-    return require_finite(image, "the mapped lines (they overflow)", "transform_lines")
 
 
 def metric_upgrade(orthogonal_pairs: Sequence[Any]) -> np.ndarray:

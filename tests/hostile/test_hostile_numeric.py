@@ -161,6 +161,7 @@ H4 = np.array([[2.0, 1, 0, 0], [0, 1, 3, 0], [1, 1, 4, 0], [0, 0, 1, 1]])
 # name → (function, the valid arguments, keyword arguments): each array argument is spoiled in turn.
 NUMERIC = {
     "adjugate": (pn.adjugate, [H3], {}),
+    "classify_matrix": (pn.classify_matrix, [H3], {}),
     "bracket": (pn.bracket, [np.array([[1.0, 2], [3, 1]]), np.array([[2.0, 1], [1, 1]])], {}),
     "cross": (pn.cross, [P3, L3], {}),
     "cross_ratio": (pn.cross_ratio, [np.array([float(x), 1]) for x in (0, 1, 2, 3)], {}),
@@ -178,6 +179,11 @@ NUMERIC = {
     "join": (pn.join, [P3, P3[::-1].copy()], {}),
     "klein_form": (pn.klein_form, [np.array([[0.0, 0, -1, 0, 0, 0], [1, 2, 3, 0, 0, 0]])], {}),
     "meet": (pn.meet, [L3, L3[::-1].copy()], {}),
+    "nullspace_svd": (pn.nullspace_svd, [P4], {}),
+    "numeric_rank": (pn.numeric_rank, [P4], {}),
+    "plane_through_numeric": (pn.plane_through_numeric, [np.vstack([P4, [0.0, 0, 1, 1]])], {}),
+    "point_on_planes_numeric": (pn.point_on_planes_numeric, [np.vstack([P4, [0.0, 0, 1, 1]])], {}),
+    "svd_steps": (pn.svd_steps, [H3[:2, :2]], {}),
     "plane_through": (pn.plane_through, [P4, P4[::-1].copy(), np.array([0.0, 0, 1, 1])], {}),
     "plucker_join": (pn.plucker_join, [P4, P4[::-1].copy()], {}),
     "plucker_meet": (pn.plucker_meet, [P4, P4[::-1].copy()], {}),
@@ -190,7 +196,8 @@ NUMERIC = {
     "transform_quadrics": (pn.transform_quadrics, [H4, np.diag([1.0, 1, 1, -1])], {}),
     "triple_cross": (pn.triple_cross, [P4, P4[::-1].copy(), np.array([0.0, 0, 1, 1])], {}),
 }
-NOT_KERNELS = {"CHUNK", "OptionError", "to_array"}  # a constant, an error class; to_array takes exact objects
+# a constant, an error class, a result class; to_array takes exact objects
+NOT_KERNELS = {"CHUNK", "OptionError", "SVDSteps", "to_array"}
 
 SQUARE = np.array([[0.0, 0], [1, 0], [1, 1], [0, 1]])
 QUAD = np.array([[3.0, -1], [4, -0.9], [4.2, 1.1], [3.2, 1]])  # the image of SQUARE under HB below
