@@ -77,7 +77,7 @@ _LAZY: dict[str, str] = {
     "line_at_infinity": "projective_plane",
     "meet": "projective_plane",
     "nullspace_exact": "linalg",
-    "nullspace_svd": "linalg",
+    "nullspace_svd": "numeric.nullspace",
     "plane_at_infinity": "space",
     "plane_through": "space",
     "point_on_planes": "space",
