@@ -17,7 +17,7 @@ from __future__ import annotations
 import numbers
 from collections.abc import Iterator
 from fractions import Fraction  # noqa: F401 (doctests)
-from typing import Any, TypeVar
+from typing import Any, ClassVar, TypeVar
 
 import sympy
 from sympy import Expr, Matrix
@@ -25,6 +25,7 @@ from sympy import Expr, Matrix
 from .errors import DimensionError, ObjectTypeError, UndecidableError, ZeroVectorError
 from .exact import Scalar, all_zero, canonical_coords, format_entry, is_zero, latex, to_exact
 from .kinds import Kind
+from .matrices import proportional
 
 __all__ = ["HomogeneousVector", "is_zero", "to_exact"]
 
@@ -54,6 +55,10 @@ class HomogeneousVector(Kind):
 
     size: int = 3
     _kind: str = "vector"
+    # the n of the space Pⁿ the object lives in (None: not acted on by transformations), and whether it
+    # transforms like a point (x' = H x) or covariantly like a line or plane (l' ∝ H⁻ᵀ l)
+    ambient_dim: ClassVar[int | None] = None
+    _covariant: ClassVar[bool] = False
 
     __slots__ = ("_coords",)
 
@@ -114,11 +119,8 @@ class HomogeneousVector(Kind):
     # -- projective equality ----------------------------------------------------
     def is_proportional(self, other: HomogeneousVector) -> bool:
         """True when the two vectors differ by a nonzero factor (all 2×2 minors vanish)."""
-        a, b = self._coords, other._coords
-        if len(a) != len(b):
-            return False
         try:
-            return all(is_zero(a[i] * b[j] - a[j] * b[i]) for i in range(len(a)) for j in range(i + 1, len(a)))
+            return proportional(self._coords, other._coords)
         except UndecidableError as err:
             raise UndecidableError(f"cannot decide whether {self!r} and {other!r} are equal: {err}") from err
 
@@ -148,6 +150,11 @@ class HomogeneousVector(Kind):
         Line(3, -2, 0)
         """
         return type(self)._from_exact(canonical_coords(self._coords))
+
+    # -- action of a transformation ----------------------------------------------------------------
+    def _transformed_by(self: _V, H: Any) -> _V:
+        """The image under the transformation ``H`` (checked by ``H.apply``): ``H x``, or ``adj(H)ᵀ l`` if covariant."""
+        return type(self)._from_exact(H.map_vector(self._coords, self._covariant))
 
     # -- rendering ----------------------------------------------------------------
     def __repr__(self) -> str:

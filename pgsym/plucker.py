@@ -135,6 +135,7 @@ class Line3(HomogeneousVector, kind="line3"):
 
     size = 6
     _kind = "line of P³ (six Plücker coordinates l12, l13, l14, l23, l42, l34)"
+    ambient_dim = 3
     __slots__ = ()
 
     @classmethod
@@ -160,6 +161,10 @@ class Line3(HomogeneousVector, kind="line3"):
         obj._coords = coords
         return obj
 
+
+    def _transformed_by(self, H: Any) -> Line3:
+        """The image line: the Plücker matrix maps like a dual conic, ``L' = H L Hᵀ`` (``L = A Bᵀ − B Aᵀ``)."""
+        return type(self).from_matrix(H.map_form(self.matrix))
 
     # -- constructions ------------------------------------------------------------------------
     @classmethod

@@ -74,6 +74,7 @@ class Point1(HomogeneousVector, kind="point1"):
 
     size = 2
     _kind = "point of P¹"
+    ambient_dim = 1
     __slots__ = ()
 
     @classmethod

@@ -77,6 +77,7 @@ class Point(HomogeneousVector, kind="point"):
 
     size = 3
     _kind = "point of P²"
+    ambient_dim = 2
     __slots__ = ()
 
     @classmethod
@@ -140,6 +141,8 @@ class Line(HomogeneousVector, kind="line"):
 
     size = 3
     _kind = "line of P²"
+    ambient_dim = 2
+    _covariant = True  # l' ∝ H⁻ᵀ l keeps incidence lᵀx = 0
     __slots__ = ()
 
     @property

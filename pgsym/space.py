@@ -88,6 +88,7 @@ class Point3(HomogeneousVector, kind="point3"):
 
     size = 4
     _kind = "point of P³"
+    ambient_dim = 3
     __slots__ = ()
 
     @classmethod
@@ -159,6 +160,8 @@ class Plane(HomogeneousVector, kind="plane"):
 
     size = 4
     _kind = "plane of P³"
+    ambient_dim = 3
+    _covariant = True  # π' ∝ H⁻ᵀ π keeps incidence πᵀX = 0
     __slots__ = ()
 
     @property

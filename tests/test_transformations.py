@@ -97,7 +97,9 @@ def test_symbolic_transformation_maps_general_point():
     ("build", "error"),
     [
         (lambda: Transformation([[1, 2, 3], [2, 4, 6], [0, 0, 1]]), SingularTransformationError),
-        (lambda: Transformation([[1, 0], [0, 1]]), DimensionError),
+        (lambda: Transformation(sympy.eye(5)), DimensionError),  # 2×2 (P¹) to 4×4 (P³) only
+        (lambda: Transformation([[1]]), DimensionError),
+        (lambda: Transformation(sympy.eye(2))(Point(1, 2)), DimensionError),
         (lambda: Transformation([[1, 0, 0], [0, 1, 0]]), DimensionError),
         (lambda: Transformation("not a matrix"), DimensionError),
         (lambda: Transformation.identity(2)(3), ObjectTypeError),
