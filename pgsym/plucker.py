@@ -67,6 +67,7 @@ from .errors import (
 )
 from .exact import all_zero, latex
 from .homogeneous import HomogeneousVector, Scalar, is_zero, require, to_exact
+from .matrices import exact_matrix
 from .projective_line import Point1, cross_ratio
 from .space import Plane, Point3
 
@@ -498,13 +499,7 @@ def cross_ratio_planes(p1: Plane, p2: Plane, p3: Plane, p4: Plane) -> Expr:
 
 
 def _square4(matrix: Any, what: str) -> ImmutableMatrix:
-    try:
-        m = sympy.Matrix(matrix)
-    except (TypeError, ValueError, sympy.SympifyError) as err:
-        raise DimensionError(f"a {what} is a 4×4 matrix, got {matrix!r}") from err
-    if m.shape != (4, 4):
-        raise DimensionError(f"a {what} is a 4×4 matrix, got shape {m.shape}")
-    m = m.applyfunc(to_exact)
+    m = exact_matrix(matrix, shape=(4, 4), what=f"a {what}")
     if not all(is_zero(m[i, j] + m[j, i]) for i in range(4) for j in range(i, 4)):
         raise NotSkewSymmetricError(
             f"a {what} is skew-symmetric (its transpose is its negative), and this one is not:\n{m}\n"
@@ -512,7 +507,7 @@ def _square4(matrix: Any, what: str) -> ImmutableMatrix:
         )
     if all_zero(m):
         raise ZeroVectorError(f"the zero matrix is no {what}: a line needs a nonzero matrix of rank 2")
-    return ImmutableMatrix(m)
+    return m
 
 
 def _coords_of(m: ImmutableMatrix) -> tuple[Expr, ...]:

@@ -21,8 +21,9 @@ from __future__ import annotations
 from collections.abc import Sequence
 
 import sympy
-from sympy import Expr, Integer, Matrix
+from sympy import Expr, Integer
 
+from . import ring
 from .errors import (
     CoincidentLinesError,
     CoincidentPointsError,
@@ -57,7 +58,7 @@ def cross(u: Sequence[Expr], v: Sequence[Expr]) -> tuple[Expr, Expr, Expr]:
     """
     u1, u2, u3 = (sympy.sympify(c) for c in u)
     v1, v2, v3 = (sympy.sympify(c) for c in v)
-    return tuple(sympy.expand(e) for e in (u2 * v3 - u3 * v2, u3 * v1 - u1 * v3, u1 * v2 - u2 * v1))  # type: ignore[return-value]
+    return tuple(sympy.expand(e) for e in ring.cross((u1, u2, u3), (v1, v2, v3)))  # type: ignore[return-value]
 
 
 class Point(HomogeneousVector, kind="point"):
@@ -235,7 +236,7 @@ def incident(point: Point, line: Line) -> bool:
 
 
 def _det3(rows: Sequence[HomogeneousVector]) -> Expr:
-    return sympy.expand(Matrix([list(r.coords) for r in rows]).det(method="bareiss"))
+    return sympy.expand(ring.det([r.coords for r in rows]))
 
 
 def collinear(p: Point, q: Point, r: Point) -> bool:

@@ -22,8 +22,9 @@ from __future__ import annotations
 from collections.abc import Sequence
 
 import sympy
-from sympy import Expr, Integer, Matrix
+from sympy import Expr, Integer
 
+from . import ring
 from .errors import (
     CollinearPointsError,
     DependentPlanesError,
@@ -63,11 +64,7 @@ def triple_cross(u: Sequence[Expr], v: Sequence[Expr], w: Sequence[Expr]) -> tup
     for r in rows:
         if len(r) != 4:
             raise DimensionError(f"triple_cross takes three 4-vectors, got one of length {len(r)}: {tuple(r)}")
-    result = []
-    for i in range(4):
-        minor = Matrix([[r[j] for j in range(4) if j != i] for r in rows]).det(method="bareiss")
-        result.append(sympy.expand((-1) ** i * minor))
-    return tuple(result)  # type: ignore[return-value]
+    return tuple(sympy.expand(e) for e in ring.plane_through(*rows))  # type: ignore[return-value]
 
 
 class Point3(HomogeneousVector, kind="point3"):
@@ -296,7 +293,7 @@ def coplanar(p: Point3, q: Point3, r: Point3, s: Point3) -> bool:
     """
     for x in (p, q, r, s):
         require(x, Point3, "coplanar", "")
-    det = Matrix([list(x.coords) for x in (p, q, r, s)]).det(method="bareiss")
+    det = ring.det([x.coords for x in (p, q, r, s)])
     return is_zero(sympy.expand(det))
 
 
