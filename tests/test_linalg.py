@@ -243,3 +243,25 @@ def test_svd_steps_recompose_the_matrix(entries):
     assert np.allclose(V.T @ V, np.eye(2)) and np.allclose(U.T @ U, np.eye(2))
     assert np.isclose(np.linalg.det(V), 1)
     assert S[0, 0] >= S[1, 1] >= 0
+
+
+# -- the ring kit's determinant (skips zero entries) agrees with SymPy's ----------------------------------
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.integers(1, 5).flatmap(lambda n: st.lists(st.lists(st.integers(-2, 2), min_size=n, max_size=n),
+                                                     min_size=n, max_size=n)))
+def test_ring_det_matches_sympy(rows):
+    from fractions import Fraction
+
+    from pgsym import ring
+
+    assert ring.det(rows) == Matrix(rows).det()
+    assert ring.det([[Fraction(e) for e in r] for r in rows]) == Matrix(rows).det()
+
+
+def test_nullspace_keeps_the_direction_of_a_basis_vector():
+    # x + 2y = 0 in 2 unknowns: SymPy's basis vector is (-2, 1); a positive factor keeps it, the
+    # canonical form (first entry positive) would have flipped it to (2, -1)
+    assert nullspace_exact([[1, 2]]) == [(-2, 1)]
+    assert nullspace_exact([[Rational(1, 2), 1]]) == [(-2, 1)]
