@@ -172,12 +172,8 @@ class Conic(SymmetricForm, kind="conic"):
         Line(2, 0, -1)
         """
         require(point, Point, "Conic.polar")
-        coords = self._image(point.coords)
-        if all_zero(coords):
-            raise DegenerateConicError(
-                f"{point!r} is a singular point of the degenerate conic {self!r} (C x = 0), so it has no polar line"
-            )
-        return Line._from_exact(coords)
+        return Line._from_nonzero(self._image(point.coords), DegenerateConicError, lambda: (
+            f"{point!r} is a singular point of the degenerate conic {self!r} (C x = 0), so it has no polar line"))
 
     def tangent_at(self, point: Point) -> Line:
         """The tangent line ``l = C x`` at a point x of the conic.

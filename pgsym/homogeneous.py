@@ -15,19 +15,19 @@ Point(1, 2, 3)
 from __future__ import annotations
 
 import numbers
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from fractions import Fraction  # noqa: F401 (doctests)
 from typing import Any, ClassVar, TypeVar
 
 import sympy
 from sympy import Expr, Matrix
 
-from .errors import DimensionError, ObjectTypeError, UndecidableError, ZeroVectorError
+from .errors import DimensionError, IdealPointError, ObjectTypeError, UndecidableError, ZeroVectorError
 from .exact import Scalar, all_zero, canonical_coords, format_entry, is_zero, latex, to_exact
 from .kinds import Kind
 from .matrices import proportional
 
-__all__ = ["HomogeneousVector", "is_zero", "to_exact"]
+__all__ = ["HomogeneousPoint", "HomogeneousVector", "is_zero", "to_exact"]
 
 _format_entry = format_entry  # the name the other modules import
 
@@ -86,6 +86,18 @@ class HomogeneousVector(Kind):
         obj = cls.__new__(cls)
         obj._coords = cls._check(coords)
         return obj
+
+    @classmethod
+    def _from_nonzero(
+        cls: type[_V], coords: tuple[Expr, ...], error: type[Exception], message: Callable[[], str]
+    ) -> _V:
+        """Build from computed coordinates that vanish exactly for a degenerate input: then raise ``error``.
+
+        ``message`` is called only then (the reprs in it are costly for symbolic objects).
+        """
+        if all_zero(coords):
+            raise error(message())
+        return cls._from_exact(coords)
 
     # -- access ---------------------------------------------------------------
     @property
@@ -169,6 +181,51 @@ class HomogeneousVector(Kind):
     def latex(self) -> str:
         """LaTeX of the coordinates as a column vector (without math delimiters)."""
         return r"\begin{bmatrix}" + r" \\ ".join(self._latex_entries()) + r"\end{bmatrix}"
+
+
+class HomogeneousPoint(HomogeneousVector):
+    """A point of Pⁿ (``size`` n + 1): a finite point may be given by its n inhomogeneous coordinates
+    (a 1 is appended), and the point is ideal when its last coordinate is zero.
+
+    >>> from pgsym import Point, Point3
+    >>> Point(2, 4, 2).dehomogenize(), Point3(1, 2, 3, 0).is_ideal, Point3(1, 2, 3).is_ideal
+    ((1, 2), True, False)
+    >>> Point(1, 1, 0).dehomogenize()  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    pgsym.errors.IdealPointError: Point(1, 1, 0) is an ideal point (x3 = 0) and has no ...
+    """
+
+    __slots__ = ()
+    _inhomogeneous: ClassVar[str] = "(x, y)"  # how errors name the inhomogeneous coordinates
+
+    @classmethod
+    def _complete(cls, coords: tuple[Scalar, ...]) -> tuple[Scalar, ...]:
+        n = cls.size
+        if len(coords) == n - 1:
+            return (*coords, 1)
+        if len(coords) != n:
+            names = ", ".join(f"x{i + 1}" for i in range(n))
+            raise DimensionError(
+                f"a {cls._kind} takes {n - 1} inhomogeneous coordinate{'s' if n > 2 else ''} {cls._inhomogeneous} "
+                f"or {n} homogeneous ones ({names}), got {len(coords)}: {coords}"
+            )
+        return coords
+
+    @property
+    def is_ideal(self) -> bool:
+        """True for a point at infinity (last coordinate zero)."""
+        return is_zero(self._coords[-1])
+
+    def dehomogenize(self) -> Any:
+        """The inhomogeneous coordinates ``(x1/xₙ₊₁, …, xₙ/xₙ₊₁)``; an ideal point raises :class:`IdealPointError`."""
+        *xs, w = self._coords
+        if self.is_ideal:
+            raise IdealPointError(
+                f"{self!r} is an ideal point (x{self.size} = 0) and has no inhomogeneous coordinates; "
+                f"its direction is ({', '.join(str(x) for x in xs)})"
+            )
+        return tuple(sympy.cancel(x / w) for x in xs)
 
 
 def _is_sequence(value: Any) -> bool:

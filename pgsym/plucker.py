@@ -345,12 +345,9 @@ class Line3(HomogeneousVector, kind="line3"):
         """
         require(plane, Plane, "Line3.intersect_plane", "; use Line3.plane_through_point for a point")
         coords = tuple(sympy.expand(e) for e in self.matrix * plane.vector)
-        if all_zero(coords):
-            raise DependentPlanesError(
-                f"the line {self!r} lies in the plane {plane!r}, so they share every point of the line "
-                f"instead of meeting in one; choose a plane that does not contain the line"
-            )
-        return Point3._from_exact(coords)
+        return Point3._from_nonzero(coords, DependentPlanesError, lambda: (
+            f"the line {self!r} lies in the plane {plane!r}, so they share every point of the line "
+            "instead of meeting in one; choose a plane that does not contain the line"))
 
     def plane_through_point(self, point: Point3) -> Plane:
         """The plane spanned by the line and ``point``: ``π = L* X``.
@@ -363,12 +360,9 @@ class Line3(HomogeneousVector, kind="line3"):
         """
         require(point, Point3, "Line3.plane_through_point", "; use Line3.intersect_plane for a plane")
         coords = tuple(sympy.expand(e) for e in self.dual_matrix * point.vector)
-        if all_zero(coords):
-            raise CollinearPointsError(
-                f"the point {point!r} lies on the line {self!r}, so infinitely many planes contain both; "
-                f"choose a point off the line"
-            )
-        return Plane._from_exact(coords)
+        return Plane._from_nonzero(coords, CollinearPointsError, lambda: (
+            f"the point {point!r} lies on the line {self!r}, so infinitely many planes contain both; "
+            "choose a point off the line"))
 
     def meets(self, other: Line3) -> bool:
         """True when the two lines are coplanar, i.e. meet in a point (possibly ideal) or coincide.

@@ -43,7 +43,7 @@ from .errors import (
     ObjectTypeError,
     UndefinedCrossRatioError,
 )
-from .homogeneous import HomogeneousVector, Scalar, is_zero
+from .homogeneous import HomogeneousPoint, is_zero
 from .matrices import adjugate, expanded
 from .projective_plane import Line
 from .transformations import Transformation
@@ -58,7 +58,7 @@ __all__ = [
 ]
 
 
-class Point1(HomogeneousVector, kind="point1"):
+class Point1(HomogeneousPoint, kind="point1"):
     """A point of the projective line P¹.
 
     ``Point1(x)`` is the finite point with coordinate ``x``, stored as ``(x, 1)``;
@@ -75,28 +75,9 @@ class Point1(HomogeneousVector, kind="point1"):
 
     size = 2
     _kind = "point of P¹"
+    _inhomogeneous = "x"
     ambient_dim = 1
     __slots__ = ()
-
-    @classmethod
-    def _complete(cls, coords: tuple[Scalar, ...]) -> tuple[Scalar, ...]:
-        if len(coords) == 1:
-            return (coords[0], 1)
-        if len(coords) != 2:
-            raise DimensionError(
-                f"a point of P¹ takes 1 inhomogeneous coordinate x or 2 homogeneous ones (x1, x2), "
-                f"got {len(coords)}: {coords}"
-            )
-        return coords
-
-    @property
-    def is_ideal(self) -> bool:
-        """True for the point at infinity ``(1, 0)`` (second coordinate zero).
-
-        >>> Point1(2).is_ideal, Point1(-3, 0).is_ideal
-        (False, True)
-        """
-        return is_zero(self._coords[1])
 
     def dehomogenize(self) -> Expr:
         """The inhomogeneous coordinate ``x1 / x2``.
@@ -108,13 +89,12 @@ class Point1(HomogeneousVector, kind="point1"):
         ...
         pgsym.errors.IdealPointError: Point1(1, 0) is the ideal point of P¹ ...
         """
-        x1, x2 = self._coords
         if self.is_ideal:
             raise IdealPointError(
                 f"{self!r} is the ideal point of P¹ (x2 = 0) and has no inhomogeneous coordinate; "
                 "test .is_ideal first, or work with the homogeneous coordinates"
             )
-        return sympy.cancel(x1 / x2)
+        return sympy.cancel(self._coords[0] / self._coords[1])
 
 
 def _as_point1(obj: Any, operation: str) -> Point1:

@@ -28,12 +28,9 @@ from .errors import (
     CoincidentLinesError,
     CoincidentPointsError,
     DegenerateConfigurationError,
-    DimensionError,
-    IdealPointError,
     ObjectTypeError,
 )
-from .exact import all_zero
-from .homogeneous import HomogeneousVector, Scalar, is_zero, require, to_exact
+from .homogeneous import HomogeneousPoint, HomogeneousVector, Scalar, is_zero, require, to_exact
 
 __all__ = [
     "Line",
@@ -61,7 +58,7 @@ def cross(u: Sequence[Expr], v: Sequence[Expr]) -> tuple[Expr, Expr, Expr]:
     return tuple(sympy.expand(e) for e in ring.cross((u1, u2, u3), (v1, v2, v3)))  # type: ignore[return-value]
 
 
-class Point(HomogeneousVector, kind="point"):
+class Point(HomogeneousPoint, kind="point"):
     """A point of the projective plane.
 
     ``Point(x, y)`` is the Euclidean point ``(x, y)``, stored as ``(x, y, 1)``;
@@ -80,40 +77,6 @@ class Point(HomogeneousVector, kind="point"):
     _kind = "point of P²"
     ambient_dim = 2
     __slots__ = ()
-
-    @classmethod
-    def _complete(cls, coords: tuple[Scalar, ...]) -> tuple[Scalar, ...]:
-        if len(coords) == 2:
-            return (*coords, 1)
-        if len(coords) != 3:
-            raise DimensionError(
-                f"a point of P² takes 2 inhomogeneous coordinates (x, y) or 3 homogeneous ones "
-                f"(x1, x2, x3), got {len(coords)}: {coords}"
-            )
-        return coords
-
-    @property
-    def is_ideal(self) -> bool:
-        """True for a point at infinity (last coordinate zero)."""
-        return is_zero(self._coords[2])
-
-    def dehomogenize(self) -> tuple[Expr, Expr]:
-        """The inhomogeneous coordinates ``(x1/x3, x2/x3)``.
-
-        >>> Point(2, 4, 2).dehomogenize()
-        (1, 2)
-        >>> Point(1, 1, 0).dehomogenize()  # doctest: +ELLIPSIS
-        Traceback (most recent call last):
-        ...
-        pgsym.errors.IdealPointError: Point(1, 1, 0) is an ideal point (x3 = 0) and has no ...
-        """
-        x1, x2, x3 = self._coords
-        if self.is_ideal:
-            raise IdealPointError(
-                f"{self!r} is an ideal point (x3 = 0) and has no inhomogeneous coordinates; "
-                f"its direction is ({x1}, {x2})"
-            )
-        return sympy.cancel(x1 / x3), sympy.cancel(x2 / x3)
 
     def lies_on(self, line: Line) -> bool:
         """True when the point lies on ``line`` (``lᵀx = 0`` identically)."""
@@ -195,12 +158,8 @@ def join(p: Point, q: Point) -> Line:
     """
     require(p, Point, "join", "; use meet() for two lines")
     require(q, Point, "join", "; use meet() for two lines")
-    coords = cross(p.coords, q.coords)
-    if all_zero(coords):
-        raise CoincidentPointsError(
-            f"cannot join {p!r} and {q!r}: they are the same point, so no unique line passes through them"
-        )
-    return Line._from_exact(coords)
+    return Line._from_nonzero(cross(p.coords, q.coords), CoincidentPointsError, lambda: (
+        f"cannot join {p!r} and {q!r}: they are the same point, so no unique line passes through them"))
 
 
 def meet(l: Line, m: Line) -> Point:
@@ -214,10 +173,8 @@ def meet(l: Line, m: Line) -> Point:
     """
     require(l, Line, "meet", "; use join() for two points")
     require(m, Line, "meet", "; use join() for two points")
-    coords = cross(l.coords, m.coords)
-    if all_zero(coords):
-        raise CoincidentLinesError(f"cannot meet {l!r} and {m!r}: they are the same line, so they share every point")
-    return Point._from_exact(coords)
+    return Point._from_nonzero(cross(l.coords, m.coords), CoincidentLinesError, lambda: (
+        f"cannot meet {l!r} and {m!r}: they are the same line, so they share every point"))
 
 
 def incident(point: Point, line: Line) -> bool:

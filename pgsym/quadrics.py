@@ -26,7 +26,6 @@ from .errors import (
     InvalidCoordinatesError,
     NotOnQuadricError,
 )
-from .exact import all_zero
 from .homogeneous import Scalar, is_zero, require, to_exact
 from .space import Plane, Point3
 from .symmetric_form import SymmetricForm
@@ -108,13 +107,9 @@ class Quadric(SymmetricForm, kind="quadric"):
         Plane(0, 0, 2, -1)
         """
         require(X, Point3, "Quadric.polar")
-        coords = self._image(X.coords)
-        if all_zero(coords):
-            raise DegenerateConicError(
-                f"Q X = 0 for X = {X!r}: the point is a singular point (vertex) of this degenerate quadric, "
-                f"so it has no polar or tangent plane"
-            )
-        return Plane._from_exact(coords)
+        return Plane._from_nonzero(self._image(X.coords), DegenerateConicError, lambda: (
+            f"Q X = 0 for X = {X!r}: the point is a singular point (vertex) of this degenerate quadric, "
+            "so it has no polar or tangent plane"))
 
     def tangent_plane(self, X: Point3) -> Plane:
         """The tangent plane ``π = Q X`` at a point ``X`` of the quadric.

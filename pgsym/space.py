@@ -29,11 +29,10 @@ from .errors import (
     CollinearPointsError,
     DependentPlanesError,
     DimensionError,
-    IdealPointError,
     ObjectTypeError,
 )
 from .exact import all_zero
-from .homogeneous import HomogeneousVector, Scalar, is_zero, require
+from .homogeneous import HomogeneousPoint, HomogeneousVector, is_zero, require
 
 __all__ = [
     "Plane",
@@ -67,7 +66,7 @@ def triple_cross(u: Sequence[Expr], v: Sequence[Expr], w: Sequence[Expr]) -> tup
     return tuple(sympy.expand(e) for e in ring.plane_through(*rows))  # type: ignore[return-value]
 
 
-class Point3(HomogeneousVector, kind="point3"):
+class Point3(HomogeneousPoint, kind="point3"):
     """A point of projective 3-space.
 
     ``Point3(x, y, z)`` is the Euclidean point ``(x, y, z)``, stored as
@@ -85,48 +84,9 @@ class Point3(HomogeneousVector, kind="point3"):
 
     size = 4
     _kind = "point of P³"
+    _inhomogeneous = "(x, y, z)"
     ambient_dim = 3
     __slots__ = ()
-
-    @classmethod
-    def _complete(cls, coords: tuple[Scalar, ...]) -> tuple[Scalar, ...]:
-        if len(coords) == 3:
-            return (*coords, 1)
-        if len(coords) != 4:
-            raise DimensionError(
-                f"a point of P³ takes 3 inhomogeneous coordinates (x, y, z) or 4 homogeneous ones "
-                f"(x1, x2, x3, x4), got {len(coords)}: {coords}"
-            )
-        return coords
-
-    @property
-    def is_ideal(self) -> bool:
-        """True for a point at infinity (last coordinate zero).
-
-        >>> Point3(1, 2, 3, 0).is_ideal, Point3(1, 2, 3).is_ideal
-        (True, False)
-        """
-        return is_zero(self._coords[3])
-
-    def dehomogenize(self) -> tuple[Expr, Expr, Expr]:
-        """The inhomogeneous coordinates ``(x1/x4, x2/x4, x3/x4)``.
-
-        Raises :class:`IdealPointError` for an ideal point, which has none.
-
-        >>> Point3(2, 4, 6, 2).dehomogenize()
-        (1, 2, 3)
-        >>> Point3(1, 1, 0, 0).dehomogenize()  # doctest: +ELLIPSIS
-        Traceback (most recent call last):
-        ...
-        pgsym.errors.IdealPointError: Point3(1, 1, 0, 0) is an ideal point (x4 = 0) and has no ...
-        """
-        x1, x2, x3, x4 = self._coords
-        if self.is_ideal:
-            raise IdealPointError(
-                f"{self!r} is an ideal point (x4 = 0) and has no inhomogeneous coordinates; "
-                f"its direction is ({x1}, {x2}, {x3})"
-            )
-        return sympy.cancel(x1 / x4), sympy.cancel(x2 / x4), sympy.cancel(x3 / x4)
 
     def lies_on(self, plane: Plane) -> bool:
         """True when the point lies on ``plane`` (``πᵀX = 0`` identically).
@@ -244,15 +204,13 @@ def plane_through(p: Point3, q: Point3, r: Point3) -> Plane:
     """
     for x in (p, q, r):
         require(x, Point3, "plane_through", "; use point_on_planes() for three planes")
-    coords = triple_cross(p.coords, q.coords, r.coords)
-    if all_zero(coords):
+    def message() -> str:
         pair = _coincident_pair((p, q, r))
         detail = f" (points {pair[0] + 1} and {pair[1] + 1} coincide)" if pair else ""
-        raise CollinearPointsError(
-            f"cannot find the plane through {p!r}, {q!r}, {r!r}: they lie on one line{detail}, so the 3×4 "
-            f"matrix has rank < 3 and a whole pencil of planes contains them; choose a point off that line"
-        )
-    return Plane._from_exact(coords)
+        return (f"cannot find the plane through {p!r}, {q!r}, {r!r}: they lie on one line{detail}, so the 3×4 "
+                "matrix has rank < 3 and a whole pencil of planes contains them; choose a point off that line")
+
+    return Plane._from_nonzero(triple_cross(p.coords, q.coords, r.coords), CollinearPointsError, message)
 
 
 def point_on_planes(a: Plane, b: Plane, c: Plane) -> Point3:
@@ -272,15 +230,13 @@ def point_on_planes(a: Plane, b: Plane, c: Plane) -> Point3:
     """
     for x in (a, b, c):
         require(x, Plane, "point_on_planes", "; use plane_through() for three points")
-    coords = triple_cross(a.coords, b.coords, c.coords)
-    if all_zero(coords):
+    def message() -> str:
         pair = _coincident_pair((a, b, c))
         detail = f"planes {pair[0] + 1} and {pair[1] + 1} are the same plane" if pair else "they share a line"
-        raise DependentPlanesError(
-            f"the planes {a!r}, {b!r}, {c!r} do not meet in a single point: {detail}, so the 3×4 matrix "
-            f"has rank < 3; replace one plane by a plane not through their common line"
-        )
-    return Point3._from_exact(coords)
+        return (f"the planes {a!r}, {b!r}, {c!r} do not meet in a single point: {detail}, so the 3×4 matrix "
+                "has rank < 3; replace one plane by a plane not through their common line")
+
+    return Point3._from_nonzero(triple_cross(a.coords, b.coords, c.coords), DependentPlanesError, message)
 
 
 def coplanar(p: Point3, q: Point3, r: Point3, s: Point3) -> bool:
