@@ -27,7 +27,7 @@ from .exact import Scalar, all_zero, canonical_coords, format_entry, is_zero, la
 from .kinds import Kind
 from .matrices import proportional
 
-__all__ = ["HomogeneousPoint", "HomogeneousVector", "is_zero", "to_exact"]
+__all__ = ["HomogeneousHyperplane", "HomogeneousPoint", "HomogeneousVector", "is_zero", "to_exact"]
 
 _format_entry = format_entry  # the name the other modules import
 
@@ -226,6 +226,34 @@ class HomogeneousPoint(HomogeneousVector):
                 f"its direction is ({', '.join(str(x) for x in xs)})"
             )
         return tuple(sympy.cancel(x / w) for x in xs)
+
+
+class HomogeneousHyperplane(HomogeneousVector):
+    """A line of P² or a plane of P³: ``(n, d)`` with Euclidean normal ``n``; it maps covariantly, by ``H⁻ᵀ``.
+
+    Printed as a row vector, so that ``lᵀx`` reads as a row times a column.
+
+    >>> from pgsym import Line, Plane
+    >>> Line(3, 4, 5).normal, Plane(0, 0, 0, 2).is_at_infinity, Line(1, 0, 0).is_at_infinity
+    ((3, 4), True, False)
+    """
+
+    __slots__ = ()
+    _covariant = True  # l' ∝ H⁻ᵀ l keeps the incidence lᵀx = 0
+
+    @property
+    def normal(self) -> tuple[Expr, ...]:
+        """The Euclidean normal vector: every coordinate but the last (zero only for the one at infinity)."""
+        return self._coords[:-1]
+
+    @property
+    def is_at_infinity(self) -> bool:
+        """True for the line (plane) at infinity ``(0, …, 0, 1)``."""
+        return all_zero(self._coords[:-1])
+
+    def latex(self) -> str:
+        """LaTeX of the coordinates as a row vector (without math delimiters)."""
+        return r"\begin{bmatrix}" + " & ".join(self._latex_entries()) + r"\end{bmatrix}"
 
 
 def _is_sequence(value: Any) -> bool:

@@ -344,8 +344,7 @@ class Line3(HomogeneousVector, kind="line3"):
         Point3(2, 2, 2, 1)
         """
         require(plane, Plane, "Line3.intersect_plane", "; use Line3.plane_through_point for a point")
-        coords = tuple(sympy.expand(e) for e in self.matrix * plane.vector)
-        return Point3._from_nonzero(coords, DependentPlanesError, lambda: (
+        return Point3._from_nonzero(_times(self.matrix, plane), DependentPlanesError, lambda: (
             f"the line {self!r} lies in the plane {plane!r}, so they share every point of the line "
             "instead of meeting in one; choose a plane that does not contain the line"))
 
@@ -359,8 +358,7 @@ class Line3(HomogeneousVector, kind="line3"):
         Plane(0, 0, 1, 0)
         """
         require(point, Point3, "Line3.plane_through_point", "; use Line3.intersect_plane for a plane")
-        coords = tuple(sympy.expand(e) for e in self.dual_matrix * point.vector)
-        return Plane._from_nonzero(coords, CollinearPointsError, lambda: (
+        return Plane._from_nonzero(_times(self.dual_matrix, point), CollinearPointsError, lambda: (
             f"the point {point!r} lies on the line {self!r}, so infinitely many planes contain both; "
             "choose a point off the line"))
 
@@ -502,6 +500,11 @@ def _square4(matrix: Any, what: str) -> ImmutableMatrix:
     if all_zero(m):
         raise ZeroVectorError(f"the zero matrix is no {what}: a line needs a nonzero matrix of rank 2")
     return m
+
+
+def _times(m: ImmutableMatrix, x: HomogeneousVector) -> tuple[Expr, ...]:
+    """``M x``, expanded."""
+    return tuple(sympy.expand(e) for e in m * x.vector)
 
 
 def _coords_of(m: ImmutableMatrix) -> tuple[Expr, ...]:

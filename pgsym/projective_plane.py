@@ -30,7 +30,7 @@ from .errors import (
     DegenerateConfigurationError,
     ObjectTypeError,
 )
-from .homogeneous import HomogeneousPoint, HomogeneousVector, Scalar, is_zero, require, to_exact
+from .homogeneous import HomogeneousHyperplane, HomogeneousPoint, HomogeneousVector, Scalar, is_zero, require, to_exact
 
 __all__ = [
     "Line",
@@ -91,7 +91,7 @@ class Point(HomogeneousPoint, kind="point"):
         return Line._from_exact(self._coords)
 
 
-class Line(HomogeneousVector, kind="line"):
+class Line(HomogeneousHyperplane, kind="line"):
     """A line ``a x + b y + c w = 0`` of the projective plane, given by ``(a, b, c)``.
 
     Lines are printed as row vectors, so that ``lᵀ x`` reads as a row times a column.
@@ -106,13 +106,7 @@ class Line(HomogeneousVector, kind="line"):
     size = 3
     _kind = "line of P²"
     ambient_dim = 2
-    _covariant = True  # l' ∝ H⁻ᵀ l keeps incidence lᵀx = 0
     __slots__ = ()
-
-    @property
-    def is_at_infinity(self) -> bool:
-        """True for the line at infinity ``(0, 0, 1)``."""
-        return is_zero(self._coords[0]) and is_zero(self._coords[1])
 
     @property
     def direction(self) -> Point:
@@ -123,11 +117,6 @@ class Line(HomogeneousVector, kind="line"):
             )
         a, b, _ = self._coords
         return Point._from_exact((b, -a, Integer(0)))
-
-    @property
-    def normal(self) -> tuple[Expr, Expr]:
-        """The Euclidean normal vector ``(a, b)`` of the line."""
-        return self._coords[0], self._coords[1]
 
     def contains(self, point: Point) -> bool:
         """True when ``point`` lies on the line."""
@@ -140,9 +129,6 @@ class Line(HomogeneousVector, kind="line"):
     def dual(self) -> Point:
         """The point with the same homogeneous coordinates."""
         return Point._from_exact(self._coords)
-
-    def latex(self) -> str:
-        return r"\begin{bmatrix}" + " & ".join(self._latex_entries()) + r"\end{bmatrix}"
 
 
 

@@ -19,7 +19,8 @@ Plane(1, 1, 1, -1)
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
+from typing import Any, TypeVar
 
 import sympy
 from sympy import Expr, Integer
@@ -31,8 +32,7 @@ from .errors import (
     DimensionError,
     ObjectTypeError,
 )
-from .exact import all_zero
-from .homogeneous import HomogeneousPoint, HomogeneousVector, is_zero, require
+from .homogeneous import HomogeneousHyperplane, HomogeneousPoint, HomogeneousVector, is_zero, require
 
 __all__ = [
     "Plane",
@@ -45,6 +45,8 @@ __all__ = [
     "point_on_planes",
     "triple_cross",
 ]
+
+_H = TypeVar("_H", bound=HomogeneousVector)
 
 
 def triple_cross(u: Sequence[Expr], v: Sequence[Expr], w: Sequence[Expr]) -> tuple[Expr, Expr, Expr, Expr]:
@@ -105,7 +107,7 @@ class Point3(HomogeneousPoint, kind="point3"):
         return Plane._from_exact(self._coords)
 
 
-class Plane(HomogeneousVector, kind="plane"):
+class Plane(HomogeneousHyperplane, kind="plane"):
     """A plane ``a x + b y + c z + d w = 0`` of projective 3-space, given by ``(a, b, c, d)``.
 
     Planes are printed as row vectors, so that ``πᵀX`` reads as a row times a column.
@@ -118,26 +120,7 @@ class Plane(HomogeneousVector, kind="plane"):
     size = 4
     _kind = "plane of P³"
     ambient_dim = 3
-    _covariant = True  # π' ∝ H⁻ᵀ π keeps incidence πᵀX = 0
     __slots__ = ()
-
-    @property
-    def normal(self) -> tuple[Expr, Expr, Expr]:
-        """The Euclidean normal vector ``(a, b, c)``; it is ``(0, 0, 0)`` only for the plane at infinity.
-
-        >>> Plane(1, -2, 2, 7).normal
-        (1, -2, 2)
-        """
-        return self._coords[0], self._coords[1], self._coords[2]
-
-    @property
-    def is_at_infinity(self) -> bool:
-        """True for the plane at infinity ``(0, 0, 0, 1)``.
-
-        >>> Plane(0, 0, 0, 5).is_at_infinity, Plane(0, 0, 1, 5).is_at_infinity
-        (True, False)
-        """
-        return all_zero(self._coords[:3])
 
     def contains(self, point: Point3) -> bool:
         """True when ``point`` lies on the plane.
@@ -154,10 +137,6 @@ class Plane(HomogeneousVector, kind="plane"):
         Point3(0, 0, 0, 1)
         """
         return Point3._from_exact(self._coords)
-
-    def latex(self) -> str:
-        """LaTeX of the coordinates as a row vector (without math delimiters)."""
-        return r"\begin{bmatrix}" + " & ".join(self._latex_entries()) + r"\end{bmatrix}"
 
 
 
@@ -185,6 +164,17 @@ def _coincident_pair(objs: Sequence[HomogeneousVector]) -> tuple[int, int] | Non
     return None
 
 
+def _incident_with_three(
+    cls: type[_H], objs: tuple[HomogeneousVector, ...], error: type[Exception], message: Callable[[Any], str]
+) -> _H:
+    """The plane through three points, or the point on three planes: their triple cross product.
+
+    It vanishes exactly when the three have rank < 3; ``message`` gets the first coincident pair (or None).
+    """
+    coords = triple_cross(*(o.coords for o in objs))
+    return cls._from_nonzero(coords, error, lambda: message(_coincident_pair(objs)))
+
+
 def plane_through(p: Point3, q: Point3, r: Point3) -> Plane:
     """The plane through three points that do not lie on one line.
 
@@ -204,13 +194,10 @@ def plane_through(p: Point3, q: Point3, r: Point3) -> Plane:
     """
     for x in (p, q, r):
         require(x, Point3, "plane_through", "; use point_on_planes() for three planes")
-    def message() -> str:
-        pair = _coincident_pair((p, q, r))
-        detail = f" (points {pair[0] + 1} and {pair[1] + 1} coincide)" if pair else ""
-        return (f"cannot find the plane through {p!r}, {q!r}, {r!r}: they lie on one line{detail}, so the 3×4 "
-                "matrix has rank < 3 and a whole pencil of planes contains them; choose a point off that line")
-
-    return Plane._from_nonzero(triple_cross(p.coords, q.coords, r.coords), CollinearPointsError, message)
+    return _incident_with_three(Plane, (p, q, r), CollinearPointsError, lambda pair: (
+        f"cannot find the plane through {p!r}, {q!r}, {r!r}: they lie on one line"
+        + (f" (points {pair[0] + 1} and {pair[1] + 1} coincide)" if pair else "")
+        + ", so the 3×4 matrix has rank < 3 and a whole pencil of planes contains them; choose a point off that line"))
 
 
 def point_on_planes(a: Plane, b: Plane, c: Plane) -> Point3:
@@ -230,13 +217,10 @@ def point_on_planes(a: Plane, b: Plane, c: Plane) -> Point3:
     """
     for x in (a, b, c):
         require(x, Plane, "point_on_planes", "; use plane_through() for three points")
-    def message() -> str:
-        pair = _coincident_pair((a, b, c))
-        detail = f"planes {pair[0] + 1} and {pair[1] + 1} are the same plane" if pair else "they share a line"
-        return (f"the planes {a!r}, {b!r}, {c!r} do not meet in a single point: {detail}, so the 3×4 matrix "
-                "has rank < 3; replace one plane by a plane not through their common line")
-
-    return Point3._from_nonzero(triple_cross(a.coords, b.coords, c.coords), DependentPlanesError, message)
+    return _incident_with_three(Point3, (a, b, c), DependentPlanesError, lambda pair: (
+        f"the planes {a!r}, {b!r}, {c!r} do not meet in a single point: "
+        + (f"planes {pair[0] + 1} and {pair[1] + 1} are the same plane" if pair else "they share a line")
+        + ", so the 3×4 matrix has rank < 3; replace one plane by a plane not through their common line"))
 
 
 def coplanar(p: Point3, q: Point3, r: Point3, s: Point3) -> bool:
