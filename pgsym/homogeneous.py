@@ -26,6 +26,7 @@ from .errors import DimensionError, IdealPointError, ObjectTypeError, Undecidabl
 from .exact import Scalar, all_zero, canonical_coords, format_entry, is_zero, latex, to_exact
 from .kinds import Kind
 from .matrices import proportional
+from .ring import dot
 
 __all__ = ["HomogeneousHyperplane", "HomogeneousPoint", "HomogeneousVector", "is_zero", "to_exact"]
 
@@ -254,6 +255,21 @@ class HomogeneousHyperplane(HomogeneousVector):
     def latex(self) -> str:
         """LaTeX of the coordinates as a row vector (without math delimiters)."""
         return r"\begin{bmatrix}" + " & ".join(self._latex_entries()) + r"\end{bmatrix}"
+
+
+def incidence(point: Any, hyperplane: Any, point_cls: type, hyperplane_cls: type) -> bool:
+    """``lᵀx = 0`` exactly, for a point and a hyperplane given in either order (incidence is symmetric).
+
+    >>> from pgsym import Line, Point
+    >>> incidence(Line(1, -1, 0), Point(2, 2), Point, Line)
+    True
+    """
+    if isinstance(point, hyperplane_cls) and isinstance(hyperplane, point_cls):
+        point, hyperplane = hyperplane, point
+    pair = f" (a {point_cls.__name__} and a {hyperplane_cls.__name__})"
+    require(point, point_cls, "incident", pair)
+    require(hyperplane, hyperplane_cls, "incident", pair)
+    return is_zero(sympy.expand(dot(point.coords, hyperplane.coords)))
 
 
 def _is_sequence(value: Any) -> bool:

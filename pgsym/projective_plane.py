@@ -30,7 +30,16 @@ from .errors import (
     DegenerateConfigurationError,
     ObjectTypeError,
 )
-from .homogeneous import HomogeneousHyperplane, HomogeneousPoint, HomogeneousVector, Scalar, is_zero, require, to_exact
+from .homogeneous import (
+    HomogeneousHyperplane,
+    HomogeneousPoint,
+    HomogeneousVector,
+    Scalar,
+    incidence,
+    is_zero,
+    require,
+    to_exact,
+)
 
 __all__ = [
     "Line",
@@ -171,11 +180,7 @@ def incident(point: Point, line: Line) -> bool:
     >>> incident(Point(1, 1), Line(1, -1, 0)), incident(Line(1, -1, 0), Point(1, 2))
     (True, False)
     """
-    if isinstance(point, Line) and isinstance(line, Point):
-        point, line = line, point
-    require(point, Point, "incident", " (a Point and a Line)")
-    require(line, Line, "incident", " (a Point and a Line)")
-    return is_zero(sum((a * b for a, b in zip(point.coords, line.coords, strict=False)), Integer(0)))
+    return incidence(point, line, Point, Line)
 
 
 def _det3(rows: Sequence[HomogeneousVector]) -> Expr:

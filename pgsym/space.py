@@ -23,7 +23,7 @@ from collections.abc import Callable, Sequence
 from typing import Any, TypeVar
 
 import sympy
-from sympy import Expr, Integer
+from sympy import Expr
 
 from . import ring
 from .errors import (
@@ -32,7 +32,7 @@ from .errors import (
     DimensionError,
     ObjectTypeError,
 )
-from .homogeneous import HomogeneousHyperplane, HomogeneousPoint, HomogeneousVector, is_zero, require
+from .homogeneous import HomogeneousHyperplane, HomogeneousPoint, HomogeneousVector, incidence, is_zero, require
 
 __all__ = [
     "Plane",
@@ -149,11 +149,7 @@ def incident(point: Point3, plane: Plane) -> bool:
     >>> incident(Point3(1, 2, 3), Plane(1, 1, 1, -6)), incident(Plane(1, 1, 1, -6), Point3(0, 0, 0))
     (True, False)
     """
-    if isinstance(point, Plane) and isinstance(plane, Point3):
-        point, plane = plane, point
-    require(point, Point3, "incident", " (a Point3 and a Plane)")
-    require(plane, Plane, "incident", " (a Point3 and a Plane)")
-    return is_zero(sum((a * b for a, b in zip(point.coords, plane.coords, strict=True)), Integer(0)))
+    return incidence(point, plane, Point3, Plane)
 
 
 def _coincident_pair(objs: Sequence[HomogeneousVector]) -> tuple[int, int] | None:
