@@ -378,7 +378,7 @@ def _v_meet_at_infinity(c: list) -> list:
 
 def _v_normals_parallel(c: list) -> list:
     l, m = _data(c)
-    return cross(l[:3], m[:3])
+    return list(cross(l[:3], m[:3]))
 
 
 def _v_at_infinity(c: list) -> list:

@@ -204,3 +204,10 @@ def test_primitive_part_removes_any_common_factor(vector, factor):
     assert q == p or q == [-x for x in p]
     # and with denominators: (v_i / f) has the same primitive form as v
     assert primitive_part(v, [f] * len(v)) in (p, [-x for x in p])
+
+
+@pytest.mark.parametrize("inv", [i for i in INVARIANTS if i.counter is not None], ids=lambda i: i.key)
+def test_counterexample_values_are_lists(inv):
+    # the values are printed in the book as lists, whatever sequence type the kit returns
+    ce = inv.counterexample()
+    assert type(ce.before) is list and type(ce.after) is list
