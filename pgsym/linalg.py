@@ -34,6 +34,7 @@ import numpy as np
 import sympy
 from sympy import Expr, Matrix
 
+from . import matrices
 from .errors import (
     CollinearPointsError,
     DegenerateConfigurationError,
@@ -45,7 +46,7 @@ from .errors import (
 )
 from .exact import canonical_coords
 from .homogeneous import HomogeneousVector, is_zero
-from .matrices import exact_matrix
+from .matrices import exact_matrix, is_zero_entry
 
 __all__ = [
     "SVDSteps",
@@ -69,10 +70,6 @@ def _exact_matrix(M: Any) -> Matrix:
     return Matrix(exact_matrix(M, what="M"))
 
 
-def _is_zero_entry(value: Any) -> bool:
-    return is_zero(sympy.sympify(value))
-
-
 def nullspace_exact(M: Any) -> list[tuple[Expr, ...]]:
     """An exact basis of the null space ``{x : M x = 0}``, as a list of tuples.
 
@@ -89,7 +86,7 @@ def nullspace_exact(M: Any) -> list[tuple[Expr, ...]]:
     []
     """
     matrix = _exact_matrix(M)
-    basis = matrix.nullspace(iszerofunc=_is_zero_entry)
+    basis = matrix.nullspace(iszerofunc=is_zero_entry)
     return [canonical_coords(list(v), keep_sign=True) for v in basis]
 
 
@@ -99,7 +96,7 @@ def rank_exact(M: Any) -> int:
     >>> rank_exact([[1, 2, 3, 4], [2, 4, 6, 8], [0, 0, 1, 1]])
     2
     """
-    return int(_exact_matrix(M).rank(iszerofunc=_is_zero_entry))
+    return matrices.rank(_exact_matrix(M))
 
 
 def solve_by_fixing_coordinate(M: Any, index: int = 3) -> tuple[Expr, ...]:

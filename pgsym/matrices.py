@@ -25,7 +25,7 @@ from sympy import ImmutableMatrix
 from .errors import DimensionError
 from .exact import is_zero, to_exact
 
-__all__ = ["adjugate", "exact_matrix", "expanded", "proportional"]
+__all__ = ["adjugate", "exact_matrix", "expanded", "is_zero_entry", "proportional", "rank"]
 
 
 def exact_matrix(
@@ -52,8 +52,8 @@ def exact_matrix(
         value = inner
     expected = f"a {shape[0]}×{shape[1]} matrix" if shape else "a square matrix" if square else "a matrix"
     try:
-        if isinstance(value, (str, bytes)):
-            raise TypeError
+        if isinstance(value, (str, bytes, set, frozenset, dict)):
+            raise TypeError  # no rows, or rows in no fixed order
         rows = [list(r) for r in (value.tolist() if hasattr(value, "tolist") else value)]
         if any(isinstance(e, (list, tuple)) for r in rows for e in r):
             raise TypeError  # a 3-index array is no matrix
@@ -94,6 +94,25 @@ def adjugate(matrix: Any) -> ImmutableMatrix:
     """
     m = matrix if isinstance(matrix, sympy.MatrixBase) else exact_matrix(matrix, square=True)
     return expanded(m.adjugate(method="bareiss"))
+
+
+def is_zero_entry(value: Any) -> bool:
+    """The exact zero test as SymPy's row reduction wants it (``iszerofunc``).
+
+    >>> is_zero_entry(sympy.sqrt(2) ** 2 - 2)
+    True
+    """
+    return is_zero(sympy.sympify(value))
+
+
+def rank(matrix: Any) -> int:
+    """The exact rank (the generic rank for symbolic entries), by row reduction with the exact zero test.
+
+    >>> rank([[1, 2], [2, 4]]), rank(sympy.eye(3))
+    (1, 3)
+    """
+    m = matrix if isinstance(matrix, sympy.MatrixBase) else exact_matrix(matrix)
+    return int(sympy.Matrix(m).rank(iszerofunc=is_zero_entry))
 
 
 def proportional(u: Sequence[Any], v: Sequence[Any]) -> bool:

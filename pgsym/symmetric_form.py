@@ -26,7 +26,7 @@ from sympy import Expr, ImmutableMatrix, Integer, Matrix, Rational
 from .errors import InvalidCoordinatesError, ZeroVectorError
 from .exact import all_zero, canonical_coords, format_entry, is_zero, latex
 from .kinds import Kind
-from .matrices import exact_matrix, proportional
+from .matrices import exact_matrix, proportional, rank
 
 __all__ = ["SymmetricForm"]
 
@@ -95,7 +95,7 @@ class SymmetricForm(Kind):
         """The exact rank (``size`` when non-degenerate; the generic rank for symbolic entries)."""
         if not self.is_degenerate:
             return self.size
-        return int(Matrix(self._matrix).rank(iszerofunc=lambda v: is_zero(sympy.sympify(v))))
+        return rank(self._matrix)
 
     def _form(self, u: Sequence[Expr], v: Sequence[Expr]) -> Expr:
         """The bilinear form ``uᵀ M v``, expanded."""
