@@ -152,6 +152,8 @@ class SymmetricForm(Kind):
         >>> from pgsym.conics import Conic
         >>> Conic([[2, 1, 0], [1, 4, 0], [0, 0, -6]]).canonical()
         Conic.from_coefficients(1, 1, 2, 0, 0, -3)
+        >>> Conic([[-1, 0, 0], [0, -1, 0], [0, 0, Rational(1, 2)]]).canonical()
+        Conic.from_coefficients(2, 0, 2, 0, 0, -1)
         """
         return type(self)._from_exact(self._matrix_of_form(canonical_coords(self.coefficients_of_form())))
 
