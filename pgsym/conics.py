@@ -23,11 +23,9 @@ True
 from __future__ import annotations
 
 import itertools
-from collections.abc import Sequence
-from typing import Any
 
 import sympy
-from sympy import Expr, I, ImmutableMatrix, Integer, Matrix, Rational
+from sympy import Expr, I, Integer, Matrix
 
 from .errors import (
     CoincidentPointsError,
@@ -35,14 +33,13 @@ from .errors import (
     DegenerateConfigurationError,
     DegenerateConicError,
     DimensionError,
-    InvalidCoordinatesError,
     NotOnConicError,
-    ZeroVectorError,
 )
 from .exact import all_zero, latex
-from .homogeneous import HomogeneousVector, Scalar, _format_entry, is_zero, require, to_exact
-from .kinds import Kind
+from .homogeneous import Scalar, _format_entry, is_zero, require, to_exact
+from .matrices import adjugate
 from .projective_plane import Line, Point, collinear, cross
+from .symmetric_form import SymmetricForm
 
 __all__ = [
     "Conic",
@@ -52,24 +49,6 @@ __all__ = [
     "conic_through",
     "dual_conic_at_infinity",
 ]
-
-
-def _expand(m: Matrix) -> ImmutableMatrix:
-    return ImmutableMatrix(m.applyfunc(sympy.expand))
-
-
-def _adjugate(m: Matrix) -> ImmutableMatrix:
-    """The adjugate (transposed cofactor matrix) of a 3×3 matrix, expanded."""
-    return _expand(Matrix(m).adjugate(method="bareiss"))
-
-
-def _rank3(m: Matrix) -> int:
-    """The exact rank of a nonzero 3×3 matrix (identically, for symbolic entries)."""
-    if not is_zero(sympy.expand(Matrix(m).det(method="bareiss"))):
-        return 3
-    if any(not is_zero(e) for e in _adjugate(m)):
-        return 2
-    return 1
 
 
 def _two_points_on(line: Line) -> tuple[Point, Point]:
@@ -99,118 +78,7 @@ def _conjugate_normalised(u: list[Expr], v: list[Expr], disc: Expr) -> tuple[Exp
     )
 
 
-def _form(m: Matrix, u: Sequence[Expr], v: Sequence[Expr]) -> Expr:
-    """The bilinear form ``uᵀ M v``, expanded."""
-    return sympy.expand(sum((u[i] * m[i, j] * v[j] for i in range(3) for j in range(3)), Integer(0)))
-
-
-class _Entries(HomogeneousVector):
-    """The six coefficients of a quadratic form as one homogeneous vector (for the canonical form)."""
-
-    size = 6
-    _kind = "conic"
-    __slots__ = ()
-
-
-def _monomial_coefficients(m: Matrix) -> tuple[Expr, ...]:
-    """(a, b, c, d, e, f) of the quadratic form a x1² + b x1x2 + c x2² + d x1x3 + e x2x3 + f x3²."""
-    return (m[0, 0], 2 * m[0, 1], m[1, 1], 2 * m[0, 2], 2 * m[1, 2], m[2, 2])
-
-
-def _symmetric_matrix(v: Sequence[Expr]) -> ImmutableMatrix:
-    a, b, c, d, e, f = v
-    h = Rational(1, 2)
-    return ImmutableMatrix([[a, b * h, d * h], [b * h, c, e * h], [d * h, e * h, f]])
-
-
-class _SymmetricForm(Kind):
-    """Shared machinery of conics and dual conics: a symmetric 3×3 matrix up to scale."""
-
-    __slots__ = ("_matrix",)
-    _kind = "conic"
-
-    def __init__(self, matrix: Any) -> None:
-        self._matrix = self._check(matrix)
-
-    @classmethod
-    def _check(cls, matrix: Any) -> ImmutableMatrix:
-        try:
-            rows = [list(row) for row in (matrix.tolist() if hasattr(matrix, "tolist") else matrix)]
-        except TypeError as err:
-            raise DimensionError(f"a {cls._kind} needs a symmetric 3×3 matrix, got {matrix!r}") from err
-        if len(rows) != 3 or any(len(r) != 3 for r in rows):
-            raise DimensionError(f"a {cls._kind} needs a symmetric 3×3 matrix (three rows of three), got {matrix!r}")
-        m = ImmutableMatrix([[to_exact(e) for e in r] for r in rows])
-        if any(not is_zero(m[i, j] - m[j, i]) for i in range(3) for j in range(i + 1, 3)):
-            raise InvalidCoordinatesError(
-                f"the matrix of a {cls._kind} must be symmetric, got {m.tolist()}; "
-                "use (M + M.T)/2, which describes the same quadratic form"
-            )
-        if all_zero(m):
-            raise ZeroVectorError(f"the zero matrix is not a {cls._kind}: at least one entry must be nonzero")
-        return m
-
-    @classmethod
-    def _from_exact(cls, m: ImmutableMatrix) -> Any:
-        obj = cls.__new__(cls)
-        obj._matrix = cls._check(m)
-        return obj
-
-    @property
-    def matrix(self) -> ImmutableMatrix:
-        """The symmetric 3×3 matrix (one representative of the scale class)."""
-        return self._matrix
-
-    @property
-    def rank(self) -> int:
-        """The exact rank: 3 non-degenerate, 2 a pair of distinct lines (points), 1 a double line (point)."""
-        return _rank3(self._matrix)
-
-    @property
-    def is_degenerate(self) -> bool:
-        """True when the matrix is singular (rank 1 or 2)."""
-        return is_zero(self.determinant)
-
-    @property
-    def determinant(self) -> Expr:
-        """The determinant of the stored representative (its sign and size depend on the scale)."""
-        return sympy.expand(Matrix(self._matrix).det(method="bareiss"))
-
-    def __eq__(self, other: object) -> bool:
-        if type(self) is not type(other):
-            return NotImplemented
-        assert isinstance(other, _SymmetricForm)
-        u, v = list(self._matrix), list(other._matrix)
-        return all(is_zero(u[i] * v[j] - u[j] * v[i]) for i in range(9) for j in range(i + 1, 9))
-
-    def __hash__(self) -> int:
-        return hash((type(self).__name__, 3))
-
-    def canonical(self) -> Any:
-        """The representative whose quadratic form has coprime integer (or polynomial) coefficients.
-
-        The six coefficients ``(a, b, c, d, e, f)`` of ``a x² + b xy + c y² + d x + e y + f``
-        (for a dual conic, of the same form in the line coordinates) are made a
-        primitive integer vector with first nonzero entry positive.
-
-        >>> Conic([[2, 1, 0], [1, 4, 0], [0, 0, -6]]).canonical()
-        Conic.from_coefficients(1, 1, 2, 0, 0, -3)
-        >>> Conic([[-1, 0, 0], [0, -1, 0], [0, 0, Rational(1, 2)]]).canonical()
-        Conic.from_coefficients(2, 0, 2, 0, 0, -1)
-        """
-        coefficients = _Entries._from_exact(_monomial_coefficients(self._matrix)).canonical().coords
-        return type(self)._from_exact(_symmetric_matrix(coefficients))
-
-    def subs(self, *args: Any, **kwargs: Any) -> Any:
-        """Substitute values for symbols, as :meth:`sympy.Expr.subs` does."""
-        return type(self)._from_exact(ImmutableMatrix(self._matrix.subs(*args, **kwargs)))
-
-    def latex(self) -> str:
-        """LaTeX of the matrix (without math delimiters)."""
-        return latex(Matrix(self._matrix), mat_delim="[")
-
-
-class Conic(_SymmetricForm, kind="conic"):
+class Conic(SymmetricForm, kind="conic"):
     """A conic ``xᵀ C x = 0`` of the projective plane, from a symmetric 3×3 matrix C.
 
     Equality is up to a nonzero scale; ``repr`` is the :meth:`from_coefficients`
@@ -226,6 +94,7 @@ class Conic(_SymmetricForm, kind="conic"):
 
     __slots__ = ()
     _kind = "conic"
+    ambient_dim = 2
 
     @classmethod
     def from_coefficients(cls, a: Scalar, b: Scalar, c: Scalar, d: Scalar, e: Scalar, f: Scalar) -> Conic:
@@ -234,7 +103,7 @@ class Conic(_SymmetricForm, kind="conic"):
         >>> Conic.from_coefficients(0, 2, 0, 0, 0, -2).matrix.tolist()     # xy = 1
         [[0, 1, 0], [1, 0, 0], [0, 0, -2]]
         """
-        return cls(_symmetric_matrix([to_exact(v) for v in (a, b, c, d, e, f)]))
+        return cls(cls._matrix_of_form([to_exact(v) for v in (a, b, c, d, e, f)]))
 
     @classmethod
     def circle(cls, cx: Scalar, cy: Scalar, r: Scalar) -> Conic:
@@ -253,7 +122,7 @@ class Conic(_SymmetricForm, kind="conic"):
         >>> Conic([[1, 2, 3], [2, 4, 5], [3, 5, 6]]).coefficients
         (1, 4, 4, 6, 10, 6)
         """
-        return _monomial_coefficients(self._matrix)  # type: ignore[return-value]
+        return self.coefficients_of_form()  # type: ignore[return-value]
 
     def equation(self, x: Expr | None = None, y: Expr | None = None) -> Expr:
         """The left-hand side ``a x² + b xy + c y² + d x + e y + f`` as a polynomial in x and y.
@@ -280,7 +149,7 @@ class Conic(_SymmetricForm, kind="conic"):
         3
         """
         require(point, Point, "Conic.value")
-        return _form(self._matrix, point.coords, point.coords)
+        return self._form(point.coords, point.coords)
 
     def contains(self, point: Point) -> bool:
         """True when the point lies on the conic: ``xᵀ C x = 0`` identically.
@@ -303,12 +172,8 @@ class Conic(_SymmetricForm, kind="conic"):
         Line(2, 0, -1)
         """
         require(point, Point, "Conic.polar")
-        coords = tuple(sympy.expand(e) for e in self._matrix * point.vector)
-        if all_zero(coords):
-            raise DegenerateConicError(
-                f"{point!r} is a singular point of the degenerate conic {self!r} (C x = 0), so it has no polar line"
-            )
-        return Line._from_exact(coords)
+        return Line._from_nonzero(self._image(point.coords), DegenerateConicError, lambda: (
+            f"{point!r} is a singular point of the degenerate conic {self!r} (C x = 0), so it has no polar line"))
 
     def tangent_at(self, point: Point) -> Line:
         """The tangent line ``l = C x`` at a point x of the conic.
@@ -336,7 +201,7 @@ class Conic(_SymmetricForm, kind="conic"):
         """
         require(line, Line, "Conic.pole")
         self._require_nondegenerate("the pole of a line")
-        return Point._from_exact(tuple(sympy.expand(e) for e in _adjugate(self._matrix) * line.vector))
+        return Point._from_exact(tuple(sympy.expand(e) for e in adjugate(self._matrix) * line.vector))
 
     def _require_nondegenerate(self, what: str) -> None:
         if self.is_degenerate:
@@ -358,7 +223,7 @@ class Conic(_SymmetricForm, kind="conic"):
         DualConic([[-1, 0, 0], [0, -1, 0], [0, 0, 1]])
         """
         self._require_nondegenerate("the dual conic of tangent lines")
-        return DualConic._from_exact(_adjugate(self._matrix))
+        return DualConic._from_exact(adjugate(self._matrix))
 
     def restricted_form(self, line: Line) -> tuple[Expr, Expr, Expr]:
         """The quadratic form on a line: ``(A, B, C')`` with ``Q(s p + t q) = A s² + 2B st + C' t²``.
@@ -372,8 +237,7 @@ class Conic(_SymmetricForm, kind="conic"):
         """
         require(line, Line, "Conic.restricted_form")
         p, q = _two_points_on(line)
-        m = self._matrix
-        return _form(m, p.coords, p.coords), _form(m, p.coords, q.coords), _form(m, q.coords, q.coords)
+        return self._form(p.coords, p.coords), self._form(p.coords, q.coords), self._form(q.coords, q.coords)
 
     def discriminant(self, line: Line) -> Expr:
         """``B² - A C'`` of :meth:`restricted_form`: zero when the line meets the conic in a double point.
@@ -432,7 +296,7 @@ class Conic(_SymmetricForm, kind="conic"):
         return Point._from_exact(both[0]), Point._from_exact(both[1])
 
 
-class DualConic(_SymmetricForm, kind="dual_conic"):
+class DualConic(SymmetricForm, kind="dual_conic"):
     """A dual (line) conic: the lines l with ``lᵀ C* l = 0``, from a symmetric 3×3 matrix C*.
 
     Degenerate dual conics are allowed: the dual conic at infinity ``diag(1, 1, 0)``
@@ -445,10 +309,8 @@ class DualConic(_SymmetricForm, kind="dual_conic"):
 
     __slots__ = ()
     _kind = "dual conic"
-
-    def __repr__(self) -> str:
-        rows = ", ".join("[" + ", ".join(_format_entry(e) for e in row) + "]" for row in self._matrix.tolist())
-        return f"DualConic([{rows}])"
+    ambient_dim = 2
+    _covariant = False  # a form on lines: C*' = H C* Hᵀ
 
     def _repr_latex_(self) -> str:
         return f"$C^{{*}} = {self.latex()}$"
@@ -460,7 +322,7 @@ class DualConic(_SymmetricForm, kind="dual_conic"):
         5
         """
         require(line, Line, "DualConic.value")
-        return _form(self._matrix, line.coords, line.coords)
+        return self._form(line.coords, line.coords)
 
     def contains_line(self, line: Line) -> bool:
         """True when ``lᵀ C* l = 0``: for the dual of a conic C, when l is tangent to C.
@@ -483,7 +345,7 @@ class DualConic(_SymmetricForm, kind="dual_conic"):
                 f"{self!r} is degenerate (rank {self.rank}), so its lines are not the tangents of a point conic; "
                 "e.g. the dual conic at infinity consists of the lines through the two circular points"
             )
-        return Conic._from_exact(_adjugate(self._matrix))
+        return Conic._from_exact(adjugate(self._matrix))
 
 
 

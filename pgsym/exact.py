@@ -77,6 +77,7 @@ __all__ = [
     "format_entry",
     "is_zero",
     "latex",
+    "primitive_part",
     "sign",
     "to_exact",
 ]
@@ -530,43 +531,48 @@ def _match(c: Expr, candidates: list[Expr]) -> Expr:
 
 
 # -- canonical form ------------------------------------------------------------------------------
-def canonical_coords(coords: Sequence[Expr]) -> tuple[Expr, ...]:
+def canonical_coords(coords: Sequence[Expr], keep_sign: bool = False) -> tuple[Expr, ...]:
     """The canonical representative of a nonzero homogeneous vector (rules in the module docstring).
+
+    ``keep_sign`` skips the sign step of rules 1 and 2: the result is then the primitive vector
+    reached by a *positive* factor (a basis vector of a null space keeps its direction).
 
     >>> a = sympy.Symbol("a")
     >>> canonical_coords((Rational(1, 2), Rational(-1, 3), 0)), canonical_coords((-2 * a, 4 * a**2))
     ((3, -2, 0), (1, -2*a))
+    >>> canonical_coords((Rational(-1, 2), Rational(1, 3), 0), keep_sign=True)
+    (-3, 2, 0)
     """
     coords = [sympy.together(c) for c in coords]
     if all(c.is_Rational for c in coords):
-        return _canonical_rational(coords)
+        return _canonical_rational(coords, keep_sign)
     if all(_is_rational_function(c) for c in coords):
-        return _canonical_polynomial(coords)
-    return _canonical_algebraic(coords)
+        return _canonical_polynomial(coords, keep_sign)
+    return _canonical_algebraic(coords, keep_sign)
 
 
-def _canonical_rational(coords: list[Expr]) -> tuple[Expr, ...]:
+def _canonical_rational(coords: list[Expr], keep_sign: bool = False) -> tuple[Expr, ...]:
     denominator = sympy.ilcm(*[c.q for c in coords]) if len(coords) > 1 else coords[0].q
     ints = [int(c * denominator) for c in coords]
-    content = math.gcd(*ints)
+    content = math.gcd(*ints) or 1
     ints = [i // content for i in ints]
-    sgn = -1 if next(i for i in ints if i != 0) < 0 else 1
+    sgn = -1 if not keep_sign and next((i for i in ints if i != 0), 0) < 0 else 1
     return tuple(Integer(sgn * i) for i in ints)
 
 
-def _canonical_polynomial(coords: list[Expr]) -> tuple[Expr, ...]:
+def _canonical_polynomial(coords: list[Expr], keep_sign: bool = False) -> tuple[Expr, ...]:
     numerators, denominators = zip(*(sympy.fraction(c) for c in coords), strict=False)
     common = sympy.lcm_list(list(denominators))
     polys = [sympy.expand(sympy.cancel(n * common / d)) for n, d in zip(numerators, denominators, strict=False)]
     content = sympy.gcd_list([p for p in polys if p != 0])
     polys = [sympy.expand(sympy.cancel(p / content)) for p in polys]
     lead = next(p for p in polys if p != 0)
-    if sympy.Poly(lead, *sorted(lead.free_symbols, key=str) or [sympy.Symbol("_")]).LC() < 0:
+    if not keep_sign and sympy.Poly(lead, *sorted(lead.free_symbols, key=str) or [sympy.Symbol("_")]).LC() < 0:
         polys = [-p for p in polys]
     return tuple(polys)
 
 
-def _canonical_algebraic(coords: list[Expr]) -> tuple[Expr, ...]:
+def _canonical_algebraic(coords: list[Expr], keep_sign: bool = False) -> tuple[Expr, ...]:
     for c in coords:
         numerator, denominator = sympy.fraction(c)
         _check_algebraic(numerator, c)
@@ -578,7 +584,36 @@ def _canonical_algebraic(coords: list[Expr]) -> tuple[Expr, ...]:
             sympy.radsimp(c / coords[k])))) for i, c in enumerate(coords)]
     else:
         out = _canonical_algebraic_polynomials(coords, symbols)
-    return canonical_coords(out) if all(_is_rational_function(c) for c in out) else tuple(out)
+    return canonical_coords(out, keep_sign) if all(_is_rational_function(c) for c in out) else tuple(out)
+
+
+def primitive_part(numerators: Sequence[Any], denominators: Sequence[Any] | None = None) -> list[Any]:
+    """The polynomial vector ``n_i / d_i`` with the denominators cleared and the content (gcd) removed.
+
+    Works for the elements of any polynomial ring with ``lcm``, ``gcd`` and ``exquo`` (SymPy's
+    ``Poly`` and ``PolyElement``). A homogeneous object is defined up to scale, so the common
+    factor carries no information; this is the one primitive form of polynomial vectors of the
+    core (:func:`canonical_coords` over number fields, the invariant proofs). The sign (unit) is
+    left as it comes; the zero vector is returned unchanged.
+
+    >>> from sympy.polys.rings import ring
+    >>> R, a, b = ring("a, b", sympy.ZZ)
+    >>> primitive_part([2 * a * b, 4 * a], [R(1), b])     # (2ab, 4a/b) = (2a/b)(b², 2)
+    [b**2, 2]
+    """
+    nums = list(numerators)
+    if denominators is not None:
+        dens = list(denominators)
+        common = dens[0]
+        for d in dens[1:]:
+            if d != common:
+                common = common.lcm(d)
+        nums = [n * common.exquo(d) for n, d in zip(nums, dens, strict=True)]
+    content = None
+    for p in nums:
+        if p:
+            content = p if content is None else content.gcd(p)
+    return nums if content is None else [p.exquo(content) for p in nums]
 
 
 def _canonical_algebraic_polynomials(coords: list[Expr], symbols: list[sympy.Symbol]) -> list[Expr]:
@@ -590,16 +625,7 @@ def _canonical_algebraic_polynomials(coords: list[Expr], symbols: list[sympy.Sym
     except (sympy.polys.polyerrors.PolynomialError, NotImplementedError) as err:
         raise _undecidable(sympy.Tuple(*coords), f"its number field could not be built ({err})") from err
     n = len(coords)
-    nums, dens = polys[:n], polys[n:]
-    common = dens[0]
-    for d in dens[1:]:
-        common = common.lcm(d)
-    vec = [num * common.exquo(den) for num, den in zip(nums, dens, strict=True)]
-    nonzero = [p for p in vec if not p.is_zero]
-    content = nonzero[0]
-    for p in nonzero[1:]:
-        content = content.gcd(p)
-    vec = [p.exquo(content) for p in vec]
+    vec = primitive_part(polys[:n], polys[n:])
     lead = next(p for p in vec if not p.is_zero)
     domain = lead.domain
     lc = domain.from_sympy(lead.LC())

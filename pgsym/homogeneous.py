@@ -15,18 +15,20 @@ Point(1, 2, 3)
 from __future__ import annotations
 
 import numbers
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from fractions import Fraction  # noqa: F401 (doctests)
-from typing import Any, TypeVar
+from typing import Any, ClassVar, TypeVar
 
 import sympy
 from sympy import Expr, Matrix
 
-from .errors import DimensionError, ObjectTypeError, UndecidableError, ZeroVectorError
+from .errors import DimensionError, IdealPointError, ObjectTypeError, UndecidableError, ZeroVectorError
 from .exact import Scalar, all_zero, canonical_coords, format_entry, is_zero, latex, to_exact
 from .kinds import Kind
+from .matrices import proportional
+from .ring import dot
 
-__all__ = ["HomogeneousVector", "is_zero", "to_exact"]
+__all__ = ["HomogeneousHyperplane", "HomogeneousPoint", "HomogeneousVector", "is_zero", "to_exact"]
 
 _format_entry = format_entry  # the name the other modules import
 
@@ -54,6 +56,10 @@ class HomogeneousVector(Kind):
 
     size: int = 3
     _kind: str = "vector"
+    # the n of the space Pⁿ the object lives in (None: not acted on by transformations), and whether it
+    # transforms like a point (x' = H x) or covariantly like a line or plane (l' ∝ H⁻ᵀ l)
+    ambient_dim: ClassVar[int | None] = None
+    _covariant: ClassVar[bool] = False
 
     __slots__ = ("_coords",)
 
@@ -81,6 +87,18 @@ class HomogeneousVector(Kind):
         obj = cls.__new__(cls)
         obj._coords = cls._check(coords)
         return obj
+
+    @classmethod
+    def _from_nonzero(
+        cls: type[_V], coords: tuple[Expr, ...], error: type[Exception], message: Callable[[], str]
+    ) -> _V:
+        """Build from computed coordinates that vanish exactly for a degenerate input: then raise ``error``.
+
+        ``message`` is called only then (the reprs in it are costly for symbolic objects).
+        """
+        if all_zero(coords):
+            raise error(message())
+        return cls._from_exact(coords)
 
     # -- access ---------------------------------------------------------------
     @property
@@ -114,11 +132,8 @@ class HomogeneousVector(Kind):
     # -- projective equality ----------------------------------------------------
     def is_proportional(self, other: HomogeneousVector) -> bool:
         """True when the two vectors differ by a nonzero factor (all 2×2 minors vanish)."""
-        a, b = self._coords, other._coords
-        if len(a) != len(b):
-            return False
         try:
-            return all(is_zero(a[i] * b[j] - a[j] * b[i]) for i in range(len(a)) for j in range(i + 1, len(a)))
+            return proportional(self._coords, other._coords)
         except UndecidableError as err:
             raise UndecidableError(f"cannot decide whether {self!r} and {other!r} are equal: {err}") from err
 
@@ -149,6 +164,11 @@ class HomogeneousVector(Kind):
         """
         return type(self)._from_exact(canonical_coords(self._coords))
 
+    # -- action of a transformation ----------------------------------------------------------------
+    def _transformed_by(self: _V, H: Any) -> _V:
+        """The image under the transformation ``H`` (checked by ``H.apply``): ``H x``, or ``adj(H)ᵀ l`` if covariant."""
+        return type(self)._from_exact(H.map_vector(self._coords, self._covariant))
+
     # -- rendering ----------------------------------------------------------------
     def __repr__(self) -> str:
         return f"{type(self).__name__}({', '.join(_format_entry(c) for c in self._coords)})"
@@ -162,6 +182,94 @@ class HomogeneousVector(Kind):
     def latex(self) -> str:
         """LaTeX of the coordinates as a column vector (without math delimiters)."""
         return r"\begin{bmatrix}" + r" \\ ".join(self._latex_entries()) + r"\end{bmatrix}"
+
+
+class HomogeneousPoint(HomogeneousVector):
+    """A point of Pⁿ (``size`` n + 1): a finite point may be given by its n inhomogeneous coordinates
+    (a 1 is appended), and the point is ideal when its last coordinate is zero.
+
+    >>> from pgsym import Point, Point3
+    >>> Point(2, 4, 2).dehomogenize(), Point3(1, 2, 3, 0).is_ideal, Point3(1, 2, 3).is_ideal
+    ((1, 2), True, False)
+    >>> Point(1, 1, 0).dehomogenize()  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    pgsym.errors.IdealPointError: Point(1, 1, 0) is an ideal point (x3 = 0) and has no ...
+    """
+
+    __slots__ = ()
+    _inhomogeneous: ClassVar[str] = "(x, y)"  # how errors name the inhomogeneous coordinates
+
+    @classmethod
+    def _complete(cls, coords: tuple[Scalar, ...]) -> tuple[Scalar, ...]:
+        n = cls.size
+        if len(coords) == n - 1:
+            return (*coords, 1)
+        if len(coords) != n:
+            names = ", ".join(f"x{i + 1}" for i in range(n))
+            raise DimensionError(
+                f"a {cls._kind} takes {n - 1} inhomogeneous coordinate{'s' if n > 2 else ''} {cls._inhomogeneous} "
+                f"or {n} homogeneous ones ({names}), got {len(coords)}: {coords}"
+            )
+        return coords
+
+    @property
+    def is_ideal(self) -> bool:
+        """True for a point at infinity (last coordinate zero)."""
+        return is_zero(self._coords[-1])
+
+    def dehomogenize(self) -> Any:
+        """The inhomogeneous coordinates ``(x1/xₙ₊₁, …, xₙ/xₙ₊₁)``; an ideal point raises :class:`IdealPointError`."""
+        *xs, w = self._coords
+        if self.is_ideal:
+            raise IdealPointError(
+                f"{self!r} is an ideal point (x{self.size} = 0) and has no inhomogeneous coordinates; "
+                f"its direction is ({', '.join(str(x) for x in xs)})"
+            )
+        return tuple(sympy.cancel(x / w) for x in xs)
+
+
+class HomogeneousHyperplane(HomogeneousVector):
+    """A line of P² or a plane of P³: ``(n, d)`` with Euclidean normal ``n``; it maps covariantly, by ``H⁻ᵀ``.
+
+    Printed as a row vector, so that ``lᵀx`` reads as a row times a column.
+
+    >>> from pgsym import Line, Plane
+    >>> Line(3, 4, 5).normal, Plane(0, 0, 0, 2).is_at_infinity, Line(1, 0, 0).is_at_infinity
+    ((3, 4), True, False)
+    """
+
+    __slots__ = ()
+    _covariant = True  # l' ∝ H⁻ᵀ l keeps the incidence lᵀx = 0
+
+    @property
+    def normal(self) -> tuple[Expr, ...]:
+        """The Euclidean normal vector: every coordinate but the last (zero only for the one at infinity)."""
+        return self._coords[:-1]
+
+    @property
+    def is_at_infinity(self) -> bool:
+        """True for the line (plane) at infinity ``(0, …, 0, 1)``."""
+        return all_zero(self._coords[:-1])
+
+    def latex(self) -> str:
+        """LaTeX of the coordinates as a row vector (without math delimiters)."""
+        return r"\begin{bmatrix}" + " & ".join(self._latex_entries()) + r"\end{bmatrix}"
+
+
+def incidence(point: Any, hyperplane: Any, point_cls: type, hyperplane_cls: type) -> bool:
+    """``lᵀx = 0`` exactly, for a point and a hyperplane given in either order (incidence is symmetric).
+
+    >>> from pgsym import Line, Point
+    >>> incidence(Line(1, -1, 0), Point(2, 2), Point, Line)
+    True
+    """
+    if isinstance(point, hyperplane_cls) and isinstance(hyperplane, point_cls):
+        point, hyperplane = hyperplane, point
+    pair = f" (a {point_cls.__name__} and a {hyperplane_cls.__name__})"
+    require(point, point_cls, "incident", pair)
+    require(hyperplane, hyperplane_cls, "incident", pair)
+    return is_zero(sympy.expand(dot(point.coords, hyperplane.coords)))
 
 
 def _is_sequence(value: Any) -> bool:

@@ -34,8 +34,9 @@ from sympy import ZZ, Rational
 from sympy.polys.rings import PolyElement, ring
 
 from .errors import DegenerateConfigurationError, IdealPointError, ObjectTypeError, UndefinedCrossRatioError
-from .exact import is_zero
+from .exact import is_zero, primitive_part
 from .hierarchy import CLASSES_2D, CLASSES_3D, TransformationClass, class_by_key, classify
+from .ring import adjugate, cross, det, dot, matmul, matvec, transpose
 
 __all__ = [
     "INVARIANTS",
@@ -101,67 +102,16 @@ class _Q:
     def is_zero(self) -> bool:
         return not self.n
 
+    def __bool__(self) -> bool:  # lets pgsym.ring skip zero terms, as it does for numbers
+        return bool(self.n)
+
 
 def _nonzero(x: Any) -> bool:
     return not x.is_zero() if isinstance(x, _Q) else not is_zero(sympy.sympify(x))
 
 
-def _literal_zero(x: Any) -> bool:
-    return x.is_zero() if isinstance(x, _Q) else (x == 0) is True
-
-
 def _ex(v: Sequence[Any]) -> list[Any]:
     return [x if isinstance(x, _Q) else sympy.sympify(x) for x in v]
-
-
-# -- small exact linear algebra on lists (works for _Q, SymPy numbers and symbols alike) ----------
-def _mv(M: Sequence[Sequence[Any]], v: Sequence[Any]) -> list[Any]:
-    return [sum((M[i][j] * v[j] for j in range(len(v))), 0) for i in range(len(M))]
-
-
-def _mm(A: Sequence[Sequence[Any]], B: Sequence[Sequence[Any]]) -> list[list[Any]]:
-    return [[sum((A[i][k] * B[k][j] for k in range(len(B))), 0) for j in range(len(B[0]))] for i in range(len(A))]
-
-
-def _tr(A: Sequence[Sequence[Any]]) -> list[list[Any]]:
-    return [list(r) for r in zip(*A, strict=True)]
-
-
-def _det(M: Sequence[Sequence[Any]]) -> Any:
-    n = len(M)
-    if n == 1:
-        return M[0][0]
-    if n == 2:
-        return M[0][0] * M[1][1] - M[0][1] * M[1][0]
-    total: Any = 0
-    for j in range(n):
-        if not _literal_zero(M[0][j]):
-            minor = [[M[i][k] for k in range(n) if k != j] for i in range(1, n)]
-            term = M[0][j] * _det(minor)
-            total = total + term if j % 2 == 0 else total - term
-    return total
-
-
-def _cof(M: Sequence[Sequence[Any]]) -> list[list[Any]]:
-    """The cofactor matrix ``adj(M)ᵀ``: maps lines/planes, since ``adj(M)ᵀ ∝ M⁻ᵀ``."""
-    n = len(M)
-    out = []
-    for i in range(n):
-        row = []
-        for j in range(n):
-            minor = [[M[r][c] for c in range(n) if c != j] for r in range(n) if r != i]
-            d = _det(minor)
-            row.append(d if (i + j) % 2 == 0 else -d)
-        out.append(row)
-    return out
-
-
-def _cross(u: Sequence[Any], v: Sequence[Any]) -> list[Any]:
-    return [u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]]
-
-
-def _dot(u: Sequence[Any], v: Sequence[Any]) -> Any:
-    return sum((a * b for a, b in zip(u, v, strict=True)), 0)
 
 
 def _finite_w(x: Sequence[Any]) -> Any:
@@ -195,7 +145,7 @@ def signed_area(p: Sequence[Any], q: Sequence[Any], r: Sequence[Any]) -> Any:
     1/2
     """
     p, q, r = _ex(p), _ex(q), _ex(r)
-    return _det(_tr([p, q, r])) / (2 * _finite_w(p) * _finite_w(q) * _finite_w(r))
+    return det(transpose([p, q, r])) / (2 * _finite_w(p) * _finite_w(q) * _finite_w(r))
 
 
 def signed_volume(p: Sequence[Any], q: Sequence[Any], r: Sequence[Any], s: Sequence[Any]) -> Any:
@@ -205,7 +155,7 @@ def signed_volume(p: Sequence[Any], q: Sequence[Any], r: Sequence[Any], s: Seque
     1/6
     """
     p, q, r, s = _ex(p), _ex(q), _ex(r), _ex(s)
-    return -_det(_tr([p, q, r, s])) / (6 * _finite_w(p) * _finite_w(q) * _finite_w(r) * _finite_w(s))
+    return -det(transpose([p, q, r, s])) / (6 * _finite_w(p) * _finite_w(q) * _finite_w(r) * _finite_w(s))
 
 
 def cos2_angle(l: Sequence[Any], m: Sequence[Any]) -> Any:
@@ -215,12 +165,12 @@ def cos2_angle(l: Sequence[Any], m: Sequence[Any]) -> Any:
     1/2
     """
     u, v = _ex(l[:-1]), _ex(m[:-1])
-    uu, vv = _dot(u, u), _dot(v, v)
+    uu, vv = dot(u, u), dot(v, v)
     if not (_nonzero(uu) and _nonzero(vv)):
         raise DegenerateConfigurationError(
             "an angle needs two ordinary lines (planes) with real directions: the line (plane) at infinity "
             "and isotropic lines have a normal of zero length")
-    return _dot(u, v) * _dot(u, v) / (uu * vv)
+    return dot(u, v) * dot(u, v) / (uu * vv)
 
 
 def collinear_cross_ratio(a: Sequence[Any], b: Sequence[Any], c: Sequence[Any], d: Sequence[Any]) -> Any:
@@ -233,13 +183,13 @@ def collinear_cross_ratio(a: Sequence[Any], b: Sequence[Any], c: Sequence[Any], 
     4/3
     """
     a, b, c, d = _ex(a), _ex(b), _ex(c), _ex(d)
-    base = _cross(a, b)
+    base = cross(a, b)
     k = next((i for i in range(3) if _nonzero(base[i])), None)
     if k is None:
         raise UndefinedCrossRatioError("the cross-ratio needs A ≠ B: the first two points coincide")
 
     def br(x: Sequence[Any], y: Sequence[Any]) -> Any:
-        return _cross(x, y)[k]
+        return cross(x, y)[k]
 
     denominator = br(a, d) * br(b, c)
     if not _nonzero(denominator):
@@ -250,41 +200,30 @@ def collinear_cross_ratio(a: Sequence[Any], b: Sequence[Any], c: Sequence[Any], 
 # -- configurations and their images ------------------------------------------------------------------
 # A configuration is a tuple of (tag, data): "P" point (vector), "L" line / plane (covector),
 # "D" dual conic/quadric (matrix, H D Hᵀ), "C" conic/quadric (matrix, cof C cofᵀ).
-def _primitive(entries: list[Any]) -> list[Any]:
-    """A homogeneous object with polynomial entries, divided by the content of its entries.
+def _primitive(entries: Sequence[Any]) -> list[Any]:
+    """A homogeneous object with polynomial entries in its primitive form (:func:`pgsym.exact.primitive_part`).
 
     Projective objects are defined up to scale, so the common polynomial factor carries no
     information; removing it keeps the proof polynomials small. Non-polynomial data is returned unchanged.
     """
     if not entries or not all(isinstance(e, _Q) for e in entries):
-        return entries
-    common = entries[0].d
-    for e in entries[1:]:
-        if e.d != common:
-            common = common.lcm(e.d)
-    nums = [e.n * common.exquo(e.d) for e in entries]
-    g = None
-    for x in nums:
-        if x:
-            g = x if g is None else g.gcd(x)
-    if g is None:
-        return entries
-    one = g.ring.one
-    return [_Q(x.exquo(g), one) for x in nums]
+        return list(entries)
+    one = entries[0].n.ring.one
+    return [_Q(x, one) for x in primitive_part([e.n for e in entries], [e.d for e in entries])]
 
 
 def _act(H: Sequence[Sequence[Any]], config: Sequence[tuple[str, Any]]) -> list[tuple[str, Any]]:
-    cof: list[list[Any]] | None = None
+    cof: Any = None
     out: list[tuple[str, Any]] = []
     for tag, data in config:
         if tag in "LC" and cof is None:
-            cof = _cof(H)
+            cof = transpose(adjugate(H))  # adj(H)ᵀ ∝ H⁻ᵀ maps lines and planes
         if tag == "P":
-            out.append((tag, _mv(H, data)))
+            out.append((tag, matvec(H, data)))
         elif tag == "L":
-            out.append((tag, _primitive(_mv(cof, data))))  # type: ignore[arg-type]
+            out.append((tag, _primitive(matvec(cof, data))))  # type: ignore[arg-type]
         else:
-            m = _mm(_mm(H, data), _tr(H)) if tag == "D" else _mm(_mm(cof, data), _tr(cof))  # type: ignore[arg-type]
+            m = matmul(matmul(H, data), transpose(H)) if tag == "D" else matmul(matmul(cof, data), transpose(cof))  # type: ignore[arg-type]
             flat = _primitive([e for row in m for e in row])
             n = len(m)
             out.append((tag, [flat[i * n : (i + 1) * n] for i in range(n)]))
@@ -356,7 +295,7 @@ def _c_four_on_a_line(new: New) -> list:
 def _c_incident(new: New) -> list:
     l = [new(), new(), new()]
     v = [new(), new(), new()]
-    return [("P", _cross(l, v)), ("L", l)]
+    return [("P", cross(l, v)), ("L", l)]
 
 
 def _c_tangent(new: New) -> list:
@@ -366,7 +305,7 @@ def _c_tangent(new: New) -> list:
     rest = c00 * x[0] * x[0] + 2 * c01 * x[0] * x[1] + c11 * x[1] * x[1] + 2 * c02 * x[0] * x[2] + 2 * c12 * x[1] * x[2]
     c22 = -rest / (x[2] * x[2])
     C = [[c00, c01, c02], [c01, c11, c12], [c02, c12, c22]]
-    return [("P", x), ("C", C), ("L", _mv(C, x))]
+    return [("P", x), ("C", C), ("L", matvec(C, x))]
 
 
 def _c_coplanar(new: New) -> list:
@@ -429,17 +368,17 @@ def _v_parallel_ratio(c: list) -> list:
     p, q, r, s = (_euclid(x) for x in _data(c))
     u = [b - a for a, b in zip(p, q, strict=True)]
     w = [b - a for a, b in zip(r, s, strict=True)]
-    return [_dot(w, u) / _dot(u, u), u[0] * w[1] - u[1] * w[0]]
+    return [dot(w, u) / dot(u, u), u[0] * w[1] - u[1] * w[0]]
 
 
 def _v_meet_at_infinity(c: list) -> list:
     l, m = _data(c)
-    return [_cross(l, m)[2]]
+    return [cross(l, m)[2]]
 
 
 def _v_normals_parallel(c: list) -> list:
     l, m = _data(c)
-    return _cross(l[:3], m[:3])
+    return list(cross(l[:3], m[:3]))
 
 
 def _v_at_infinity(c: list) -> list:
@@ -454,7 +393,7 @@ def _v_absolute(c: list) -> list:
 
 
 def _v_det(c: list) -> list:
-    return [_det(_tr(_data(c)))]
+    return [det(transpose(_data(c)))]
 
 
 def _v_cross_ratio(c: list) -> list:
@@ -463,12 +402,12 @@ def _v_cross_ratio(c: list) -> list:
 
 def _v_incidence(c: list) -> list:
     x, l = _data(c)
-    return [_dot(l, x)]
+    return [dot(l, x)]
 
 
 def _v_tangency(c: list) -> list:
     x, C, l = _data(c)
-    return [_dot(x, _mv(C, x)), *_cross(_mv(C, x), l)]
+    return [dot(x, matvec(C, x)), *cross(matvec(C, x), l)]
 
 
 # -- invariants -----------------------------------------------------------------------------------------

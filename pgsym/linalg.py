@@ -27,15 +27,14 @@ names, loaded on first use so that this module does not import NumPy:
 
 from __future__ import annotations
 
-import math
 import numbers
 import sys
-from collections.abc import Sequence
 from typing import Any
 
 import sympy
 from sympy import Expr, Matrix
 
+from . import matrices
 from .errors import (
     CollinearPointsError,
     DegenerateConfigurationError,
@@ -43,7 +42,9 @@ from .errors import (
     DimensionError,
     ZeroCoordinateError,
 )
-from .homogeneous import is_zero, to_exact
+from .exact import canonical_coords
+from .homogeneous import is_zero
+from .matrices import exact_matrix, is_zero_entry
 
 __all__ = [
     "ZeroCoordinateError",
@@ -56,40 +57,9 @@ __all__ = [
 # -- exact ---------------------------------------------------------------------------------------------
 
 
-def _exact_matrix(M: Any, name: str = "M") -> Matrix:
-    """Coerce a matrix-like input (nested sequences, rows of homogeneous vectors, SymPy or numpy) exactly."""
-    if isinstance(M, sympy.MatrixBase):
-        rows = M.tolist()
-    else:
-        if _is_ndarray(M):
-            M = M.tolist()
-        try:
-            rows = [list(r) for r in M]
-        except TypeError:
-            raise DimensionError(
-                f"{name} must be a matrix (a sequence of rows), got {type(M).__name__} {M!r}"
-            ) from None
-    if not rows or not rows[0]:
-        raise DimensionError(f"{name} must have at least one row and one column, got {M!r}")
-    width = len(rows[0])
-    if any(len(r) != width for r in rows):
-        raise DimensionError(f"the rows of {name} must all have the same length, got lengths {[len(r) for r in rows]}")
-    return Matrix([[to_exact(v) for v in r] for r in rows])
-
-
-def _is_zero_entry(value: Any) -> bool:
-    return is_zero(sympy.sympify(value))
-
-
-def _primitive(vector: Sequence[Expr]) -> tuple[Expr, ...]:
-    """Scale a rational vector by a positive factor to coprime integers; other vectors are returned as they are."""
-    entries = [sympy.sympify(v) for v in vector]
-    if not all(v.is_Rational for v in entries):
-        return tuple(sympy.cancel(v) for v in entries)
-    denominator = sympy.ilcm(*[v.q for v in entries]) if len(entries) > 1 else entries[0].q
-    ints = [int(v * denominator) for v in entries]
-    content = math.gcd(*ints) or 1
-    return tuple(sympy.Integer(i // content) for i in ints)
+def _exact_matrix(M: Any) -> Matrix:
+    """The system matrix, exactly (rows may be homogeneous vectors); a mutable copy for row operations."""
+    return Matrix(exact_matrix(M, what="M"))
 
 
 def nullspace_exact(M: Any) -> list[tuple[Expr, ...]]:
@@ -108,8 +78,8 @@ def nullspace_exact(M: Any) -> list[tuple[Expr, ...]]:
     []
     """
     matrix = _exact_matrix(M)
-    basis = matrix.nullspace(iszerofunc=_is_zero_entry)
-    return [_primitive(list(v)) for v in basis]
+    basis = matrix.nullspace(iszerofunc=is_zero_entry)
+    return [canonical_coords(list(v), keep_sign=True) for v in basis]
 
 
 def rank_exact(M: Any) -> int:
@@ -118,7 +88,7 @@ def rank_exact(M: Any) -> int:
     >>> rank_exact([[1, 2, 3, 4], [2, 4, 6, 8], [0, 0, 1, 1]])
     2
     """
-    return int(_exact_matrix(M).rank(iszerofunc=_is_zero_entry))
+    return matrices.rank(_exact_matrix(M))
 
 
 def solve_by_fixing_coordinate(M: Any, index: int = 3) -> tuple[Expr, ...]:

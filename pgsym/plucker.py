@@ -67,6 +67,7 @@ from .errors import (
 )
 from .exact import all_zero, latex
 from .homogeneous import HomogeneousVector, Scalar, is_zero, require, to_exact
+from .matrices import exact_matrix
 from .projective_line import Point1, cross_ratio
 from .space import Plane, Point3
 
@@ -135,6 +136,7 @@ class Line3(HomogeneousVector, kind="line3"):
 
     size = 6
     _kind = "line of P³ (six Plücker coordinates l12, l13, l14, l23, l42, l34)"
+    ambient_dim = 3
     __slots__ = ()
 
     @classmethod
@@ -160,6 +162,10 @@ class Line3(HomogeneousVector, kind="line3"):
         obj._coords = coords
         return obj
 
+
+    def _transformed_by(self, H: Any) -> Line3:
+        """The image line: the Plücker matrix maps like a dual conic, ``L' = H L Hᵀ`` (``L = A Bᵀ − B Aᵀ``)."""
+        return type(self).from_matrix(H.map_form(self.matrix))
 
     # -- constructions ------------------------------------------------------------------------
     @classmethod
@@ -338,13 +344,9 @@ class Line3(HomogeneousVector, kind="line3"):
         Point3(2, 2, 2, 1)
         """
         require(plane, Plane, "Line3.intersect_plane", "; use Line3.plane_through_point for a point")
-        coords = tuple(sympy.expand(e) for e in self.matrix * plane.vector)
-        if all_zero(coords):
-            raise DependentPlanesError(
-                f"the line {self!r} lies in the plane {plane!r}, so they share every point of the line "
-                f"instead of meeting in one; choose a plane that does not contain the line"
-            )
-        return Point3._from_exact(coords)
+        return Point3._from_nonzero(_times(self.matrix, plane), DependentPlanesError, lambda: (
+            f"the line {self!r} lies in the plane {plane!r}, so they share every point of the line "
+            "instead of meeting in one; choose a plane that does not contain the line"))
 
     def plane_through_point(self, point: Point3) -> Plane:
         """The plane spanned by the line and ``point``: ``π = L* X``.
@@ -356,13 +358,9 @@ class Line3(HomogeneousVector, kind="line3"):
         Plane(0, 0, 1, 0)
         """
         require(point, Point3, "Line3.plane_through_point", "; use Line3.intersect_plane for a plane")
-        coords = tuple(sympy.expand(e) for e in self.dual_matrix * point.vector)
-        if all_zero(coords):
-            raise CollinearPointsError(
-                f"the point {point!r} lies on the line {self!r}, so infinitely many planes contain both; "
-                f"choose a point off the line"
-            )
-        return Plane._from_exact(coords)
+        return Plane._from_nonzero(_times(self.dual_matrix, point), CollinearPointsError, lambda: (
+            f"the point {point!r} lies on the line {self!r}, so infinitely many planes contain both; "
+            "choose a point off the line"))
 
     def meets(self, other: Line3) -> bool:
         """True when the two lines are coplanar, i.e. meet in a point (possibly ideal) or coincide.
@@ -493,13 +491,7 @@ def cross_ratio_planes(p1: Plane, p2: Plane, p3: Plane, p4: Plane) -> Expr:
 
 
 def _square4(matrix: Any, what: str) -> ImmutableMatrix:
-    try:
-        m = sympy.Matrix(matrix)
-    except (TypeError, ValueError, sympy.SympifyError) as err:
-        raise DimensionError(f"a {what} is a 4×4 matrix, got {matrix!r}") from err
-    if m.shape != (4, 4):
-        raise DimensionError(f"a {what} is a 4×4 matrix, got shape {m.shape}")
-    m = m.applyfunc(to_exact)
+    m = exact_matrix(matrix, shape=(4, 4), what=f"a {what}")
     if not all(is_zero(m[i, j] + m[j, i]) for i in range(4) for j in range(i, 4)):
         raise NotSkewSymmetricError(
             f"a {what} is skew-symmetric (its transpose is its negative), and this one is not:\n{m}\n"
@@ -507,7 +499,12 @@ def _square4(matrix: Any, what: str) -> ImmutableMatrix:
         )
     if all_zero(m):
         raise ZeroVectorError(f"the zero matrix is no {what}: a line needs a nonzero matrix of rank 2")
-    return ImmutableMatrix(m)
+    return m
+
+
+def _times(m: ImmutableMatrix, x: HomogeneousVector) -> tuple[Expr, ...]:
+    """``M x``, expanded."""
+    return tuple(sympy.expand(e) for e in m * x.vector)
 
 
 def _coords_of(m: ImmutableMatrix) -> tuple[Expr, ...]:

@@ -32,20 +32,21 @@ from collections.abc import Iterable, Sequence
 from typing import Any
 
 import sympy
-from sympy import Expr, ImmutableMatrix, Integer, Matrix
+from sympy import Expr, Integer, Matrix
 
+from . import ring
 from .errors import (
     CoincidentPointsError,
     DegenerateConfigurationError,
     DimensionError,
     IdealPointError,
     ObjectTypeError,
-    SingularTransformationError,
     UndefinedCrossRatioError,
 )
-from .exact import latex
-from .homogeneous import HomogeneousVector, Scalar, _format_entry, is_zero, to_exact
+from .homogeneous import HomogeneousPoint, is_zero
+from .matrices import adjugate, expanded
 from .projective_plane import Line
+from .transformations import Transformation
 
 __all__ = [
     "Point1",
@@ -57,7 +58,7 @@ __all__ = [
 ]
 
 
-class Point1(HomogeneousVector, kind="point1"):
+class Point1(HomogeneousPoint, kind="point1"):
     """A point of the projective line P¹.
 
     ``Point1(x)`` is the finite point with coordinate ``x``, stored as ``(x, 1)``;
@@ -74,27 +75,9 @@ class Point1(HomogeneousVector, kind="point1"):
 
     size = 2
     _kind = "point of P¹"
+    _inhomogeneous = "x"
+    ambient_dim = 1
     __slots__ = ()
-
-    @classmethod
-    def _complete(cls, coords: tuple[Scalar, ...]) -> tuple[Scalar, ...]:
-        if len(coords) == 1:
-            return (coords[0], 1)
-        if len(coords) != 2:
-            raise DimensionError(
-                f"a point of P¹ takes 1 inhomogeneous coordinate x or 2 homogeneous ones (x1, x2), "
-                f"got {len(coords)}: {coords}"
-            )
-        return coords
-
-    @property
-    def is_ideal(self) -> bool:
-        """True for the point at infinity ``(1, 0)`` (second coordinate zero).
-
-        >>> Point1(2).is_ideal, Point1(-3, 0).is_ideal
-        (False, True)
-        """
-        return is_zero(self._coords[1])
 
     def dehomogenize(self) -> Expr:
         """The inhomogeneous coordinate ``x1 / x2``.
@@ -106,13 +89,12 @@ class Point1(HomogeneousVector, kind="point1"):
         ...
         pgsym.errors.IdealPointError: Point1(1, 0) is the ideal point of P¹ ...
         """
-        x1, x2 = self._coords
         if self.is_ideal:
             raise IdealPointError(
                 f"{self!r} is the ideal point of P¹ (x2 = 0) and has no inhomogeneous coordinate; "
                 "test .is_ideal first, or work with the homogeneous coordinates"
             )
-        return sympy.cancel(x1 / x2)
+        return sympy.cancel(self._coords[0] / self._coords[1])
 
 
 def _as_point1(obj: Any, operation: str) -> Point1:
@@ -235,108 +217,43 @@ def harmonic_conjugate(a: Point1, b: Point1, c: Point1) -> Point1:
     return Point1._from_exact(coords)
 
 
-def _as_matrix2(matrix: Any) -> ImmutableMatrix:
-    try:
-        rows = [list(row) for row in (matrix.tolist() if hasattr(matrix, "tolist") else matrix)]
-    except TypeError as err:
-        raise DimensionError(f"a map of P¹ needs a 2×2 matrix (a list of two rows of two), got {matrix!r}") from err
-    if len(rows) != 2 or any(len(r) != 2 for r in rows):
-        raise DimensionError(f"a map of P¹ needs a 2×2 matrix (a list of two rows of two), got {matrix!r}")
-    return ImmutableMatrix([[to_exact(e) for e in r] for r in rows])
-
-
-class ProjectiveMap1:
+class ProjectiveMap1(Transformation):
     """A projective transformation of P¹: an invertible 2×2 matrix H up to scale, acting by ``x ↦ H x``.
 
-    On finite points it is the Möbius map ``x ↦ (h11 x + h12) / (h21 x + h22)``. It has
-    4 - 1 = 3 degrees of freedom, so three point pairs fix it
-    (:meth:`from_pairs`). ``F @ G`` is the composition "first G, then F";
-    ``F @ point`` applies F. Equality is up to scale.
+    It is a :class:`~pgsym.transformations.Transformation` of dimension 1 (inverse, ``@``,
+    ``==`` up to scale, hashing and ``repr`` are those of every transformation) that also takes
+    numbers as the finite points they name and is fixed by three point pairs (:meth:`from_pairs`).
+    On finite points it is the Möbius map ``x ↦ (h11 x + h12) / (h21 x + h22)``, with
+    4 - 1 = 3 degrees of freedom. ``F @ G`` is the composition "first G, then F";
+    ``F @ point`` applies F.
 
     >>> H = ProjectiveMap1([[1, 1], [0, 1]])     # x -> x + 1
-    >>> H.apply(Point1(2)), H(Point1(1, 0))
-    (Point1(3, 1), Point1(1, 0))
+    >>> H.apply(Point1(2)), H(Point1(1, 0)), H(5)
+    (Point1(3, 1), Point1(1, 0), Point1(6, 1))
+    >>> H == Transformation([[2, 2], [0, 2]])
+    True
     >>> ProjectiveMap1([[1, 2], [2, 4]])  # doctest: +ELLIPSIS
     Traceback (most recent call last):
     ...
     pgsym.errors.SingularTransformationError: the matrix [[1, 2], [2, 4]] is singular ...
     """
 
-    __slots__ = ("_matrix",)
+    __slots__ = ()
+    _shape = (2, 2)
+    _what = "the matrix of a map of P¹"
+    _default_dim = 1
 
-    def __init__(self, matrix: Any) -> None:
-        m = _as_matrix2(matrix)
-        if is_zero(m.det()):
-            raise SingularTransformationError(
-                f"the matrix {m.tolist()} is singular (determinant 0), so it maps P¹ onto a single point "
-                "and is no projective map; use an invertible 2×2 matrix"
-            )
-        self._matrix = m
-
-    @property
-    def matrix(self) -> ImmutableMatrix:
-        """The 2×2 matrix H (one representative of the scale class)."""
-        return self._matrix
-
-    @property
-    def det(self) -> Expr:
-        """The determinant of the stored representative."""
-        return sympy.expand(self._matrix.det())
-
-    def apply(self, point: Point1) -> Point1:
+    def apply(self, point: Any) -> Any:
         """The image ``H x`` of a point (numbers are read as finite points).
 
         >>> ProjectiveMap1([[0, 1], [1, 0]]).apply(Point1(4))   # x -> 1/x
         Point1(1, 4)
-        """
-        p = _as_point1(point, "ProjectiveMap1.apply")
-        h = self._matrix
-        return Point1._from_exact(
-            (sympy.expand(h[0, 0] * p[0] + h[0, 1] * p[1]), sympy.expand(h[1, 0] * p[0] + h[1, 1] * p[1]))
-        )
-
-    __call__ = apply
-
-    def __matmul__(self, other: Any) -> Any:
-        if isinstance(other, ProjectiveMap1):
-            return ProjectiveMap1._from_exact(ImmutableMatrix((self._matrix * other._matrix).applyfunc(sympy.expand)))
-        if isinstance(other, Point1):
-            return self.apply(other)
-        return NotImplemented
-
-    @classmethod
-    def _from_exact(cls, m: ImmutableMatrix) -> ProjectiveMap1:
-        obj = cls.__new__(cls)
-        obj._matrix = m
-        return obj
-
-    def inverse(self) -> ProjectiveMap1:
-        """The inverse map, represented by the adjugate ``adj H = det(H) H⁻¹`` (no division).
-
-        >>> H = ProjectiveMap1([[2, 1], [1, 1]])
-        >>> H.inverse().matrix.tolist()
+        >>> ProjectiveMap1([[2, 1], [1, 1]]).inverse().matrix.tolist()   # the adjugate: no division
         [[1, -1], [-1, 2]]
-        >>> (H @ H.inverse()) == ProjectiveMap1([[1, 0], [0, 1]])
-        True
         """
-        (a, b), (c, d) = self._matrix.tolist()
-        return ProjectiveMap1._from_exact(ImmutableMatrix([[d, -b], [-c, a]]))
-
-    def __eq__(self, other: object) -> bool:
-        if not isinstance(other, ProjectiveMap1):
-            return NotImplemented
-        u, v = list(self._matrix), list(other._matrix)
-        return all(is_zero(u[i] * v[j] - u[j] * v[i]) for i in range(4) for j in range(i + 1, 4))
-
-    def __hash__(self) -> int:
-        return hash(("ProjectiveMap1", 2))
-
-    def __repr__(self) -> str:
-        rows = ", ".join("[" + ", ".join(_format_entry(e) for e in row) + "]" for row in self._matrix.tolist())
-        return f"ProjectiveMap1([{rows}])"
-
-    def _repr_latex_(self) -> str:
-        return f"${latex(Matrix(self._matrix))}$"
+        if isinstance(point, (numbers.Number, Expr)) and not isinstance(point, bool):
+            point = _as_point1(point, "ProjectiveMap1.apply")
+        return super().apply(point)
 
     @classmethod
     def from_pairs(cls, pairs: Iterable[tuple[Point1, Point1]]) -> ProjectiveMap1:
@@ -359,11 +276,7 @@ class ProjectiveMap1:
             )
         sources = [_as_point1(p, "from_pairs") for p, _ in pairs]
         targets = [_as_point1(q, "from_pairs") for _, q in pairs]
-        m_src = _frame(sources, "source")
-        m_dst = _frame(targets, "target")
-        (a, b), (c, d) = m_src.tolist()
-        adj = Matrix([[d, -b], [-c, a]])
-        return cls._from_exact(ImmutableMatrix((m_dst * adj).applyfunc(sympy.expand)))
+        return cls(expanded(_frame(targets, "target") * adjugate(_frame(sources, "source"))))
 
 
 def _frame(points: list[Point1], role: str) -> Matrix:
@@ -379,7 +292,7 @@ def _frame(points: list[Point1], role: str) -> Matrix:
 
 
 def _det3(u: Sequence[Expr], v: Sequence[Expr], w: Sequence[Expr]) -> Expr:
-    return sympy.expand(Matrix([list(u), list(v), list(w)]).det(method="bareiss"))
+    return sympy.expand(ring.det([tuple(u), tuple(v), tuple(w)]))
 
 
 def cross_ratio_lines(l1: Line, l2: Line, l3: Line, l4: Line) -> Expr:

@@ -21,18 +21,25 @@ from __future__ import annotations
 from collections.abc import Sequence
 
 import sympy
-from sympy import Expr, Integer, Matrix
+from sympy import Expr, Integer
 
+from . import ring
 from .errors import (
     CoincidentLinesError,
     CoincidentPointsError,
     DegenerateConfigurationError,
-    DimensionError,
-    IdealPointError,
     ObjectTypeError,
 )
-from .exact import all_zero
-from .homogeneous import HomogeneousVector, Scalar, is_zero, require, to_exact
+from .homogeneous import (
+    HomogeneousHyperplane,
+    HomogeneousPoint,
+    HomogeneousVector,
+    Scalar,
+    incidence,
+    is_zero,
+    require,
+    to_exact,
+)
 
 __all__ = [
     "Line",
@@ -57,10 +64,10 @@ def cross(u: Sequence[Expr], v: Sequence[Expr]) -> tuple[Expr, Expr, Expr]:
     """
     u1, u2, u3 = (sympy.sympify(c) for c in u)
     v1, v2, v3 = (sympy.sympify(c) for c in v)
-    return tuple(sympy.expand(e) for e in (u2 * v3 - u3 * v2, u3 * v1 - u1 * v3, u1 * v2 - u2 * v1))  # type: ignore[return-value]
+    return tuple(sympy.expand(e) for e in ring.cross((u1, u2, u3), (v1, v2, v3)))  # type: ignore[return-value]
 
 
-class Point(HomogeneousVector, kind="point"):
+class Point(HomogeneousPoint, kind="point"):
     """A point of the projective plane.
 
     ``Point(x, y)`` is the Euclidean point ``(x, y)``, stored as ``(x, y, 1)``;
@@ -77,41 +84,8 @@ class Point(HomogeneousVector, kind="point"):
 
     size = 3
     _kind = "point of P²"
+    ambient_dim = 2
     __slots__ = ()
-
-    @classmethod
-    def _complete(cls, coords: tuple[Scalar, ...]) -> tuple[Scalar, ...]:
-        if len(coords) == 2:
-            return (*coords, 1)
-        if len(coords) != 3:
-            raise DimensionError(
-                f"a point of P² takes 2 inhomogeneous coordinates (x, y) or 3 homogeneous ones "
-                f"(x1, x2, x3), got {len(coords)}: {coords}"
-            )
-        return coords
-
-    @property
-    def is_ideal(self) -> bool:
-        """True for a point at infinity (last coordinate zero)."""
-        return is_zero(self._coords[2])
-
-    def dehomogenize(self) -> tuple[Expr, Expr]:
-        """The inhomogeneous coordinates ``(x1/x3, x2/x3)``.
-
-        >>> Point(2, 4, 2).dehomogenize()
-        (1, 2)
-        >>> Point(1, 1, 0).dehomogenize()  # doctest: +ELLIPSIS
-        Traceback (most recent call last):
-        ...
-        pgsym.errors.IdealPointError: Point(1, 1, 0) is an ideal point (x3 = 0) and has no ...
-        """
-        x1, x2, x3 = self._coords
-        if self.is_ideal:
-            raise IdealPointError(
-                f"{self!r} is an ideal point (x3 = 0) and has no inhomogeneous coordinates; "
-                f"its direction is ({x1}, {x2})"
-            )
-        return sympy.cancel(x1 / x3), sympy.cancel(x2 / x3)
 
     def lies_on(self, line: Line) -> bool:
         """True when the point lies on ``line`` (``lᵀx = 0`` identically)."""
@@ -126,7 +100,7 @@ class Point(HomogeneousVector, kind="point"):
         return Line._from_exact(self._coords)
 
 
-class Line(HomogeneousVector, kind="line"):
+class Line(HomogeneousHyperplane, kind="line"):
     """A line ``a x + b y + c w = 0`` of the projective plane, given by ``(a, b, c)``.
 
     Lines are printed as row vectors, so that ``lᵀ x`` reads as a row times a column.
@@ -140,12 +114,8 @@ class Line(HomogeneousVector, kind="line"):
 
     size = 3
     _kind = "line of P²"
+    ambient_dim = 2
     __slots__ = ()
-
-    @property
-    def is_at_infinity(self) -> bool:
-        """True for the line at infinity ``(0, 0, 1)``."""
-        return is_zero(self._coords[0]) and is_zero(self._coords[1])
 
     @property
     def direction(self) -> Point:
@@ -156,11 +126,6 @@ class Line(HomogeneousVector, kind="line"):
             )
         a, b, _ = self._coords
         return Point._from_exact((b, -a, Integer(0)))
-
-    @property
-    def normal(self) -> tuple[Expr, Expr]:
-        """The Euclidean normal vector ``(a, b)`` of the line."""
-        return self._coords[0], self._coords[1]
 
     def contains(self, point: Point) -> bool:
         """True when ``point`` lies on the line."""
@@ -173,9 +138,6 @@ class Line(HomogeneousVector, kind="line"):
     def dual(self) -> Point:
         """The point with the same homogeneous coordinates."""
         return Point._from_exact(self._coords)
-
-    def latex(self) -> str:
-        return r"\begin{bmatrix}" + " & ".join(self._latex_entries()) + r"\end{bmatrix}"
 
 
 
@@ -191,12 +153,8 @@ def join(p: Point, q: Point) -> Line:
     """
     require(p, Point, "join", "; use meet() for two lines")
     require(q, Point, "join", "; use meet() for two lines")
-    coords = cross(p.coords, q.coords)
-    if all_zero(coords):
-        raise CoincidentPointsError(
-            f"cannot join {p!r} and {q!r}: they are the same point, so no unique line passes through them"
-        )
-    return Line._from_exact(coords)
+    return Line._from_nonzero(cross(p.coords, q.coords), CoincidentPointsError, lambda: (
+        f"cannot join {p!r} and {q!r}: they are the same point, so no unique line passes through them"))
 
 
 def meet(l: Line, m: Line) -> Point:
@@ -210,10 +168,8 @@ def meet(l: Line, m: Line) -> Point:
     """
     require(l, Line, "meet", "; use join() for two points")
     require(m, Line, "meet", "; use join() for two points")
-    coords = cross(l.coords, m.coords)
-    if all_zero(coords):
-        raise CoincidentLinesError(f"cannot meet {l!r} and {m!r}: they are the same line, so they share every point")
-    return Point._from_exact(coords)
+    return Point._from_nonzero(cross(l.coords, m.coords), CoincidentLinesError, lambda: (
+        f"cannot meet {l!r} and {m!r}: they are the same line, so they share every point"))
 
 
 def incident(point: Point, line: Line) -> bool:
@@ -224,15 +180,11 @@ def incident(point: Point, line: Line) -> bool:
     >>> incident(Point(1, 1), Line(1, -1, 0)), incident(Line(1, -1, 0), Point(1, 2))
     (True, False)
     """
-    if isinstance(point, Line) and isinstance(line, Point):
-        point, line = line, point
-    require(point, Point, "incident", " (a Point and a Line)")
-    require(line, Line, "incident", " (a Point and a Line)")
-    return is_zero(sum((a * b for a, b in zip(point.coords, line.coords, strict=False)), Integer(0)))
+    return incidence(point, line, Point, Line)
 
 
 def _det3(rows: Sequence[HomogeneousVector]) -> Expr:
-    return sympy.expand(Matrix([list(r.coords) for r in rows]).det(method="bareiss"))
+    return sympy.expand(ring.det([r.coords for r in rows]))
 
 
 def collinear(p: Point, q: Point, r: Point) -> bool:

@@ -72,11 +72,13 @@ def det(rows: Sequence[Sequence[Any]]) -> Any:
     if n == 2:
         return rows[0][0] * rows[1][1] - rows[0][1] * rows[1][0]
     terms = []
+    rest = [tuple(r) for r in rows[1:]]
     for j in range(n):
-        sub = [row[:j] + row[j + 1 :] for row in (tuple(r) for r in rows[1:])]
-        term = rows[0][j] * det(sub)
+        if not rows[0][j]:  # a zero entry contributes nothing: skip its minor (sparse matrices are common)
+            continue
+        term = rows[0][j] * det([row[:j] + row[j + 1 :] for row in rest])
         terms.append(term if j % 2 == 0 else -term)
-    return _sum(terms)
+    return _sum(terms) if terms else rows[0][0]  # a zero first row: its (zero) entry is the ring's zero
 
 
 def transpose(m: Sequence[Sequence[Any]]) -> Matrix:

@@ -19,20 +19,20 @@ Plane(1, 1, 1, -1)
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
+from typing import Any, TypeVar
 
 import sympy
-from sympy import Expr, Integer, Matrix
+from sympy import Expr
 
+from . import ring
 from .errors import (
     CollinearPointsError,
     DependentPlanesError,
     DimensionError,
-    IdealPointError,
     ObjectTypeError,
 )
-from .exact import all_zero
-from .homogeneous import HomogeneousVector, Scalar, is_zero, require
+from .homogeneous import HomogeneousHyperplane, HomogeneousPoint, HomogeneousVector, incidence, is_zero, require
 
 __all__ = [
     "Plane",
@@ -45,6 +45,8 @@ __all__ = [
     "point_on_planes",
     "triple_cross",
 ]
+
+_H = TypeVar("_H", bound=HomogeneousVector)
 
 
 def triple_cross(u: Sequence[Expr], v: Sequence[Expr], w: Sequence[Expr]) -> tuple[Expr, Expr, Expr, Expr]:
@@ -63,14 +65,10 @@ def triple_cross(u: Sequence[Expr], v: Sequence[Expr], w: Sequence[Expr]) -> tup
     for r in rows:
         if len(r) != 4:
             raise DimensionError(f"triple_cross takes three 4-vectors, got one of length {len(r)}: {tuple(r)}")
-    result = []
-    for i in range(4):
-        minor = Matrix([[r[j] for j in range(4) if j != i] for r in rows]).det(method="bareiss")
-        result.append(sympy.expand((-1) ** i * minor))
-    return tuple(result)  # type: ignore[return-value]
+    return tuple(sympy.expand(e) for e in ring.plane_through(*rows))  # type: ignore[return-value]
 
 
-class Point3(HomogeneousVector, kind="point3"):
+class Point3(HomogeneousPoint, kind="point3"):
     """A point of projective 3-space.
 
     ``Point3(x, y, z)`` is the Euclidean point ``(x, y, z)``, stored as
@@ -88,47 +86,9 @@ class Point3(HomogeneousVector, kind="point3"):
 
     size = 4
     _kind = "point of P³"
+    _inhomogeneous = "(x, y, z)"
+    ambient_dim = 3
     __slots__ = ()
-
-    @classmethod
-    def _complete(cls, coords: tuple[Scalar, ...]) -> tuple[Scalar, ...]:
-        if len(coords) == 3:
-            return (*coords, 1)
-        if len(coords) != 4:
-            raise DimensionError(
-                f"a point of P³ takes 3 inhomogeneous coordinates (x, y, z) or 4 homogeneous ones "
-                f"(x1, x2, x3, x4), got {len(coords)}: {coords}"
-            )
-        return coords
-
-    @property
-    def is_ideal(self) -> bool:
-        """True for a point at infinity (last coordinate zero).
-
-        >>> Point3(1, 2, 3, 0).is_ideal, Point3(1, 2, 3).is_ideal
-        (True, False)
-        """
-        return is_zero(self._coords[3])
-
-    def dehomogenize(self) -> tuple[Expr, Expr, Expr]:
-        """The inhomogeneous coordinates ``(x1/x4, x2/x4, x3/x4)``.
-
-        Raises :class:`IdealPointError` for an ideal point, which has none.
-
-        >>> Point3(2, 4, 6, 2).dehomogenize()
-        (1, 2, 3)
-        >>> Point3(1, 1, 0, 0).dehomogenize()  # doctest: +ELLIPSIS
-        Traceback (most recent call last):
-        ...
-        pgsym.errors.IdealPointError: Point3(1, 1, 0, 0) is an ideal point (x4 = 0) and has no ...
-        """
-        x1, x2, x3, x4 = self._coords
-        if self.is_ideal:
-            raise IdealPointError(
-                f"{self!r} is an ideal point (x4 = 0) and has no inhomogeneous coordinates; "
-                f"its direction is ({x1}, {x2}, {x3})"
-            )
-        return sympy.cancel(x1 / x4), sympy.cancel(x2 / x4), sympy.cancel(x3 / x4)
 
     def lies_on(self, plane: Plane) -> bool:
         """True when the point lies on ``plane`` (``πᵀX = 0`` identically).
@@ -147,7 +107,7 @@ class Point3(HomogeneousVector, kind="point3"):
         return Plane._from_exact(self._coords)
 
 
-class Plane(HomogeneousVector, kind="plane"):
+class Plane(HomogeneousHyperplane, kind="plane"):
     """A plane ``a x + b y + c z + d w = 0`` of projective 3-space, given by ``(a, b, c, d)``.
 
     Planes are printed as row vectors, so that ``πᵀX`` reads as a row times a column.
@@ -159,25 +119,8 @@ class Plane(HomogeneousVector, kind="plane"):
 
     size = 4
     _kind = "plane of P³"
+    ambient_dim = 3
     __slots__ = ()
-
-    @property
-    def normal(self) -> tuple[Expr, Expr, Expr]:
-        """The Euclidean normal vector ``(a, b, c)``; it is ``(0, 0, 0)`` only for the plane at infinity.
-
-        >>> Plane(1, -2, 2, 7).normal
-        (1, -2, 2)
-        """
-        return self._coords[0], self._coords[1], self._coords[2]
-
-    @property
-    def is_at_infinity(self) -> bool:
-        """True for the plane at infinity ``(0, 0, 0, 1)``.
-
-        >>> Plane(0, 0, 0, 5).is_at_infinity, Plane(0, 0, 1, 5).is_at_infinity
-        (True, False)
-        """
-        return all_zero(self._coords[:3])
 
     def contains(self, point: Point3) -> bool:
         """True when ``point`` lies on the plane.
@@ -195,10 +138,6 @@ class Plane(HomogeneousVector, kind="plane"):
         """
         return Point3._from_exact(self._coords)
 
-    def latex(self) -> str:
-        """LaTeX of the coordinates as a row vector (without math delimiters)."""
-        return r"\begin{bmatrix}" + " & ".join(self._latex_entries()) + r"\end{bmatrix}"
-
 
 
 
@@ -210,11 +149,7 @@ def incident(point: Point3, plane: Plane) -> bool:
     >>> incident(Point3(1, 2, 3), Plane(1, 1, 1, -6)), incident(Plane(1, 1, 1, -6), Point3(0, 0, 0))
     (True, False)
     """
-    if isinstance(point, Plane) and isinstance(plane, Point3):
-        point, plane = plane, point
-    require(point, Point3, "incident", " (a Point3 and a Plane)")
-    require(plane, Plane, "incident", " (a Point3 and a Plane)")
-    return is_zero(sum((a * b for a, b in zip(point.coords, plane.coords, strict=True)), Integer(0)))
+    return incidence(point, plane, Point3, Plane)
 
 
 def _coincident_pair(objs: Sequence[HomogeneousVector]) -> tuple[int, int] | None:
@@ -223,6 +158,17 @@ def _coincident_pair(objs: Sequence[HomogeneousVector]) -> tuple[int, int] | Non
             if objs[i].is_proportional(objs[j]):
                 return i, j
     return None
+
+
+def _incident_with_three(
+    cls: type[_H], objs: tuple[HomogeneousVector, ...], error: type[Exception], message: Callable[[Any], str]
+) -> _H:
+    """The plane through three points, or the point on three planes: their triple cross product.
+
+    It vanishes exactly when the three have rank < 3; ``message`` gets the first coincident pair (or None).
+    """
+    coords = triple_cross(*(o.coords for o in objs))
+    return cls._from_nonzero(coords, error, lambda: message(_coincident_pair(objs)))
 
 
 def plane_through(p: Point3, q: Point3, r: Point3) -> Plane:
@@ -244,15 +190,10 @@ def plane_through(p: Point3, q: Point3, r: Point3) -> Plane:
     """
     for x in (p, q, r):
         require(x, Point3, "plane_through", "; use point_on_planes() for three planes")
-    coords = triple_cross(p.coords, q.coords, r.coords)
-    if all_zero(coords):
-        pair = _coincident_pair((p, q, r))
-        detail = f" (points {pair[0] + 1} and {pair[1] + 1} coincide)" if pair else ""
-        raise CollinearPointsError(
-            f"cannot find the plane through {p!r}, {q!r}, {r!r}: they lie on one line{detail}, so the 3×4 "
-            f"matrix has rank < 3 and a whole pencil of planes contains them; choose a point off that line"
-        )
-    return Plane._from_exact(coords)
+    return _incident_with_three(Plane, (p, q, r), CollinearPointsError, lambda pair: (
+        f"cannot find the plane through {p!r}, {q!r}, {r!r}: they lie on one line"
+        + (f" (points {pair[0] + 1} and {pair[1] + 1} coincide)" if pair else "")
+        + ", so the 3×4 matrix has rank < 3 and a whole pencil of planes contains them; choose a point off that line"))
 
 
 def point_on_planes(a: Plane, b: Plane, c: Plane) -> Point3:
@@ -272,15 +213,10 @@ def point_on_planes(a: Plane, b: Plane, c: Plane) -> Point3:
     """
     for x in (a, b, c):
         require(x, Plane, "point_on_planes", "; use plane_through() for three points")
-    coords = triple_cross(a.coords, b.coords, c.coords)
-    if all_zero(coords):
-        pair = _coincident_pair((a, b, c))
-        detail = f"planes {pair[0] + 1} and {pair[1] + 1} are the same plane" if pair else "they share a line"
-        raise DependentPlanesError(
-            f"the planes {a!r}, {b!r}, {c!r} do not meet in a single point: {detail}, so the 3×4 matrix "
-            f"has rank < 3; replace one plane by a plane not through their common line"
-        )
-    return Point3._from_exact(coords)
+    return _incident_with_three(Point3, (a, b, c), DependentPlanesError, lambda pair: (
+        f"the planes {a!r}, {b!r}, {c!r} do not meet in a single point: "
+        + (f"planes {pair[0] + 1} and {pair[1] + 1} are the same plane" if pair else "they share a line")
+        + ", so the 3×4 matrix has rank < 3; replace one plane by a plane not through their common line"))
 
 
 def coplanar(p: Point3, q: Point3, r: Point3, s: Point3) -> bool:
@@ -293,7 +229,7 @@ def coplanar(p: Point3, q: Point3, r: Point3, s: Point3) -> bool:
     """
     for x in (p, q, r, s):
         require(x, Point3, "coplanar", "")
-    det = Matrix([list(x.coords) for x in (p, q, r, s)]).det(method="bareiss")
+    det = ring.det([x.coords for x in (p, q, r, s)])
     return is_zero(sympy.expand(det))
 
 

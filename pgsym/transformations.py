@@ -1,7 +1,7 @@
-"""Projective transformations of P² and P³: exact non-singular matrices and their action on every object.
+"""Projective transformations of P¹, P² and P³: exact non-singular matrices and their action on every object.
 
 A projective transformation (collineation, homography) of P² is given by a
-non-singular 3×3 matrix ``H``, of P³ by a non-singular 4×4 matrix, both defined up
+non-singular 3×3 matrix ``H``, of P³ by a non-singular 4×4 matrix (and of P¹ by a 2×2 one), all defined up
 to a nonzero scale. Points map by ``x' = H x``. Every other object follows from the
 requirement that incidence is preserved: lines and planes map by ``H⁻ᵀ``, conics
 and quadrics by ``H⁻ᵀ C H⁻¹``, dual conics by ``H C* Hᵀ`` and Plücker matrices by
@@ -22,65 +22,47 @@ from __future__ import annotations
 
 import numbers
 from itertools import combinations
-from typing import Any
+from typing import Any, ClassVar
 
 import sympy
 from sympy import Expr, ImmutableMatrix, Matrix
 
 from .errors import CollinearPointsError, DimensionError, ObjectTypeError, SingularTransformationError
 from .exact import latex
-from .homogeneous import _format_entry, is_zero, to_exact
-from .kinds import Kind
-from .projective_plane import Line, Point, collinear
+from .homogeneous import _format_entry, is_zero
+from .kinds import Kind, object_classes
+from .matrices import adjugate, exact_matrix, expanded, proportional
+from .projective_plane import Point, collinear
 
 __all__ = ["Transformation", "adjugate", "as_exact_matrix", "homography_from_points"]
 
 
-def as_exact_matrix(matrix: Any, what: str = "transformation matrix") -> ImmutableMatrix:
-    """Coerce a nested sequence, SymPy or NumPy matrix to a square exact ``ImmutableMatrix``.
+def as_exact_matrix(matrix: Any, what: str = "a transformation matrix") -> ImmutableMatrix:
+    """A square exact ``ImmutableMatrix`` from nested sequences, a SymPy or NumPy matrix or a Transformation.
 
-    Floats are read as the decimals they print as (see :func:`~pgsym.homogeneous.to_exact`).
+    The square case of :func:`pgsym.matrices.exact_matrix` (the one coercion); floats are read as
+    the decimals they print as.
 
     >>> as_exact_matrix([[1, 0.5], [0, 2]])
     Matrix([
     [1, 1/2],
     [0,   2]])
     """
-    if isinstance(matrix, Transformation):
-        return matrix.matrix
-    try:
-        rows = matrix.tolist() if hasattr(matrix, "tolist") else [list(r) for r in matrix]
-    except TypeError as err:
-        raise DimensionError(f"a {what} must be a square matrix (a list of rows), got {matrix!r}") from err
-    n = len(rows)
-    if n == 0 or any(not hasattr(r, "__len__") or len(r) != n for r in rows):
-        raise DimensionError(f"a {what} must be square (n rows of n entries), got {matrix!r}")
-    return ImmutableMatrix([[to_exact(e) for e in r] for r in rows])
+    return exact_matrix(matrix, square=True, what=what)
 
 
-def adjugate(matrix: Any) -> ImmutableMatrix:
-    """The adjugate ``adj(M)`` (transposed cofactor matrix), expanded: ``M adj(M) = det(M) I``.
-
-    >>> adjugate([[2, 0], [0, 3]])
-    Matrix([
-    [3, 0],
-    [0, 2]])
-    """
-    m = as_exact_matrix(matrix, "matrix")
-    return ImmutableMatrix(m.adjugate(method="bareiss").applyfunc(sympy.expand))
-
-
-def _expand(m: Matrix) -> ImmutableMatrix:
-    return ImmutableMatrix(m.applyfunc(sympy.expand))
+_SPACES = {1: "P¹", 2: "P²", 3: "P³"}
 
 
 class Transformation(Kind, kind="transformation"):
-    """A projective transformation of P² (3×3 matrix) or P³ (4×4 matrix), defined up to scale.
+    """A projective transformation of P¹ (2×2 matrix), P² (3×3) or P³ (4×4), defined up to scale.
 
     The matrix is exact and must be non-singular; ``det H = 0`` raises
     :class:`~pgsym.errors.SingularTransformationError`. Apply it by calling it
     (``H(x)``) or with ``@`` (``H @ x``); ``H @ G`` is the composition "first
-    ``G``, then ``H``". ``==`` compares up to a nonzero scale.
+    ``G``, then ``H``". ``==`` compares up to a nonzero scale. Each object class knows
+    how it transforms (its ``_transformed_by``); the transformation only supplies the
+    products with ``H``, its adjugate and their transposes.
 
     >>> H = Transformation([[2, 0, 1], [0, 2, 0], [0, 0, 1]])
     >>> H @ Point(1, 1)
@@ -94,18 +76,26 @@ class Transformation(Kind, kind="transformation"):
     """
 
     __slots__ = ("_adj", "_det", "_matrix")
+    # the shape a subclass insists on (None: 2×2, 3×3 or 4×4), and how its errors name the matrix
+    _shape: ClassVar[tuple[int, int] | None] = None
+    _what: ClassVar[str] = "a transformation matrix"
+    _default_dim: ClassVar[int] = 2
 
     def __init__(self, matrix: Any) -> None:
-        m = as_exact_matrix(matrix)
-        if m.shape not in ((3, 3), (4, 4)):
+        m = exact_matrix(matrix, shape=self._shape, square=True, what=self._what)
+        if m.shape[0] - 1 not in _SPACES:
             raise DimensionError(
-                f"a projective transformation of P² is a 3×3 matrix and of P³ a 4×4 matrix, got shape {m.shape}"
+                "a projective transformation of P¹ is a 2×2 matrix, of P² a 3×3 matrix and of P³ a 4×4 matrix, "
+                f"got shape {m.shape}"
             )
         det = sympy.expand(m.det(method="bareiss"))
         if is_zero(det):
             raise SingularTransformationError(
-                f"the matrix {m.tolist()} is singular (determinant 0), so it is no projective transformation: "
-                "it collapses the plane (or space) onto a line or point; use a matrix of full rank"
+                f"the matrix {m.tolist()} is singular (determinant 0), so it "
+                + ("maps P¹ onto a single point and is no projective map; use an invertible 2×2 matrix"
+                   if m.shape[0] == 2 else
+                   "is no projective transformation: it collapses the plane (or space) onto a line or point; "
+                   "use a matrix of full rank")
             )
         self._matrix = m
         self._det = det
@@ -113,14 +103,15 @@ class Transformation(Kind, kind="transformation"):
 
     # -- construction --------------------------------------------------------------------------
     @classmethod
-    def identity(cls, dim: int = 2) -> Transformation:
-        """The identity of P^dim (``dim`` 2 or 3).
+    def identity(cls, dim: int | None = None) -> Transformation:
+        """The identity of P^dim (``dim`` 1, 2 or 3; by default 2, and 1 for :class:`ProjectiveMap1`).
 
         >>> Transformation.identity(3).matrix.shape
         (4, 4)
         """
-        if dim not in (2, 3):
-            raise DimensionError(f"pgsym has transformations of P² and P³ only (dim 2 or 3), got dim={dim!r}")
+        dim = cls._default_dim if dim is None else dim
+        if dim not in _SPACES:
+            raise DimensionError(f"pgsym has transformations of P¹, P² and P³ only (dim 1, 2 or 3), got dim={dim!r}")
         return cls(sympy.eye(dim + 1))
 
     # -- access --------------------------------------------------------------------------------
@@ -131,7 +122,7 @@ class Transformation(Kind, kind="transformation"):
 
     @property
     def dim(self) -> int:
-        """2 for a transformation of P², 3 for P³."""
+        """1 for a transformation of P¹, 2 for P², 3 for P³."""
         return self._matrix.shape[0] - 1
 
     @property
@@ -169,7 +160,7 @@ class Transformation(Kind, kind="transformation"):
         >>> Transformation([[1, t, 0], [0, 1, 0], [0, 0, 1]]).subs(t, 3).matrix[0, 1]
         3
         """
-        return Transformation(self._matrix.subs(*args, **kwargs))
+        return type(self)(self._matrix.subs(*args, **kwargs))
 
     # -- group structure -----------------------------------------------------------------------
     def inverse(self) -> Transformation:
@@ -181,7 +172,7 @@ class Transformation(Kind, kind="transformation"):
         [0, 2, 0],
         [0, 0, 2]])
         """
-        return Transformation(self.adjugate)
+        return type(self)(self.adjugate)
 
     def compose(self, other: Transformation) -> Transformation:
         """``self ∘ other``: first ``other``, then ``self`` (matrix product ``H G``).
@@ -194,7 +185,7 @@ class Transformation(Kind, kind="transformation"):
             raise ObjectTypeError(f"compose expects a Transformation, got {type(other).__name__} {other!r}")
         if other.dim != self.dim:
             raise DimensionError(f"cannot compose a transformation of P^{self.dim} with one of P^{other.dim}")
-        return Transformation(_expand(self._matrix * other._matrix))
+        return type(self)(expanded(self._matrix * other._matrix))
 
     def __matmul__(self, other: Any) -> Any:
         if isinstance(other, Transformation):
@@ -207,11 +198,7 @@ class Transformation(Kind, kind="transformation"):
     def __eq__(self, other: object) -> bool:
         if not isinstance(other, Transformation):
             return NotImplemented
-        if other.dim != self.dim:
-            return False
-        a, b = list(self._matrix), list(other._matrix)
-        k = next(i for i, e in enumerate(a) if not is_zero(e))
-        return all(is_zero(a[k] * b[i] - a[i] * b[k]) for i in range(len(a)))
+        return other.dim == self.dim and proportional(list(self._matrix), list(other._matrix))
 
     def __hash__(self) -> int:
         return hash(("Transformation", self.dim))
@@ -225,53 +212,63 @@ class Transformation(Kind, kind="transformation"):
 
     # -- action --------------------------------------------------------------------------------
     def apply(self, obj: Any) -> Any:
-        """The image of a point, line, conic, dual conic, 3D point, plane, quadric or 3D line.
+        """The image of a point, line, conic, dual conic, 3D point, plane, quadric, 3D line or point of P¹.
 
         Rules (``H`` the matrix, ``adj`` its adjugate, ``∝`` equality up to scale):
         points ``x' = H x``; lines and planes ``l' = adj(H)ᵀ l ∝ H⁻ᵀ l``; conics and quadrics
         ``C' = adj(H)ᵀ C adj(H) ∝ H⁻ᵀ C H⁻¹``; dual conics ``C*' = H C* Hᵀ``; lines of P³
-        by their Plücker matrix ``L' = H L Hᵀ`` (equivalently ``L*' ∝ H⁻ᵀ L* H⁻¹``).
+        by their Plücker matrix ``L' = H L Hᵀ`` (equivalently ``L*' ∝ H⁻ᵀ L* H⁻¹``). Each class
+        states its rule in its ``_transformed_by`` and the space it lives in as ``ambient_dim``.
 
+        >>> from pgsym.projective_plane import Line
         >>> H = Transformation([[0, -1, 0], [1, 0, 0], [0, 0, 1]])     # rotation by 90°
         >>> H.apply(Point(1, 0)), H.apply(Line(1, 0, -1))             # the line x = 1 becomes y = 1
         (Point(0, 1, 1), Line(0, 1, -1))
         """
         if isinstance(obj, (numbers.Number, Expr)) or obj is None or isinstance(obj, str):
             raise ObjectTypeError(f"a transformation acts on geometric objects, got {type(obj).__name__} {obj!r}")
+        dim = getattr(obj, "ambient_dim", None)
         name = type(obj).__name__
-        rule = _RULES.get((self.dim, name))
-        if rule is None:
-            other = [k[1] for k in _RULES if k[0] == self.dim]
-            wrong_dim = any(k[1] == name for k in _RULES)
-            if wrong_dim:
-                raise DimensionError(
-                    f"a transformation of P^{self.dim} cannot act on a {name}, which lives in the other space; "
-                    f"use a {'4×4' if self.dim == 2 else '3×3'} matrix"
-                )
+        if dim is None:
+            acted = [c.__name__ for c in object_classes().values() if getattr(c, "ambient_dim", None) == self.dim]
             raise ObjectTypeError(
-                f"a transformation of P^{self.dim} acts on {', '.join(other)}; got {name} {obj!r}"
+                f"a transformation of P^{self.dim} acts on {', '.join(acted)}; got {name} {obj!r}"
             )
-        return rule(self, obj)
+        if dim != self.dim:
+            n = dim + 1
+            raise DimensionError(
+                f"a transformation of P^{self.dim} cannot act on a {name}, which lives in P^{dim}; "
+                f"use a {n}×{n} matrix"
+            )
+        return obj._transformed_by(self)
 
-    def _vector(self, coords: tuple[Expr, ...]) -> tuple[Expr, ...]:
-        return tuple(_expand(self._matrix * Matrix(coords)))
+    # the products the objects' rules are written with ------------------------------------------
+    def map_vector(self, coords: Any, covariant: bool = False) -> tuple[Expr, ...]:
+        """``H x`` for a point's coordinates; ``adj(H)ᵀ l ∝ H⁻ᵀ l`` for a line's or plane's (``covariant``).
 
-    def _covector(self, coords: tuple[Expr, ...]) -> tuple[Expr, ...]:
-        return tuple(_expand(self.cofactor * Matrix(coords)))
+        >>> Transformation([[1, 0, 5], [0, 1, 0], [0, 0, 1]]).map_vector((0, 0, 1))
+        (5, 0, 1)
+        """
+        m = self.cofactor if covariant else self._matrix
+        return tuple(expanded(m * Matrix(coords)))
 
-    def _congruence_dual(self, m: Any) -> ImmutableMatrix:
-        # C' = adj(H)^T C adj(H)  ∝  H^-T C H^-1
-        return _expand(self.cofactor * Matrix(m) * self.adjugate)
+    def map_form(self, m: Any, covariant: bool = False) -> ImmutableMatrix:
+        """``H M Hᵀ`` for a dual conic or Plücker matrix; ``adj(H)ᵀ M adj(H) ∝ H⁻ᵀ M H⁻¹`` for a conic or quadric.
 
-    def _congruence(self, m: Any) -> ImmutableMatrix:
-        # C*' = H C* H^T
-        return _expand(self._matrix * Matrix(m) * self._matrix.T)
+        >>> Transformation([[2, 0, 0], [0, 1, 0], [0, 0, 1]]).map_form(sympy.eye(3))
+        Matrix([
+        [4, 0, 0],
+        [0, 1, 0],
+        [0, 0, 1]])
+        """
+        left = self.cofactor if covariant else self._matrix
+        return expanded(left * Matrix(m) * left.T)
 
     # -- rendering -----------------------------------------------------------------------------
     def __repr__(self) -> str:
         rows = ", ".join("[" + ", ".join(_format_entry(e) for e in self._matrix.row(i)) + "]"
                          for i in range(self._matrix.rows))
-        return f"Transformation([{rows}])"
+        return f"{type(self).__name__}([{rows}])"
 
     def latex(self) -> str:
         """LaTeX of the matrix (without math delimiters)."""
@@ -279,50 +276,6 @@ class Transformation(Kind, kind="transformation"):
 
     def _repr_latex_(self) -> str:
         return f"${self.latex()}$"
-
-
-def _point2(H: Transformation, x: Point) -> Point:
-    return Point._from_exact(H._vector(x.coords))
-
-
-def _line2(H: Transformation, l: Line) -> Line:
-    return Line._from_exact(H._covector(l.coords))
-
-
-def _conic(H: Transformation, c: Any) -> Any:
-    return type(c)._from_exact(H._congruence_dual(c.matrix))
-
-
-def _dual_conic(H: Transformation, c: Any) -> Any:
-    return type(c)._from_exact(H._congruence(c.matrix))
-
-
-def _point3(H: Transformation, X: Any) -> Any:
-    return type(X)._from_exact(H._vector(X.coords))
-
-
-def _plane(H: Transformation, p: Any) -> Any:
-    return type(p)._from_exact(H._covector(p.coords))
-
-
-def _quadric(H: Transformation, q: Any) -> Any:
-    return type(q)(H._congruence_dual(q.matrix))
-
-
-def _line3(H: Transformation, L: Any) -> Any:
-    return type(L).from_matrix(H._congruence(L.matrix))
-
-
-_RULES = {
-    (2, "Point"): _point2,
-    (2, "Line"): _line2,
-    (2, "Conic"): _conic,
-    (2, "DualConic"): _dual_conic,
-    (3, "Point3"): _point3,
-    (3, "Plane"): _plane,
-    (3, "Quadric"): _quadric,
-    (3, "Line3"): _line3,
-}
 
 
 def _basis_map(pts: list[Point], name: str) -> Matrix:
@@ -334,7 +287,7 @@ def _basis_map(pts: list[Point], name: str) -> Matrix:
                 "correspondences determine a homography only when no three of the points lie on one line"
             )
     P = Matrix([list(p.coords) for p in pts[:3]]).T
-    lam = (P.adjugate() * Matrix(pts[3].coords)).applyfunc(sympy.expand)  # ∝ P⁻¹ p4
+    lam = adjugate(P) * Matrix(pts[3].coords)  # ∝ P⁻¹ p4
     return P * sympy.diag(*lam)
 
 
@@ -354,4 +307,4 @@ def homography_from_points(src: list[Point], dst: list[Point]) -> Transformation
         if len(pts) != 4 or not all(isinstance(p, Point) for p in pts):
             raise DimensionError(f"a homography of P² is fixed by exactly four Point correspondences, got {pts!r}")
     A, B = _basis_map(list(src), "source"), _basis_map(list(dst), "destination")
-    return Transformation(_expand(B * A.adjugate()))
+    return Transformation(expanded(B * adjugate(A)))

@@ -178,3 +178,36 @@ def test_invariants_of_includes_inherited_ones():
     own = {i.key for i in invariants_of(EUCLIDEAN_2D, inherited=False)}
     every = {i.key for i in invariants_of(EUCLIDEAN_2D)}
     assert own == {"orientation"} and {"length", "angle", "parallelism", "cross-ratio"} <= every
+
+
+# -- the one primitive form of polynomial vectors ------------------------------------------------------
+
+polys = st.lists(st.tuples(st.integers(-3, 3), st.integers(0, 2), st.integers(0, 2)), min_size=1, max_size=3)
+
+
+@settings(max_examples=40, deadline=None)
+@given(st.lists(polys, min_size=2, max_size=4), polys)
+def test_primitive_part_removes_any_common_factor(vector, factor):
+    from sympy.polys.rings import ring
+
+    from pgsym.exact import primitive_part
+
+    R, a, b = ring("a, b", sympy.ZZ)
+
+    def poly(terms):
+        return sum((c * a**i * b**j for c, i, j in terms), R.zero)
+
+    v, f = [poly(t) for t in vector], poly(factor)
+    assume(any(v) and f)
+    p, q = primitive_part(v), primitive_part([f * x for x in v])
+    # a primitive vector is determined up to a unit of ℤ[a, b], i.e. ±1
+    assert q == p or q == [-x for x in p]
+    # and with denominators: (v_i / f) has the same primitive form as v
+    assert primitive_part(v, [f] * len(v)) in (p, [-x for x in p])
+
+
+@pytest.mark.parametrize("inv", [i for i in INVARIANTS if i.counter is not None], ids=lambda i: i.key)
+def test_counterexample_values_are_lists(inv):
+    # the values are printed in the book as lists, whatever sequence type the kit returns
+    ce = inv.counterexample()
+    assert type(ce.before) is list and type(ce.after) is list

@@ -268,3 +268,25 @@ def test_importing_linalg_loads_no_numpy_and_the_numeric_names_come_from_pgsym_n
     assert la.nullspace_exact(np.array([[1, 0, 0, -1], [0, 1, 0, -2], [0, 0, 1, -3]])) == [(1, 2, 3, 1)]
     with pytest.raises(AttributeError, match="no attribute 'nullspace_numeric'"):
         la.nullspace_numeric  # noqa: B018
+
+
+# -- the ring kit's determinant (skips zero entries) agrees with SymPy's ----------------------------------
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.integers(1, 5).flatmap(lambda n: st.lists(st.lists(st.integers(-2, 2), min_size=n, max_size=n),
+                                                     min_size=n, max_size=n)))
+def test_ring_det_matches_sympy(rows):
+    from fractions import Fraction
+
+    from pgsym import ring
+
+    assert ring.det(rows) == Matrix(rows).det()
+    assert ring.det([[Fraction(e) for e in r] for r in rows]) == Matrix(rows).det()
+
+
+def test_nullspace_keeps_the_direction_of_a_basis_vector():
+    # x + 2y = 0 in 2 unknowns: SymPy's basis vector is (-2, 1); a positive factor keeps it, the
+    # canonical form (first entry positive) would have flipped it to (2, -1)
+    assert nullspace_exact([[1, 2]]) == [(-2, 1)]
+    assert nullspace_exact([[Rational(1, 2), 1]]) == [(-2, 1)]

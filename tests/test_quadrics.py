@@ -162,3 +162,43 @@ def test_polar_is_linear_and_tangent_planes_touch(entries, x, k):
     # X lies on its own polar exactly when it lies on the quadric
     assert pi.contains(X) == Q.contains(X)
     assert Quadric([[k * v for v in row] for row in M]) == Q
+
+
+# -- the shared symmetric-form base --------------------------------------------------------------------
+
+entries = st.integers(-4, 4)
+
+
+@st.composite
+def symmetric4(draw):
+    upper = {(i, j): draw(entries) for i in range(4) for j in range(i, 4)}
+    assume(any(upper.values()))
+    return [[upper[min(i, j), max(i, j)] for j in range(4)] for i in range(4)]
+
+
+@settings(max_examples=40, deadline=None)
+@given(symmetric4(), st.integers(-5, 5).filter(bool), st.fractions(min_value=-3, max_value=3).filter(bool))
+def test_equal_quadrics_hash_alike_and_share_the_canonical_form(M, k, q):
+    a, b = Quadric(M), Quadric([[k * q * e for e in row] for row in M])
+    assert a == b and hash(a) == hash(b)
+    assert a.canonical().matrix == b.canonical().matrix
+    # the canonical form is a rescaling: the same quadric
+    assert a.canonical() == a
+
+
+def test_canonical_quadric_by_hand():
+    # 2x² + 2y² + 2z² - 8w² (the sphere of radius 2, times 2): the coefficients (x², xy, y², xz, yz, z², xw, yw,
+    # zw, w²) = (2, 0, 2, 0, 0, 2, 0, 0, 0, -8) have content 2, so the canonical form is x² + y² + z² - 4
+    Q = Quadric([[2, 0, 0, 0], [0, 2, 0, 0], [0, 0, 2, 0], [0, 0, 0, -8]])
+    assert Q.canonical().matrix.tolist() == Quadric.sphere((0, 0, 0), 2).matrix.tolist()
+    assert Q.coefficients_of_form() == (2, 0, 2, 0, 0, 2, 0, 0, 0, -8)
+
+
+def test_symbolic_quadric_substitutes_and_renders():
+    a = symbols("a")
+    Q = Quadric([[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, -a]])
+    assert Q.subs(a, 4) == Quadric.sphere((0, 0, 0), 2)
+    assert repr(Quadric.sphere((0, 0, 0), 1)) == "Quadric([[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, -1]])"
+    assert Q.latex().startswith(r"\left[\begin{matrix}")
+    with pytest.raises(DimensionError, match="4×4"):
+        Quadric([[1, 0], [0, 1]])

@@ -97,7 +97,9 @@ def test_symbolic_transformation_maps_general_point():
     ("build", "error"),
     [
         (lambda: Transformation([[1, 2, 3], [2, 4, 6], [0, 0, 1]]), SingularTransformationError),
-        (lambda: Transformation([[1, 0], [0, 1]]), DimensionError),
+        (lambda: Transformation(sympy.eye(5)), DimensionError),  # 2×2 (P¹) to 4×4 (P³) only
+        (lambda: Transformation([[1]]), DimensionError),
+        (lambda: Transformation(sympy.eye(2))(Point(1, 2)), DimensionError),
         (lambda: Transformation([[1, 0, 0], [0, 1, 0]]), DimensionError),
         (lambda: Transformation("not a matrix"), DimensionError),
         (lambda: Transformation.identity(2)(3), ObjectTypeError),
@@ -277,3 +279,127 @@ def test_homography_from_collinear_points_is_refused():
         homography_from_points(pts, pts)
     with pytest.raises(DimensionError):
         homography_from_points(pts[:3], pts[:3])
+
+
+# -- one Transformation for P¹, P² and P³ ------------------------------------------------------------
+
+
+def _line():
+    import pgsym.projective_line as projective_line
+
+    return projective_line
+
+
+@settings(max_examples=30, deadline=None)
+@given(matrices(2), matrices(2), st.tuples(small, small).filter(any))
+def test_projective_map1_and_a_dim_one_transformation_agree(T, G, xy):
+    P1 = _line()
+    F = P1.ProjectiveMap1(T.matrix)
+    p = P1.Point1(*xy)
+    assert T.dim == F.dim == 1
+    assert F(p) == T(p) and T @ p == F @ p
+    assert F == T and T == F and hash(F) == hash(T)
+    # composition in either order, with either class on the left, is the same map
+    assert (F @ G)(p) == F(G(p))
+    assert T @ P1.ProjectiveMap1(G.matrix) == F @ G
+    assert type(F @ G) is P1.ProjectiveMap1 and type(G @ F) is Transformation
+    assert F.inverse() == T.inverse()
+
+
+def test_dim_one_transformation_by_hand():
+    P1 = _line()
+    # x -> 2x + 1 is [[2, 1], [0, 1]]: 3 -> 7, ∞ -> ∞; its adjugate [[1, -1], [0, 2]] is x -> (x - 1)/2
+    T = Transformation([[2, 1], [0, 1]])
+    assert T(P1.Point1(3)) == P1.Point1(7) and T(P1.Point1(1, 0)) == P1.Point1(1, 0)
+    assert T.inverse().matrix == sympy.Matrix([[1, -1], [0, 2]])
+    assert Transformation.identity(1) == P1.ProjectiveMap1.identity() == P1.ProjectiveMap1([[5, 0], [0, 5]])
+    assert repr(T) == "Transformation([[2, 1], [0, 1]])"
+    assert repr(P1.ProjectiveMap1(T)) == "ProjectiveMap1([[2, 1], [0, 1]])"
+    with pytest.raises(ObjectTypeError):
+        T(3)  # only ProjectiveMap1 reads numbers as points of P¹
+    assert P1.ProjectiveMap1(T)(3) == P1.Point1(7)
+    with pytest.raises(DimensionError, match=r"lives in P\^1; use a 2×2 matrix"):
+        Transformation.identity(2)(P1.Point1(3))
+    with pytest.raises(SingularTransformationError, match="maps P¹ onto a single point"):
+        Transformation([[1, 2], [2, 4]])
+
+
+# -- objects know how they transform --------------------------------------------------------------
+
+
+@settings(max_examples=30, deadline=None)
+@given(matrices(), points(), points())
+def test_a_lines_own_rule_is_the_join_of_the_image_points(H, p, q):
+    # l = p × q; l' = adj(H)ᵀ l must be the line through H p and H q (the dual of the point rule)
+    assume(p != q)
+    l = join(p, q)
+    assert l._transformed_by(H) == join(p._transformed_by(H), q._transformed_by(H))
+    assert l._transformed_by(H) == H(l)
+
+
+@settings(max_examples=20, deadline=None)
+@given(matrices(4), points3(), points3(), points3())
+def test_a_planes_own_rule_is_the_plane_of_the_image_points(H, a, b, c):
+    space = _space()
+    try:
+        pi = space.plane_through(a, b, c)
+    except PgsymError:
+        assume(False)
+    assert pi._transformed_by(H) == space.plane_through(H(a), H(b), H(c))
+
+
+def test_every_kind_declares_its_space():
+    from pgsym.kinds import object_classes
+
+    spaces = {kind: getattr(cls, "ambient_dim", None) for kind, cls in object_classes().items()}
+    assert spaces == {"point1": 1, "point": 2, "line": 2, "conic": 2, "dual_conic": 2, "point3": 3,
+                      "plane": 3, "line3": 3, "quadric": 3, "transformation": None}
+
+
+def test_a_transformation_names_what_it_acts_on():
+    with pytest.raises(ObjectTypeError, match=r"acts on .*Point.*Line.*Conic"):
+        Transformation.identity(2)(Transformation.identity(2))
+    with pytest.raises(DimensionError, match=r"lives in P\^3; use a 4×4 matrix"):
+        Transformation.identity(2)(_space().Point3(1, 2, 3))
+
+
+# -- one exact matrix coercion ------------------------------------------------------------------------
+
+
+def _coercions():
+    from pgsym.conics import Conic, DualConic
+    from pgsym.linalg import nullspace_exact, rank_exact
+    from pgsym.plucker import Line3
+    from pgsym.quadrics import Quadric
+
+    P1 = _line()
+    return {"Transformation": Transformation, "ProjectiveMap1": P1.ProjectiveMap1, "Conic": Conic,
+            "DualConic": DualConic, "Quadric": Quadric, "Line3.from_matrix": Line3.from_matrix,
+            "nullspace_exact": nullspace_exact, "rank_exact": rank_exact}
+
+
+@pytest.mark.parametrize("name", list(_coercions()))
+@pytest.mark.parametrize(
+    ("bad", "error"),
+    [
+        (5, "DimensionError"),                       # no sequence of rows
+        ("not a matrix", "DimensionError"),          # a string is no matrix, though iterable
+        ([], "DimensionError"),                      # no rows
+        ([[]], "DimensionError"),                    # no columns
+        ([[1, 2], [3]], "DimensionError"),           # ragged rows
+        ([[[1, 0], [0, 1]]], "DimensionError"),      # a 3-index array
+        ([[1, "x"], [0, 1]], "NonNumericError"),     # a non-numeric entry (square 2×2, so shape passes first)
+        ([[1, None], [0, 1]], "NonNumericError"),
+        ([[float("nan"), 0], [0, 1]], "NonNumericError"),
+    ],
+)
+def test_the_one_coercion_rejects_the_same_bad_inputs_everywhere(name, bad, error):
+    from pgsym import errors
+
+    build = _coercions()[name]
+    expected = getattr(errors, error)
+    if error == "NonNumericError" and name in ("Conic", "DualConic", "Quadric", "Line3.from_matrix"):
+        expected = errors.DimensionError  # 2×2 is the wrong shape for these, which is checked first
+    with pytest.raises(expected) as info:
+        build(bad)
+    assert isinstance(info.value, PgsymError)

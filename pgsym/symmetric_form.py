@@ -1,0 +1,179 @@
+"""Symmetric matrices up to scale: what conics, dual conics and quadrics share.
+
+A conic (``xᵀ C x = 0``, 3×3), a dual conic (``lᵀ C* l = 0``, 3×3) and a quadric
+(``Xᵀ Q X = 0``, 4×4) are each a nonzero symmetric matrix defined up to a nonzero scale.
+:class:`SymmetricForm` holds the checks, equality up to scale, hashing, the canonical form,
+substitution, rank and determinant, rendering and the action of a transformation
+(``C' ∝ H⁻ᵀ C H⁻¹`` for the covariant forms, conics and quadrics; ``C*' = H C* Hᵀ`` for
+dual conics); the subclasses add only their geometry.
+
+>>> from pgsym.conics import Conic
+>>> from pgsym.quadrics import Quadric
+>>> Conic([[2, 0, 0], [0, 2, 0], [0, 0, -2]]) == Conic.circle(0, 0, 1)
+True
+>>> Quadric([[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 0]]).rank
+3
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from typing import Any, ClassVar, TypeVar
+
+import sympy
+from sympy import Expr, ImmutableMatrix, Integer, Matrix, Rational
+
+from .errors import InvalidCoordinatesError, ZeroVectorError
+from .exact import all_zero, canonical_coords, format_entry, is_zero, latex
+from .kinds import Kind
+from .matrices import exact_matrix, proportional, rank
+
+__all__ = ["SymmetricForm"]
+
+_F = TypeVar("_F", bound="SymmetricForm")
+
+
+class SymmetricForm(Kind):
+    """A nonzero symmetric ``size``×``size`` matrix up to a nonzero scale (base of Conic, DualConic, Quadric).
+
+    Subclasses set ``size`` (3 or 4), ``ambient_dim`` (the n of Pⁿ), ``_kind`` (the name used in
+    errors) and ``_covariant`` (True when the form is on points, so that it maps by ``H⁻ᵀ · H⁻¹``).
+    """
+
+    __slots__ = ("_matrix",)
+    size: ClassVar[int] = 3
+    ambient_dim: ClassVar[int | None] = None
+    _kind: ClassVar[str] = "symmetric form"
+    _covariant: ClassVar[bool] = True
+
+    def __init__(self, matrix: Any) -> None:
+        self._matrix = self._check(matrix)
+
+    @classmethod
+    def _check(cls, matrix: Any) -> ImmutableMatrix:
+        n = cls.size
+        m = exact_matrix(matrix, shape=(n, n), what=f"the symmetric matrix of a {cls._kind}")
+        for i in range(n):
+            for j in range(i + 1, n):
+                if not is_zero(m[i, j] - m[j, i]):
+                    raise InvalidCoordinatesError(
+                        f"the matrix of a {cls._kind} must be symmetric, but entry ({i}, {j}) is {m[i, j]} and entry "
+                        f"({j}, {i}) is {m[j, i]}: got {m.tolist()}; use the symmetric part (M + M.T)/2, which "
+                        "describes the same quadratic form"
+                    )
+        if all_zero(m):
+            raise ZeroVectorError(
+                f"the zero matrix is not a {cls._kind}: every element would satisfy 0 = 0; at least one entry "
+                "must be nonzero"
+            )
+        return m
+
+    @classmethod
+    def _from_exact(cls: type[_F], m: Any) -> _F:
+        obj = cls.__new__(cls)
+        obj._matrix = cls._check(m)
+        return obj
+
+    # -- access -----------------------------------------------------------------------------------
+    @property
+    def matrix(self) -> ImmutableMatrix:
+        """The symmetric matrix (one representative of the scale class, as stored)."""
+        return self._matrix
+
+    @property
+    def determinant(self) -> Expr:
+        """The determinant of the stored representative (its sign and size depend on the scale)."""
+        return sympy.expand(Matrix(self._matrix).det(method="bareiss"))
+
+    @property
+    def is_degenerate(self) -> bool:
+        """True when the matrix is singular (cones, line or plane pairs, double lines or planes)."""
+        return is_zero(self.determinant)
+
+    @property
+    def rank(self) -> int:
+        """The exact rank (``size`` when non-degenerate; the generic rank for symbolic entries)."""
+        if not self.is_degenerate:
+            return self.size
+        return rank(self._matrix)
+
+    def _form(self, u: Sequence[Expr], v: Sequence[Expr]) -> Expr:
+        """The bilinear form ``uᵀ M v``, expanded."""
+        n, m = self.size, self._matrix
+        return sympy.expand(sum((u[i] * m[i, j] * v[j] for i in range(n) for j in range(n)), Integer(0)))
+
+    def _image(self, x: Sequence[Expr]) -> tuple[Expr, ...]:
+        """``M x``, expanded: the polar of a point (the pole of a line for a dual form)."""
+        return tuple(sympy.expand(e) for e in self._matrix * Matrix(list(x)))
+
+    # -- equality up to scale ------------------------------------------------------------------------
+    def __eq__(self, other: object) -> bool:
+        if type(self) is not type(other):
+            return NotImplemented
+        assert isinstance(other, SymmetricForm)
+        return proportional(list(self._matrix), list(other._matrix))
+
+    def __hash__(self) -> int:
+        entries = list(self._matrix)
+        if all(v.is_Rational for v in entries):
+            pivot = next(v for v in entries if v != 0)
+            return hash((type(self).__name__, tuple(v / pivot for v in entries)))
+        return hash((type(self).__name__, self.size))
+
+    def coefficients_of_form(self) -> tuple[Expr, ...]:
+        """The coefficients of the quadratic form, monomials ``x_i x_j`` (i ≤ j) ordered by j, then i.
+
+        For a conic these are ``(a, b, c, d, e, f)`` of ``a x² + b xy + c y² + d x + e y + f``.
+
+        >>> from pgsym.conics import Conic
+        >>> Conic([[1, 2, 3], [2, 4, 5], [3, 5, 6]]).coefficients_of_form()
+        (1, 4, 4, 6, 10, 6)
+        """
+        m = self._matrix
+        return tuple(m[i, j] if i == j else 2 * m[i, j] for j in range(self.size) for i in range(j + 1))
+
+    @classmethod
+    def _matrix_of_form(cls, coefficients: Sequence[Expr]) -> ImmutableMatrix:
+        """The symmetric matrix of the coefficients in the order of :meth:`coefficients_of_form`."""
+        n, it = cls.size, iter(coefficients)
+        m = sympy.zeros(n, n)
+        for j in range(n):
+            for i in range(j + 1):
+                c = next(it)
+                m[i, j] = m[j, i] = c if i == j else c * Rational(1, 2)
+        return ImmutableMatrix(m)
+
+    def canonical(self: _F) -> _F:
+        """The representative whose quadratic form has coprime integer (or polynomial) coefficients.
+
+        The coefficients of :meth:`coefficients_of_form` are put in the canonical form of
+        :func:`pgsym.exact.canonical_coords` (for rationals: primitive integers, first nonzero positive).
+
+        >>> from pgsym.conics import Conic
+        >>> Conic([[2, 1, 0], [1, 4, 0], [0, 0, -6]]).canonical()
+        Conic.from_coefficients(1, 1, 2, 0, 0, -3)
+        >>> Conic([[-1, 0, 0], [0, -1, 0], [0, 0, Rational(1, 2)]]).canonical()
+        Conic.from_coefficients(2, 0, 2, 0, 0, -1)
+        """
+        return type(self)._from_exact(self._matrix_of_form(canonical_coords(self.coefficients_of_form())))
+
+    def subs(self: _F, *args: Any, **kwargs: Any) -> _F:
+        """Substitute values for symbols, as :meth:`sympy.Expr.subs` does."""
+        return type(self)._from_exact(ImmutableMatrix(self._matrix.subs(*args, **kwargs)))
+
+    # -- action of a transformation ------------------------------------------------------------------
+    def _transformed_by(self: _F, H: Any) -> _F:
+        """The image under ``H``: ``adj(H)ᵀ M adj(H) ∝ H⁻ᵀ M H⁻¹`` if covariant, else ``H M Hᵀ``."""
+        return type(self)._from_exact(H.map_form(self._matrix, self._covariant))
+
+    # -- rendering -----------------------------------------------------------------------------------
+    def __repr__(self) -> str:
+        rows = ", ".join("[" + ", ".join(format_entry(e) for e in row) + "]" for row in self._matrix.tolist())
+        return f"{type(self).__name__}([{rows}])"
+
+    def latex(self) -> str:
+        """LaTeX of the matrix (without math delimiters)."""
+        return latex(Matrix(self._matrix), mat_delim="[")
+
+    def _repr_latex_(self) -> str:
+        return f"${self.latex()}$"
