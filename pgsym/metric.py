@@ -130,7 +130,8 @@ def _form(a: Any, b: Any, what: str) -> tuple[Expr, Expr, Expr]:
         u, v = _direction3(a), _direction3(b)  # Ω∞ is the identity form on directions
     elif isinstance(a, Plane) and isinstance(b, Plane):
         Q = absolute_dual_quadric()
-        _normal3(a), _normal3(b)
+        _normal3(a)  # the plane at infinity has no normal
+        _normal3(b)
         u, v = matvec(Q.tolist(), a.coords)[:3], matvec(Q.tolist(), b.coords)[:3]
     else:
         raise ObjectTypeError(
@@ -223,7 +224,7 @@ def laguerre_cross_ratio(l: Line, m: Line) -> Expr:
     I_, J_ = circular_points()
     if p.is_ideal:  # parallel: p∨I = p∨J = l∞, and cr(l, m; l∞, l∞) = 1
         return Integer(1)
-    return sympy.nsimplify(sympy.radsimp(sympy.expand(cross_ratio_lines(l, m, join(p, I_), join(p, J_)))))
+    return sympy.expand(sympy.radsimp(cross_ratio_lines(l, m, join(p, I_), join(p, J_))))
 
 
 def _finite(p: Point | Point3, what: str) -> tuple[Expr, ...]:

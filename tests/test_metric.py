@@ -373,6 +373,30 @@ def test_space_projection_reflection_and_distance(a, b, c, x, y, z, w):
     assert R @ R == Transformation.identity(3)
     assert squared_distance(R(p), plane) == squared_distance(p, plane)
     assert squared_distance(p, f) == squared_distance(p, plane)
-    T = translation(x, y, z)
     q = Point3(1, 2, 3)
-    assert squared_distance(T(p), T(q)) == squared_distance(p, q)
+    for M in (translation(x, y, z), _turn_about_z(a, b)):
+        assert squared_distance(M(p), M(q)) == squared_distance(p, q)
+        assert squared_distance(M(p), M(plane)) == squared_distance(p, plane)
+
+
+def _turn_about_z(a: int, b: int) -> Transformation:
+    # the rotation about the z-axis by the angle with cos = (a² − b²)/n, sin = 2ab/n, n = a² + b²
+    if a == b == 0:
+        return Transformation.identity(3)
+    n = a * a + b * b
+    c, s = Rational(a * a - b * b, n), Rational(2 * a * b, n)
+    return Transformation([[c, -s, 0, 0], [s, c, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]])
+
+
+@given(ints, ints, ints, ints, ints, ints, st.integers(1, 3))
+@FAST
+def test_space_angles_are_similarity_invariants(a, b, c, d, e, f, k):
+    assume((a, b, c) != (0, 0, 0) and (d, e, f) != (0, 0, 0) and (a, b, c) != (d, e, f))
+    S = translation(a, e, k) @ _turn_about_z(b, c) @ scaling(k, dim=3)
+    p, q = Plane(a, b, c, d), Plane(d, e, f, a)
+    assert cos_squared_angle(S(p), S(q)) == cos_squared_angle(p, q)
+    assert is_perpendicular(S(p), S(q)) == is_perpendicular(p, q)
+    l = Line3.join(Point3(a, b, c), Point3(d, e, f))
+    m = Line3.join(Point3(0, 0, 0), Point3(f, d, e))
+    assert cos_squared_angle(S(l), S(m)) == cos_squared_angle(l, m)
+    assert squared_distance(S(l), S(m)) == k**2 * squared_distance(l, m)
