@@ -75,6 +75,9 @@ __all__ = [
     "orthogonal_projection",
     "perpendicular_line",
     "perpendicular_plane",
+    "point_distance",
+    "point_line_distance",
+    "point_plane_distance",
     "reflect",
     "reflection",
     "rotation",
@@ -465,6 +468,47 @@ def distance(a: Any, b: Any) -> Expr:
     (sqrt(2), 3)
     """
     return sympy.sqrt(squared_distance(a, b))
+
+
+def point_distance(p: Point | Point3, q: Point | Point3) -> Expr:
+    """The distance of two finite points of P² or of space (the name of the numeric kernel).
+
+    >>> point_distance(Point3(1, 2, 3), Point3(1, 0, 3, 1))
+    2
+    """
+    if not (isinstance(p, (Point, Point3)) and type(p) is type(q)):
+        raise ObjectTypeError(
+            f"point_distance takes two Points or two Point3s, got {type(p).__name__}, {type(q).__name__}"
+        )
+    return distance(p, q)
+
+
+def point_line_distance(p: Point | Point3, line: Line | Line3) -> Expr:
+    """The distance of a finite point from a line of P² or of space (the name of the numeric kernel).
+
+    >>> point_line_distance(Point(1, 2), Line(3, 4, 0)), point_line_distance(Point3(0, 3, 4), Line3(0, 0, 1, 0, 0, 0))
+    (11/5, 5)
+    """
+    if not (isinstance(p, Point) and isinstance(line, Line)) and not (
+        isinstance(p, Point3) and isinstance(line, Line3)
+    ):
+        raise ObjectTypeError(
+            f"point_line_distance takes (Point, Line) or (Point3, Line3), got {type(p).__name__}, {type(line).__name__}"
+        )
+    return distance(p, line)
+
+
+def point_plane_distance(p: Point3, plane: Plane) -> Expr:
+    """The distance of a finite point of space from a plane (the name of the numeric kernel).
+
+    >>> point_plane_distance(Point3(1, 2, 3), Plane(2, 0, 0, 0))
+    1
+    """
+    if not (isinstance(p, Point3) and isinstance(plane, Plane)):
+        raise ObjectTypeError(
+            f"point_plane_distance takes a Point3 and a Plane, got {type(p).__name__}, {type(plane).__name__}"
+        )
+    return distance(p, plane)
 
 
 # -- similarities as transformations -------------------------------------------------------------------

@@ -30,6 +30,9 @@ from pgsym.metric import (
     orthogonal_projection,
     perpendicular_line,
     perpendicular_plane,
+    point_distance,
+    point_line_distance,
+    point_plane_distance,
     reflect,
     reflection,
     rotation,
@@ -237,6 +240,19 @@ def test_orthogonal_projection_values():
 def test_squared_distances(a, b, squared):
     assert squared_distance(a, b) == squared
     assert distance(a, b) == sqrt(squared)
+
+
+def test_named_distances_match_the_numeric_names():
+    assert point_distance(Point(0, 0), Point(3, 4)) == 5
+    assert point_line_distance(Point(1, 2), Line(3, 4, 0)) == Rational(11, 5)  # (3 + 8) / 5
+    assert point_line_distance(Point3(0, 3, 4), Line3.join(Point3(0, 0, 0), Point3(1, 0, 0))) == 5
+    assert point_plane_distance(Point3(1, 2, 3), Plane(0, 0, 2, 0)) == 3
+    with pytest.raises(ObjectTypeError):
+        point_distance(Point(0, 0), Point3(0, 0, 0))
+    with pytest.raises(ObjectTypeError):
+        point_line_distance(Point(0, 0), Line3.join(Point3(0, 0, 0), Point3(1, 0, 0)))
+    with pytest.raises(ObjectTypeError):
+        point_plane_distance(Point3(0, 0, 0), Line(1, 0, 0))
 
 
 def test_distance_is_exact_algebraic():

@@ -246,3 +246,11 @@ def test_layouts_broadcasting_and_out():
     d = nm.point_line_distance(x, l)
     assert d.shape == (2, 3)
     assert np.allclose(nm.point_line_distance(feet, l), 0)
+
+
+def test_empty_batches_give_empty_results():
+    empty3 = np.empty((0, 3))
+    assert nm.cos_angle(empty3, [1.0, 0, 0]).shape == (0,)
+    assert nm.reflect(empty3, [1.0, 0, 0]).shape == (0, 3)
+    values, ok = nm.point_distance(np.empty((0, 4)), [0.0, 0, 0, 1], ideal="mask")
+    assert values.shape == ok.shape == (0,)
