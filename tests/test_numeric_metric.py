@@ -198,6 +198,15 @@ def test_intermediate_overflow_is_recomputed_not_reported():
     # (1e300, 0) and (−1e300, 0): the squared difference overflows, the distance 2e300 does not
     assert nm.point_distance([1e300, 0, 1], [-1e300, 0, 1]) == pytest.approx(2e300)
     assert nm.point_line_distance([1e-200, 0, 1e-200], [1e200, 0, -1e200]) == 0.0  # x = 1 through (1, 0)
+    # |l|² = 2e400 overflows while lᵀm = 1e200 does not: the fast quotient would be a wrong 0
+    assert nm.cos_angle([1e200, 1e200, 0], [1.0, 0, 0]) == pytest.approx(1 / math.sqrt(2))
+    # (1, 0) from x + y = 0 is 1/√2 away, however the line is scaled
+    assert nm.point_line_distance([1.0, 0, 1], [1e200, 1e200, 0]) == pytest.approx(1 / math.sqrt(2))
+    assert nm.point_line_distance([1.0, 0, 1], [1e-170, 1e-170, 0]) == pytest.approx(1 / math.sqrt(2))
+    # the foot of (2, 0) on y = x is (1, 1), with the line's coordinates near the ends of float64
+    for scale in (1e-170, 1e170):
+        foot = nm.orthogonal_projection([2.0, 0, 1], [scale, -scale, 0])
+        assert foot[:2] / foot[2] == pytest.approx([1, 1])
     # tiny coordinates: the squares underflow to 0, the line is still x = y
     assert nm.cos_angle([1e-200, -1e-200, 0], [1.0, 0, 0]) == pytest.approx(1 / math.sqrt(2))
 

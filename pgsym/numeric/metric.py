@@ -50,6 +50,20 @@ _IDEAL = ("raise", "mask")
 # direction (−l14, l42, −l34) of a line of space; the signs cancel in every product of two of them
 _PART = {3: (0, 1), 4: (0, 1, 2), 6: (2, 4, 5)}
 
+# a squared norm outside [2⁻⁹⁶⁸, 2⁹⁶⁸] has overflowed, underflowed, or is about to lose digits in the
+# division that follows; such rows are recomputed after scaling (well inside float64's 2^±1022)
+_SQUARE_LO, _SQUARE_HI = 2.0**-968, 2.0**968
+
+
+def _flag_unsafe(square: np.ndarray, o: np.ndarray) -> None:
+    """Set to NaN the rows of ``o`` whose squared norm is out of the safe range, for the second look.
+
+    A quotient by an infinite norm would be a wrong but finite 0; two reductions over the block,
+    while it is in cache, decide the common case.
+    """
+    if not (square.min() >= _SQUARE_LO and square.max() <= _SQUARE_HI):
+        o[~((square >= _SQUARE_LO) & (square <= _SQUARE_HI))] = np.nan
+
 
 def _arrays(inputs: list[tuple[Any, str]], axis: int, function: str, sizes: tuple[int, ...]) -> list[np.ndarray]:
     out = []
@@ -180,9 +194,10 @@ def _cos_kernel(part: tuple[int, ...]) -> Callable[[list[np.ndarray], np.ndarray
             np.multiply(bi, bi, out=t)
             np.add(nb, t, out=nb)
         np.multiply(na, nb, out=na)
-        np.sqrt(na, out=na)
+        np.sqrt(na, out=t)
         with np.errstate(divide="ignore"):  # a line at infinity: reported as ideal afterwards
-            np.divide(o, na, out=o)
+            np.divide(o, t, out=o)
+        _flag_unsafe(na, o)
 
     return kernel
 
@@ -254,11 +269,12 @@ def _hyper_kernel(ins: list[np.ndarray], o: np.ndarray, ws: list[np.ndarray]) ->
         if i < k - 1:
             np.multiply(h[..., i], h[..., i], out=t)
             np.add(nn, t, out=nn)
-    np.sqrt(nn, out=nn)
-    np.multiply(nn, x[..., k - 1], out=nn)
+    np.sqrt(nn, out=t)
+    np.multiply(t, x[..., k - 1], out=t)
     with np.errstate(divide="ignore"):  # an ideal point or a line at infinity: reported afterwards
-        np.divide(o, nn, out=o)
+        np.divide(o, t, out=o)
     np.abs(o, out=o)
+    _flag_unsafe(nn, o)
 
 
 def _hyper_rows(rows: list[np.ndarray]) -> np.ndarray:
@@ -363,6 +379,7 @@ def _foot_kernel(factor: float) -> Callable[[list[np.ndarray], np.ndarray, list[
             np.multiply(d, h[..., i], out=t)
             np.subtract(oi, t, out=oi)
         np.multiply(s, x[..., k - 1], out=o[..., k - 1])
+        _flag_unsafe(s, o)
 
     return kernel
 
