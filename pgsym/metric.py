@@ -284,16 +284,21 @@ def is_perpendicular(a: Line | Line3 | Plane, b: Line | Line3 | Plane) -> bool:
     return is_zero(ab)
 
 
-def perpendicular_line(target: Line | Plane, point: Point | Point3) -> Line | Line3:
-    """The line through ``point`` perpendicular to a line of P² or to a plane.
+def perpendicular_line(target: Line | Plane | Line3, point: Point | Point3) -> Line | Line3:
+    """The line through ``point`` perpendicular to a line of P², to a plane, or meeting a line of space at right angles.
 
     In P² it is ``x × C*∞l = x × (l1, l2, 0)``: the join of the point with the pole of ``l`` w.r.t.
     ``C*∞`` (the ideal point of the normal). For a plane it is the join of the point with the ideal
-    point of the normal, ``Q*∞π``. The point must be finite.
+    point of the normal, ``Q*∞π``. For a line of space it is the join of the point with its foot on
+    the line (a point on the line raises :class:`~pgsym.errors.CoincidentPointsError`). The point
+    must be finite.
 
     >>> perpendicular_line(Line(1, -1, 0), Point(2, 0))        # to y = x through (2, 0): x + y = 2
     Line(1, 1, -2)
     >>> perpendicular_line(Plane(0, 0, 1, -3), Point3(1, 2, 5)) == Line3.join(Point3(1, 2, 5), Point3(1, 2, 0))
+    True
+    >>> x_axis = Line3.join(Point3(0, 0, 0), Point3(1, 0, 0))
+    >>> perpendicular_line(x_axis, Point3(4, 0, 2)) == Line3.join(Point3(4, 0, 2), Point3(4, 0, 0))
     True
     """
     if isinstance(target, Line) and isinstance(point, Point):
@@ -305,8 +310,16 @@ def perpendicular_line(target: Line | Plane, point: Point | Point3) -> Line | Li
         _normal3(target)
         _finite(point, "perpendicular_line")
         return Line3.join(point, Point3(*n))
+    if isinstance(target, Line3) and isinstance(point, Point3):
+        foot = orthogonal_projection(point, target)
+        if foot == point:
+            raise CoincidentPointsError(
+                f"perpendicular_line: {point!r} lies on {target!r}, so every line through it in the "
+                "perpendicular plane meets the line at right angles; use perpendicular_plane for that plane"
+            )
+        return Line3.join(point, foot)
     raise ObjectTypeError(
-        "perpendicular_line takes (Line, Point) or (Plane, Point3), "
+        "perpendicular_line takes (Line, Point), (Plane, Point3) or (Line3, Point3), "
         f"got {type(target).__name__}, {type(point).__name__}"
     )
 

@@ -176,6 +176,12 @@ def test_perpendicular_constructions():
             0,
         )
     )
+    # from (2, 0, 3) to the line through 0 with direction (1, 1, 0): the foot is (1, 1, 0)
+    diagonal = Line3.join(Point3(0, 0, 0), Point3(1, 1, 0))
+    p = perpendicular_line(diagonal, Point3(2, 0, 3))
+    assert p == Line3.join(Point3(2, 0, 3), Point3(1, 1, 0)) and is_perpendicular(p, diagonal)
+    with pytest.raises(CoincidentPointsError):
+        perpendicular_line(diagonal, Point3(2, 2, 0))
     # through (1, 0, 7), normal (1, 1, 0): x + y − 1 = 0
     assert perpendicular_plane(Line3.join(Point3(0, 0, 0), Point3(1, 1, 0)), Point3(1, 0, 7)) == Plane(1, 1, 0, -1)
 
