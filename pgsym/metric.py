@@ -608,7 +608,10 @@ def rotation(cos: Scalar, sin: Scalar, center: Point | None = None) -> Transform
 
     ``cos² + sin² = 1`` is checked exactly (:class:`~pgsym.errors.InvalidCoordinatesError`
     otherwise); every angle is allowed, the half-turn ``(−1, 0)`` and quarter-turns ``(0, ±1)``
-    included, and algebraic values such as ``(1/2, √3/2)``.
+    included, and algebraic values such as ``(1/2, √3/2)``. Symbolic values are allowed when the
+    identity is decidable (rational functions, e.g. ``((1 − t²)/(1 + t²), 2t/(1 + t²))``); ``cos(t)``
+    and ``sin(t)`` of a symbol raise :class:`~pgsym.errors.UndecidableError`, as every exact
+    decision about them does.
 
     >>> rotation(0, 1)(Point(1, 0)), rotation(-1, 0, Point(1, 1))(Point(0, 0))
     (Point(0, 1, 1), Point(2, 2, 1))

@@ -320,6 +320,12 @@ def test_rotations_quarter_and_half_turns_and_algebraic():
     assert r60 @ r60 @ r60 == rotation(-1, 0)  # three 60° turns make a half-turn
     with pytest.raises(InvalidCoordinatesError):
         rotation(3, 4)
+    # the rational parametrisation: ((1 − t²)/(1 + t²))² + (2t/(1 + t²))² = 1 identically
+    t = sympy.Symbol("t")
+    r = rotation((1 - t**2) / (1 + t**2), 2 * t / (1 + t**2))
+    assert r(Point(1, 0)) == Point(1 - t**2, 2 * t, 1 + t**2)
+    with pytest.raises(InvalidCoordinatesError):
+        rotation(t, 1 - t)
     with pytest.raises(InvalidCoordinatesError):
         rotation(Rational(1, 2), Rational(1, 2))
 
