@@ -1,0 +1,453 @@
+"""Angles, perpendicularity, distances, feet of perpendiculars and reflections on float64 arrays.
+
+The numeric twin of :mod:`pgsym.metric`, with the same formulas in the absolute
+(``C*∞ = diag(1, 1, 0)`` for lines of P², ``Q*∞ = diag(1, 1, 1, 0)`` for planes, ``Ω∞`` on the
+directions of lines of space). Arrays have shape ``(..., k)`` (or ``(k, ...)`` with ``axis=0``) and
+broadcast; the kind of object follows from ``k`` where it can: 3 for points and lines of P², 4 for
+points and planes of space, 6 for lines of space (Plücker coordinates in pgsym's order). Arrays
+carry no type, so the distances have one name per pair of kinds.
+
+The policy of :mod:`pgsym.numeric` holds: NaN or ±inf inputs raise
+:class:`~pgsym.errors.NonFiniteError` (or are masked with ``nonfinite="mask"``), and ideal elements
+(an ideal point, the line or plane at infinity, a line at infinity) raise
+:class:`~pgsym.errors.IdealPointError` (or are masked with ``ideal="mask"``). With either mask the
+result is ``(values, ok)``: ``ok`` is False, and the values NaN (False for booleans), on the
+rows that are masked. The fast formula runs first; only rows whose result is not finite are looked
+at again, to tell an ideal element and a bad input from an intermediate overflow, which is
+recomputed after scaling by powers of two.
+
+>>> import numpy as np
+>>> cos_angle([0.0, 1, 0], [[1.0, -1, 0], [1, 0, 5]])          # y = 0 against y = x and x = −5
+array([-0.70710678,  0.        ])
+>>> point_line_distance([[0.0, 0, 1], [1, 1, 0]], [1.0, 1, -2], ideal="mask")
+(array([1.41421356,        nan]), array([ True, False]))
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from typing import Any
+
+import numpy as np
+
+from ..errors import DimensionError, IdealPointError
+from ._arrays import NONFINITE, as_float_array, check_option, nonfinite_result, rowwise
+from .tolerances import INCIDENT_RTOL
+
+__all__ = [
+    "cos_angle",
+    "is_perpendicular",
+    "orthogonal_projection",
+    "point_distance",
+    "point_line_distance",
+    "point_plane_distance",
+    "reflect",
+]
+
+_IDEAL = ("raise", "mask")
+
+# the Euclidean part of each kind: the normal (a, b) of a line of P², (a, b, c) of a plane, and the
+# direction (−l14, l42, −l34) of a line of space; the signs cancel in every product of two of them
+_PART = {3: (0, 1), 4: (0, 1, 2), 6: (2, 4, 5)}
+
+# a squared norm outside [2⁻⁹⁶⁸, 2⁹⁶⁸] has overflowed, underflowed, or is about to lose digits in the
+# division that follows; such rows are recomputed after scaling (well inside float64's 2^±1022)
+_SQUARE_LO, _SQUARE_HI = 2.0**-968, 2.0**968
+
+
+def _flag_unsafe(square: np.ndarray, o: np.ndarray) -> None:
+    """Set to NaN the rows of ``o`` whose squared norm is out of the safe range, for the second look.
+
+    A quotient by an infinite norm would be a wrong but finite 0; two reductions over the block,
+    while it is in cache, decide the common case.
+    """
+    if not (square.min() >= _SQUARE_LO and square.max() <= _SQUARE_HI):
+        o[~((square >= _SQUARE_LO) & (square <= _SQUARE_HI))] = np.nan
+
+
+def _arrays(inputs: list[tuple[Any, str]], axis: int, function: str, sizes: tuple[int, ...]) -> list[np.ndarray]:
+    out = []
+    for x, name in inputs:
+        a = as_float_array(x, name, function)
+        if a.ndim == 0 or not -a.ndim <= axis < a.ndim or a.shape[axis] not in sizes:
+            raise DimensionError(
+                f"{function}: {name} must have {' or '.join(map(str, sizes))} homogeneous coordinates along "
+                f"axis {axis}, got an array of shape {a.shape}"
+            )
+        out.append(np.moveaxis(a, axis, -1))
+    if len({a.shape[-1] for a in out}) != 1:
+        raise DimensionError(
+            f"{function}: the arguments must be of one space, got {[a.shape[-1] for a in out]} coordinates"
+        )
+    return out
+
+
+def _scaled(rows: np.ndarray) -> np.ndarray:
+    """Each row divided by the power of two nearest its largest entry: exact, projectively nothing."""
+    big = np.max(np.abs(rows), axis=-1, keepdims=True)
+    return np.ldexp(rows, -np.frexp(np.where(big > 0, big, 1.0))[1])
+
+
+def _resolve(
+    result: Any,
+    arrays: list[np.ndarray],
+    function: str,
+    ideal: str,
+    nonfinite: str,
+    axis: int,
+    is_ideal: Callable[[list[np.ndarray]], np.ndarray],
+    robust: Callable[[list[np.ndarray]], np.ndarray] | None,
+    extra_bad: np.ndarray | None = None,
+) -> Any:
+    """Apply the policy to a kernel's ``(values, finite)``: sort the rows that are not finite (or ``extra_bad``)
+    into bad inputs, ideal elements and overflows; recompute overflows with ``robust``; raise or mask."""
+    values, ok = result
+    shape = ok.shape
+    vals = values if values.ndim == ok.ndim else np.moveaxis(values, axis, -1)
+    if ok.ndim == 0:  # one row: work on views of shape (1, ...)
+        vals, ok = vals[None], ok.reshape(1)
+        extra_bad = None if extra_bad is None else np.reshape(extra_bad, 1)
+    bad = ~ok if extra_bad is None else ~ok | extra_bad
+    masked = ideal == "mask" or nonfinite == "mask"
+    if not bad.any():
+        return (values, ok.reshape(shape)) if masked else values
+    index = tuple(np.nonzero(bad))
+    batch = ok.shape
+    rows = [np.broadcast_to(a, (*batch, a.shape[-1]))[index] for a in arrays]
+    bad_input = np.zeros(len(index[0]) if index else 1, bool)
+    for r in rows:
+        bad_input |= ~np.isfinite(r).all(axis=-1)
+    ideal_rows = ~bad_input & is_ideal(rows)
+    rest = ~bad_input & ~ideal_rows
+    if robust is not None and rest.any():
+        with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
+            again = robust([r[rest] for r in rows])
+        good = np.isfinite(again) if again.ndim == 1 else np.isfinite(again).all(axis=-1)
+        sub = tuple(i[rest] for i in index)
+        vals[tuple(i[good] for i in sub)] = again[good]
+        rest_idx = np.nonzero(rest)[0]
+        rest[rest_idx[good]] = False
+    ok = np.ones(batch, bool)
+    ok[index] = ~(bad_input | ideal_rows | rest)
+    not_finite = np.ones(batch, bool)
+    not_finite[index] = ~(bad_input | rest)
+    if nonfinite == "raise" and not not_finite.all():
+        nonfinite_result(vals, not_finite, "raise", function, arrays)
+    if ideal == "raise" and ideal_rows.any():
+        first = tuple(int(i[np.argmax(ideal_rows)]) for i in index)
+        n = int(ideal_rows.sum())
+        example = [np.broadcast_to(a, (*batch, a.shape[-1]))[first].tolist() for a in arrays]
+        raise IdealPointError(
+            f"{function}: {n} of the {ok.size} rows hold an ideal element (an ideal point, or a line or plane at "
+            f"infinity), the first at index {first}: {example}; "
+            "they have no finite distance, angle or foot. Pass ideal='mask' to get the other rows with a mask"
+        )
+    if masked:
+        vals[~ok] = False if vals.dtype == bool else np.nan
+        return values, ok.reshape(shape)
+    return values
+
+
+def _run(
+    kernel: Callable[[list[np.ndarray], np.ndarray, list[np.ndarray]], None],
+    function: str,
+    ins: list[tuple[Any, int, str]],
+    k_out: int | None,
+    out: np.ndarray | None,
+    axis: int,
+    n_scratch: int,
+    arrays: list[np.ndarray],
+) -> tuple[np.ndarray, np.ndarray]:
+    """The kernel's ``(values, finite)`` by :func:`~pgsym.numeric._arrays.rowwise`; an empty batch: empty arrays."""
+    batch = np.broadcast_shapes(*(a.shape[:-1] for a in arrays))
+    if 0 not in batch:
+        return rowwise(kernel, function, ins, k_out, out, axis, n_scratch, "mask")  # type: ignore[return-value]
+    if out is not None:
+        return out, np.ones(batch, bool)
+    values = np.empty(batch if k_out is None else (*batch, k_out))
+    return (values if k_out is None else np.moveaxis(values, -1, axis)), np.ones(batch, bool)
+
+
+def _check(ideal: str, nonfinite: str, function: str) -> None:
+    check_option(ideal, _IDEAL, "ideal", function)
+    check_option(nonfinite, NONFINITE, "nonfinite", function)
+
+
+# -- angles -----------------------------------------------------------------------------------------
+def _cos_kernel(part: tuple[int, ...]) -> Callable[[list[np.ndarray], np.ndarray, list[np.ndarray]], None]:
+    def kernel(ins: list[np.ndarray], o: np.ndarray, ws: list[np.ndarray]) -> None:
+        a, b = ins
+        t, na, nb = ws
+        first = True
+        for i in part:
+            ai, bi = a[..., i], b[..., i]
+            if first:
+                np.multiply(ai, bi, out=o)
+                np.multiply(ai, ai, out=na)
+                np.multiply(bi, bi, out=nb)
+                first = False
+                continue
+            np.multiply(ai, bi, out=t)
+            np.add(o, t, out=o)
+            np.multiply(ai, ai, out=t)
+            np.add(na, t, out=na)
+            np.multiply(bi, bi, out=t)
+            np.add(nb, t, out=nb)
+        np.multiply(na, nb, out=na)
+        np.sqrt(na, out=t)
+        with np.errstate(divide="ignore"):  # a line at infinity: reported as ideal afterwards
+            np.divide(o, t, out=o)
+        _flag_unsafe(na, o)
+
+    return kernel
+
+
+def _cos_rows(part: tuple[int, ...]) -> Callable[[list[np.ndarray]], np.ndarray]:
+    def robust(rows: list[np.ndarray]) -> np.ndarray:
+        a, b = (_scaled(r[:, list(part)]) for r in rows)
+        return np.einsum("ij,ij->i", a, b) / np.sqrt(np.einsum("ij,ij->i", a, a) * np.einsum("ij,ij->i", b, b))
+
+    return robust
+
+
+def _no_part(part: tuple[int, ...]) -> Callable[[list[np.ndarray]], np.ndarray]:
+    return lambda rows: np.logical_or.reduce([np.all(r[:, list(part)] == 0, axis=-1) for r in rows])
+
+
+def cos_angle(
+    a: Any, b: Any, *, ideal: str = "raise", nonfinite: str = "raise", axis: int = -1, out: np.ndarray | None = None
+) -> Any:
+    """``cos θ = aᵀAb / √((aᵀAa)(bᵀAb))`` for broadcast arrays of oriented lines of P² (k = 3), planes
+    (k = 4, ``A = Q*∞``) or lines of space (k = 6, their directions): the numeric :func:`pgsym.metric.cos_angle`.
+
+    >>> cos_angle([1.0, 0, 0, 0], [1.0, 1, 1, 1])                   # planes: 1 / √3
+    np.float64(0.5773502691896258)
+    >>> cos_angle([0.0, 0, 1], [1.0, 0, 0])   # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    pgsym.errors.IdealPointError: cos_angle: 1 of the 1 rows hold an ideal element...
+    """
+    _check(ideal, nonfinite, "cos_angle")
+    arrays = _arrays([(a, "a"), (b, "b")], axis, "cos_angle", (3, 4, 6))
+    part = _PART[arrays[0].shape[-1]]
+    k = arrays[0].shape[-1]
+    result = _run(_cos_kernel(part), "cos_angle", [(a, k, "a"), (b, k, "b")], None, out, axis, 3, arrays)
+    values = _resolve(result, arrays, "cos_angle", ideal, nonfinite, axis, _no_part(part), _cos_rows(part))
+    if not isinstance(values, tuple) and values.ndim == 0:
+        return values[()]
+    return values
+
+
+def is_perpendicular(
+    a: Any, b: Any, *, rtol: float = INCIDENT_RTOL, ideal: str = "raise", nonfinite: str = "raise", axis: int = -1
+) -> Any:
+    """True where ``|cos θ| ≤ rtol``: lines of P² (k = 3), planes (k = 4) or lines of space (k = 6).
+
+    The test is on a cosine, so it is scale-free, as :func:`pgsym.numeric.incident` is (same default
+    tolerance, :data:`~pgsym.numeric.tolerances.INCIDENT_RTOL`); ``rtol=0`` asks for an exact zero.
+
+    >>> is_perpendicular([1.0, 2, 3], [[2.0, -1, 7], [1, 1, 0]])
+    array([ True, False])
+    """
+    result = cos_angle(a, b, ideal=ideal, nonfinite=nonfinite, axis=axis)
+    if isinstance(result, tuple):
+        c, ok = result
+        return np.asarray(np.abs(np.nan_to_num(c, nan=1.0)) <= rtol) & ok, ok
+    return np.asarray(np.abs(result) <= rtol)
+
+
+# -- distances --------------------------------------------------------------------------------------
+def _hyper_kernel(ins: list[np.ndarray], o: np.ndarray, ws: list[np.ndarray]) -> None:
+    x, h = ins
+    t, nn = ws
+    k = x.shape[-1]
+    np.multiply(x[..., 0], h[..., 0], out=o)
+    np.multiply(h[..., 0], h[..., 0], out=nn)
+    for i in range(1, k):
+        np.multiply(x[..., i], h[..., i], out=t)
+        np.add(o, t, out=o)
+        if i < k - 1:
+            np.multiply(h[..., i], h[..., i], out=t)
+            np.add(nn, t, out=nn)
+    np.sqrt(nn, out=t)
+    np.multiply(t, x[..., k - 1], out=t)
+    with np.errstate(divide="ignore"):  # an ideal point or a line at infinity: reported afterwards
+        np.divide(o, t, out=o)
+    np.abs(o, out=o)
+    _flag_unsafe(nn, o)
+
+
+def _hyper_rows(rows: list[np.ndarray]) -> np.ndarray:
+    x, h = (_scaled(r) for r in rows)
+    n = h[:, :-1]
+    return np.abs(np.einsum("ij,ij->i", x, h)) / (np.sqrt(np.einsum("ij,ij->i", n, n)) * np.abs(x[:, -1]))
+
+
+def _hyper_ideal(rows: list[np.ndarray]) -> np.ndarray:
+    x, h = rows
+    return (x[:, -1] == 0) | np.all(h[:, :-1] == 0, axis=-1)
+
+
+def _point_hyperplane(x: Any, h: Any, k: int, function: str, ideal: str, nonfinite: str, axis: int) -> Any:
+    _check(ideal, nonfinite, function)
+    arrays = _arrays([(x, "x"), (h, "h")], axis, function, (k,))
+    result = _run(_hyper_kernel, function, [(x, k, "x"), (h, k, "h")], None, None, axis, 2, arrays)
+    values = _resolve(result, arrays, function, ideal, nonfinite, axis, _hyper_ideal, _hyper_rows)
+    return values[()] if not isinstance(values, tuple) and values.ndim == 0 else values
+
+
+def point_line_distance(x: Any, l: Any, *, ideal: str = "raise", nonfinite: str = "raise", axis: int = -1) -> Any:
+    """``|lᵀx| / (√(l1² + l2²) |x3|)``: distances of points of P² from lines (numeric :func:`pgsym.metric.distance`).
+
+    >>> point_line_distance([1.0, 2, 1], [3.0, 4, 0])               # (3 + 8) / 5
+    np.float64(2.2)
+    """
+    return _point_hyperplane(x, l, 3, "point_line_distance", ideal, nonfinite, axis)
+
+
+def point_plane_distance(x: Any, p: Any, *, ideal: str = "raise", nonfinite: str = "raise", axis: int = -1) -> Any:
+    """``|πᵀX| / (|n| |x4|)``: distances of points of space from planes with normals ``n``.
+
+    >>> point_plane_distance([[1.0, 2, 3, 1], [0, 0, 0, 1]], [0.0, 0, 2, 0])
+    array([3., 0.])
+    """
+    return _point_hyperplane(x, p, 4, "point_plane_distance", ideal, nonfinite, axis)
+
+
+def _point_kernel(ins: list[np.ndarray], o: np.ndarray, ws: list[np.ndarray]) -> None:
+    x, y = ins
+    t, u, rx, ry = ws
+    k = x.shape[-1]
+    with np.errstate(divide="ignore"):  # ideal points: reported afterwards
+        np.reciprocal(x[..., k - 1], out=rx)
+        np.reciprocal(y[..., k - 1], out=ry)
+    for i in range(k - 1):
+        np.multiply(x[..., i], rx, out=t)
+        np.multiply(y[..., i], ry, out=u)
+        np.subtract(t, u, out=t)
+        if i == 0:
+            np.multiply(t, t, out=o)
+        else:
+            np.multiply(t, t, out=t)
+            np.add(o, t, out=o)
+    np.sqrt(o, out=o)
+
+
+def point_distance(x: Any, y: Any, *, ideal: str = "raise", nonfinite: str = "raise", axis: int = -1) -> Any:
+    """Euclidean distances between broadcast arrays of points of P² (k = 3) or of space (k = 4).
+
+    >>> point_distance([[3.0, 4, 1], [2, 2, 2]], [0.0, 0, 1])
+    array([5.        , 1.41421356])
+    """
+    _check(ideal, nonfinite, "point_distance")
+    arrays = _arrays([(x, "x"), (y, "y")], axis, "point_distance", (3, 4))
+    k = arrays[0].shape[-1]
+    result = _run(_point_kernel, "point_distance", [(x, k, "x"), (y, k, "y")], None, None, axis, 4, arrays)
+
+    def ideal_rows(rows: list[np.ndarray]) -> np.ndarray:
+        return (rows[0][:, -1] == 0) | (rows[1][:, -1] == 0)
+
+    values = _resolve(result, arrays, "point_distance", ideal, nonfinite, axis, ideal_rows, _robust_point)
+    return values[()] if not isinstance(values, tuple) and values.ndim == 0 else values
+
+
+def _robust_point(rows: list[np.ndarray]) -> np.ndarray:
+    x, y = rows
+    d = x[:, :-1] / x[:, -1:] - y[:, :-1] / y[:, -1:]
+    return np.hypot.reduce(d, axis=-1)
+
+
+# -- feet of perpendiculars and reflections ----------------------------------------------------------
+def _foot_kernel(factor: float) -> Callable[[list[np.ndarray], np.ndarray, list[np.ndarray]], None]:
+    def kernel(ins: list[np.ndarray], o: np.ndarray, ws: list[np.ndarray]) -> None:
+        x, h = ins
+        t, s, d = ws
+        k = x.shape[-1]
+        np.multiply(h[..., 0], h[..., 0], out=s)
+        np.multiply(x[..., 0], h[..., 0], out=d)
+        for i in range(1, k):
+            np.multiply(x[..., i], h[..., i], out=t)
+            np.add(d, t, out=d)
+            if i < k - 1:
+                np.multiply(h[..., i], h[..., i], out=t)
+                np.add(s, t, out=s)
+        if factor != 1.0:
+            np.multiply(d, factor, out=d)
+        for i in range(k - 1):  # s x_i − factor (h·x) n_i
+            oi = o[..., i]
+            np.multiply(s, x[..., i], out=oi)
+            np.multiply(d, h[..., i], out=t)
+            np.subtract(oi, t, out=oi)
+        np.multiply(s, x[..., k - 1], out=o[..., k - 1])
+        _flag_unsafe(s, o)
+
+    return kernel
+
+
+def _foot_rows(factor: float) -> Callable[[list[np.ndarray]], np.ndarray]:
+    def robust(rows: list[np.ndarray]) -> np.ndarray:
+        x, h = (_scaled(r) for r in rows)
+        n = h[:, :-1]
+        s = np.einsum("ij,ij->i", n, n)[:, None]
+        d = factor * np.einsum("ij,ij->i", x, h)[:, None]
+        out = s * x
+        out[:, :-1] -= d * n
+        return _scaled(out)
+
+    return robust
+
+
+def orthogonal_projection(
+    x: Any, h: Any, *, ideal: str = "raise", nonfinite: str = "raise", axis: int = -1, out: np.ndarray | None = None
+) -> Any:
+    """Feet of the perpendiculars from points onto lines of P² (k = 3) or planes (k = 4), homogeneous.
+
+    ``s x − (hᵀx)(n, 0)`` with ``n`` the normal and ``s = n·n``, the formula of
+    :func:`pgsym.metric.orthogonal_projection` (the same numbers on integer data). Ideal points and
+    the line or plane at infinity raise :class:`~pgsym.errors.IdealPointError` (or are masked).
+
+    >>> orthogonal_projection([2.0, 0, 1], [1.0, -1, 0])               # onto y = x: (2, 2, 2)
+    array([2., 2., 2.])
+    """
+    _check(ideal, nonfinite, "orthogonal_projection")
+    arrays = _arrays([(x, "x"), (h, "h")], axis, "orthogonal_projection", (3, 4))
+    k = arrays[0].shape[-1]
+    ins = [(x, k, "x"), (h, k, "h")]
+    result = _run(_foot_kernel(1.0), "orthogonal_projection", ins, k, out, axis, 3, arrays)
+    last = np.moveaxis(result[0], axis, -1)[..., -1]
+    return _resolve(
+        result, arrays, "orthogonal_projection", ideal, nonfinite, axis, _hyper_ideal, _foot_rows(1.0), last == 0
+    )
+
+
+def reflect(
+    x: Any,
+    mirror: Any,
+    *,
+    ideal: str = "raise",
+    nonfinite: str = "raise",
+    axis: int = -1,
+    out: np.ndarray | None = None,
+) -> Any:
+    """Mirror images of points of P² in lines (k = 3), or of points of space in planes (k = 4), homogeneous.
+
+    ``s x − 2 (mirrorᵀx)(n, 0)``, the matrix of :func:`pgsym.metric.reflection` applied to ``x``. Ideal
+    points are reflected like any point (directions are mirrored); a mirror at infinity raises
+    :class:`~pgsym.errors.IdealPointError` (or is masked).
+
+    >>> reflect([[2.0, 5, 1], [1, 0, 0]], [1.0, -1, 0])               # in y = x
+    array([[10.,  4.,  2.],
+           [ 0.,  2.,  0.]])
+    """
+    _check(ideal, nonfinite, "reflect")
+    arrays = _arrays([(x, "x"), (mirror, "mirror")], axis, "reflect", (3, 4))
+    k = arrays[0].shape[-1]
+    ins = [(x, k, "x"), (mirror, k, "mirror")]
+    result = _run(_foot_kernel(2.0), "reflect", ins, k, out, axis, 3, arrays)
+    at_infinity = np.all(arrays[1][..., :-1] == 0, axis=-1)
+    extra = np.broadcast_to(at_infinity, result[1].shape) if at_infinity.any() else None
+
+    def mirror_ideal(rows: list[np.ndarray]) -> np.ndarray:
+        return np.all(rows[1][:, :-1] == 0, axis=-1)
+
+    return _resolve(result, arrays, "reflect", ideal, nonfinite, axis, mirror_ideal, _foot_rows(2.0), extra)
