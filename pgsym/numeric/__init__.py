@@ -85,6 +85,15 @@ from ._arrays import CHUNK, OptionError
 from .classify import classify_matrix
 from .convert import from_array, to_array
 from .homogeneous import dehomogenize, homogenize, is_ideal
+from .metric import (
+    cos_angle,
+    is_perpendicular,
+    orthogonal_projection,
+    point_distance,
+    point_line_distance,
+    point_plane_distance,
+    reflect,
+)
 from .nullspace import nullspace_svd, numeric_rank, plane_through_numeric, point_on_planes_numeric
 from .plane import cross, incident, is_zero_vector, join, meet
 from .plucker import klein_form, plucker_join, plucker_meet
@@ -108,6 +117,7 @@ __all__ = [
     "adjugate",
     "bracket",
     "classify_matrix",
+    "cos_angle",
     "cross",
     "cross_ratio",
     "cross_ratio_homogeneous",
@@ -116,18 +126,24 @@ __all__ = [
     "homogenize",
     "incident",
     "is_ideal",
+    "is_perpendicular",
     "is_zero_vector",
     "join",
     "klein_form",
     "meet",
     "nullspace_svd",
     "numeric_rank",
+    "orthogonal_projection",
     "plane_through",
     "plane_through_numeric",
     "plucker_join",
     "plucker_meet",
+    "point_distance",
+    "point_line_distance",
     "point_on_planes",
     "point_on_planes_numeric",
+    "point_plane_distance",
+    "reflect",
     "svd_steps",
     "to_array",
     "transform_conics",
