@@ -233,6 +233,8 @@ def rowwise(
             return (result, checked[1]) if nonfinite == "mask" else result
         views = flat  # type: ignore[assignment]
     rows = o_rows.shape[0]
+    if rows == 0:  # an empty batch: an empty result (and an empty mask)
+        return (result, np.ones(batch, bool)) if nonfinite == "mask" else result
     block = min(CHUNK, rows)
     scratch = [np.empty(block) for _ in range(n_scratch)]
     suspect = []

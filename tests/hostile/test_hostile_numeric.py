@@ -404,3 +404,14 @@ def test_dlt_both_sets_at_extreme_scale(label, solve, src, s):
     # float64 matrix holds it, and the answer says so rather than flushing v to zero.
     with pytest.raises(InputLimitError):
         solve(src * s, _image(HP, src) * s)
+
+
+@pytest.mark.parametrize(("f", "k", "matrix"), [
+    (pn.join, 3, None), (pn.meet, 3, None), (pn.cross, 3, None), (pn.incident, 3, None),
+    (pn.plucker_join, 4, None), (pn.cos_angle, 3, None), (pn.point_distance, 3, None),
+    (pn.transform_points, 3, np.eye(3)), (pn.transform_lines, 3, np.eye(3)),
+], ids=lambda v: getattr(v, "__name__", None) or str(v))
+def test_an_empty_batch_gives_an_empty_result(f, k, matrix):
+    empty = np.zeros((0, k))
+    args = (matrix, empty) if matrix is not None else (empty, empty)
+    assert np.asarray(f(*args)).shape[0] == 0
