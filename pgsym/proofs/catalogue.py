@@ -135,7 +135,7 @@ def _fixed(c: Claim, name: str, kind: str, *coords: int) -> object:
 # == Part I: points and lines ===================================================================
 
 @_entry("join-contains-both-points", "The join of two points contains both", "points-and-lines")
-def _(c: Claim) -> None:
+def _join_contains_both_points(c: Claim) -> None:
     """The line l = A × B passes through A and through B."""
     A, B = c.free_point("A"), c.free_point("B")
     l = c.join("l", A, B)
@@ -144,7 +144,7 @@ def _(c: Claim) -> None:
 
 
 @_entry("meet-lies-on-both-lines", "The meet of two lines lies on both", "points-and-lines")
-def _(c: Claim) -> None:
+def _meet_lies_on_both_lines(c: Claim) -> None:
     """The point x = l × m lies on l and on m."""
     l, m = c.free_line("l"), c.free_line("m")
     x = c.meet("x", l, m)
@@ -153,7 +153,7 @@ def _(c: Claim) -> None:
 
 
 @_entry("join-is-determinant", "The equation of the join is a determinant", "points-and-lines")
-def _(c: Claim) -> None:
+def _join_is_determinant(c: Claim) -> None:
     """For every point X, (A × B)ᵀX = det[X A B]."""
     A, B, X = c.free_point("A"), c.free_point("B"), c.free_point("X")
     l = c.join("l", A, B)
@@ -163,7 +163,7 @@ def _(c: Claim) -> None:
 
 
 @_entry("collinear-iff-determinant", "Collinear points have a zero determinant", "points-and-lines")
-def _(c: Claim) -> None:
+def _collinear_iff_determinant(c: Claim) -> None:
     """A point C = sA + tB on the line AB gives det[A B C] = 0."""
     s, t = c.params("s t")
     A, B = c.free_point("A"), c.free_point("B")
@@ -172,7 +172,7 @@ def _(c: Claim) -> None:
 
 
 @_entry("concurrent-iff-determinant", "Concurrent lines have a zero determinant", "points-and-lines")
-def _(c: Claim) -> None:
+def _concurrent_iff_determinant(c: Claim) -> None:
     """A line n = s l + t m of the pencil of l and m gives det[l m n] = 0."""
     s, t = c.params("s t")
     l, m = c.free_line("l"), c.free_line("m")
@@ -181,7 +181,7 @@ def _(c: Claim) -> None:
 
 
 @_entry("pencil-passes-through-meet", "Every line of a pencil passes through its centre", "points-and-lines")
-def _(c: Claim) -> None:
+def _pencil_passes_through_meet(c: Claim) -> None:
     """The lines s l + t m all pass through l × m."""
     s, t = c.params("s t")
     l, m = c.free_line("l"), c.free_line("m")
@@ -190,7 +190,7 @@ def _(c: Claim) -> None:
 
 
 @_entry("duality-join-meet", "Duality: join and meet are the same operation", "points-and-lines")
-def _(c: Claim) -> None:
+def _duality_join_meet(c: Claim) -> None:
     """The line through A and B has the coordinates of the point where the lines with A's and B's coordinates meet."""
     A, B = c.free_point("A"), c.free_point("B")
     a = c.line("a", *A.data)
@@ -199,7 +199,7 @@ def _(c: Claim) -> None:
 
 
 @_entry("join-ignores-scale", "The join does not depend on the scale of the points", "points-and-lines")
-def _(c: Claim) -> None:
+def _join_ignores_scale(c: Claim) -> None:
     """(λA) × B is proportional to A × B for λ ≠ 0."""
     (lam,) = c.params("lam")
     A, B = c.free_point("A"), c.free_point("B")
@@ -210,7 +210,7 @@ def _(c: Claim) -> None:
 # == ideal points ===============================================================================
 
 @_entry("parallel-lines-meet-at-infinity", "Parallel lines meet on the line at infinity", "ideal-points")
-def _(c: Claim) -> None:
+def _parallel_lines_meet_at_infinity(c: Claim) -> None:
     """The lines ax + by + p = 0 and ax + by + q = 0 meet in a point with third coordinate 0."""
     a, b, p, q = c.params("a b p q")
     x = c.meet("x", c.line("l", a, b, p), c.line("m", a, b, q))
@@ -218,7 +218,7 @@ def _(c: Claim) -> None:
 
 
 @_entry("ideal-point-is-direction", "A line meets the line at infinity in its direction", "ideal-points")
-def _(c: Claim) -> None:
+def _ideal_point_is_direction(c: Claim) -> None:
     """l × l∞ is proportional to the direction (b, −a, 0) of l = (a, b, c)."""
     a, b, cc = c.params("a b c")
     l = c.line("l", a, b, cc)
@@ -227,7 +227,7 @@ def _(c: Claim) -> None:
 
 
 @_entry("ideal-points-span-line-at-infinity", "Two ideal points span the line at infinity", "ideal-points")
-def _(c: Claim) -> None:
+def _ideal_points_span_line_at_infinity(c: Claim) -> None:
     """The join of (p, q, 0) and (r, s, 0) is proportional to (0, 0, 1)."""
     p, q, r, s = c.params("p q r s")
     l = c.join("l", c.point("U", p, q, 0), c.point("V", r, s, 0))
@@ -235,7 +235,7 @@ def _(c: Claim) -> None:
 
 
 @_entry("parallel-through-a-point", "The line through C and the ideal point of AB is parallel to AB", "ideal-points")
-def _(c: Claim) -> None:
+def _parallel_through_a_point(c: Claim) -> None:
     """m = C × (l × l∞) has the same normal direction as l = A × B."""
     A, B, C = c.free_point("A"), c.free_point("B"), c.free_point("C")
     l = c.join("l", A, B)
@@ -248,7 +248,7 @@ def _(c: Claim) -> None:
 # == projective transformations ==================================================================
 
 @_entry("lines-transform-by-inverse-transpose", "Lines transform by H⁻ᵀ", "projective-transformations")
-def _(c: Claim) -> None:
+def _lines_transform_by_inverse_transpose(c: Claim) -> None:
     """The join of HA and HB is proportional to adj(H)ᵀ(A × B) = det(H) H⁻ᵀ(A × B)."""
     A, B = c.free_point("A"), c.free_point("B")
     H = c.free_matrix("H", 3)
@@ -257,7 +257,7 @@ def _(c: Claim) -> None:
 
 
 @_entry("homography-preserves-incidence", "A homography preserves incidence", "projective-transformations")
-def _(c: Claim) -> None:
+def _homography_preserves_incidence(c: Claim) -> None:
     """If P lies on l then HP lies on H⁻ᵀl."""
     P, Q = c.free_point("P"), c.free_point("Q")
     H = c.free_matrix("H", 3)
@@ -267,7 +267,7 @@ def _(c: Claim) -> None:
 
 @_entry("homography-preserves-collinearity", "A homography maps collinear points to collinear points",
         "projective-transformations")
-def _(c: Claim) -> None:
+def _homography_preserves_collinearity(c: Claim) -> None:
     """det[HA HB HC] = 0 when C = sA + tB."""
     s, t = c.params("s t")
     A, B = c.free_point("A"), c.free_point("B")
@@ -277,7 +277,7 @@ def _(c: Claim) -> None:
 
 
 @_entry("adjugate-is-scaled-inverse", "H adj(H) = det(H) I", "projective-transformations")
-def _(c: Claim) -> None:
+def _adjugate_is_scaled_inverse(c: Claim) -> None:
     """The adjugate is the inverse up to the scale det H, so it can replace H⁻¹ in homogeneous formulas."""
     H = c.free_matrix("H", 3, invertible=False)
 
@@ -289,7 +289,7 @@ def _(c: Claim) -> None:
 
 
 @_entry("conics-transform-by-inverse", "Conics transform by C ↦ H⁻ᵀ C H⁻¹", "projective-transformations")
-def _(c: Claim) -> None:
+def _conics_transform_by_inverse(c: Claim) -> None:
     """(HX)ᵀ adj(H)ᵀ C adj(H) (HX) = det(H)² XᵀCX: a point of C maps to a point of the image conic."""
     a, b, cc, d, e, f = c.params("a b c d e f")
     C = c.conic("C", [[a, b, d], [b, cc, e], [d, e, f]])
@@ -309,14 +309,14 @@ def _dof(c: Claim, entries: sympy.Matrix, params: tuple, dof: int) -> None:
 
 
 @_entry("dof-projective-2d", "A 2D homography has 8 degrees of freedom", "hierarchy-2d")
-def _(c: Claim) -> None:
+def _dof_projective_2d(c: Claim) -> None:
     """Nine entries up to a common scale: the family of all 3×3 matrices has dimension 8 in P⁸."""
     hs = c.params(" ".join(f"h{i}" for i in range(1, 10)))
     _dof(c, sympy.Matrix(3, 3, hs), hs, 8)
 
 
 @_entry("dof-affine-2d", "A 2D affinity has 6 degrees of freedom", "hierarchy-2d")
-def _(c: Claim) -> None:
+def _dof_affine_2d(c: Claim) -> None:
     """[[a, b, tx], [c, d, ty], [0, 0, 1]] depends on 6 independent parameters."""
     ps = c.params("a b c d tx ty")
     a, b, cc, d, tx, ty = ps
@@ -324,7 +324,7 @@ def _(c: Claim) -> None:
 
 
 @_entry("dof-similarity-2d", "A 2D similarity has 4 degrees of freedom", "hierarchy-2d")
-def _(c: Claim) -> None:
+def _dof_similarity_2d(c: Claim) -> None:
     """[[a, −b, tx], [b, a, ty], [0, 0, 1]] (a = s cos θ, b = s sin θ) has 4."""
     ps = c.params("a b tx ty")
     a, b, tx, ty = ps
@@ -332,7 +332,7 @@ def _(c: Claim) -> None:
 
 
 @_entry("dof-euclidean-2d", "A 2D Euclidean motion has 3 degrees of freedom", "hierarchy-2d")
-def _(c: Claim) -> None:
+def _dof_euclidean_2d(c: Claim) -> None:
     """A rotation by the rational parametrisation cos θ = (1 − t²)/(1 + t²), sin θ = 2t/(1 + t²), and a translation."""
     ps = c.params("t tx ty")
     t, tx, ty = ps
@@ -341,21 +341,21 @@ def _(c: Claim) -> None:
 
 
 @_entry("dof-projective-3d", "A 3D homography has 15 degrees of freedom", "hierarchy-3d")
-def _(c: Claim) -> None:
+def _dof_projective_3d(c: Claim) -> None:
     """Sixteen entries up to a common scale."""
     hs = c.params(" ".join(f"h{i}" for i in range(1, 17)))
     _dof(c, sympy.Matrix(4, 4, hs), hs, 15)
 
 
 @_entry("dof-affine-3d", "A 3D affinity has 12 degrees of freedom", "hierarchy-3d")
-def _(c: Claim) -> None:
+def _dof_affine_3d(c: Claim) -> None:
     """A 3×4 top block and the row (0, 0, 0, 1)."""
     hs = c.params(" ".join(f"a{i}" for i in range(1, 13)))
     _dof(c, sympy.Matrix(3, 4, hs).col_join(sympy.Matrix([[0, 0, 0, 1]])), hs, 12)
 
 
 @_entry("dof-similarity-3d", "A 3D similarity has 7 degrees of freedom", "hierarchy-3d")
-def _(c: Claim) -> None:
+def _dof_similarity_3d(c: Claim) -> None:
     """Scale s, a rotation by the Cayley transform of (a, b, c), and a translation."""
     ps = c.params("a b c s t1 t2 t3")
     a, b, cc, s, t1, t2, t3 = ps
@@ -365,7 +365,7 @@ def _(c: Claim) -> None:
 
 
 @_entry("dof-euclidean-3d", "A 3D Euclidean motion has 6 degrees of freedom", "hierarchy-3d")
-def _(c: Claim) -> None:
+def _dof_euclidean_3d(c: Claim) -> None:
     """A rotation by the Cayley transform of (a, b, c) and a translation."""
     ps = c.params("a b c t1 t2 t3")
     a, b, cc, t1, t2, t3 = ps
@@ -393,7 +393,7 @@ def _euclidean(c: Claim) -> object:
 
 
 @_entry("affine-fixes-line-at-infinity", "An affinity maps the line at infinity to itself", "hierarchy-2d")
-def _(c: Claim) -> None:
+def _affine_fixes_line_at_infinity(c: Claim) -> None:
     """adj(T)ᵀ (0, 0, 1) is proportional to (0, 0, 1)."""
     T = _affine(c)
     linf = c.line("l_inf", 0, 0, 1)
@@ -401,7 +401,7 @@ def _(c: Claim) -> None:
 
 
 @_entry("affine-preserves-parallelism", "An affinity maps parallel lines to parallel lines", "hierarchy-2d")
-def _(c: Claim) -> None:
+def _affine_preserves_parallelism(c: Claim) -> None:
     """The images of ax + by + p = 0 and ax + by + q = 0 still meet on the line at infinity."""
     T = _affine(c)
     a, b, p, q = c.params("la lb p q")
@@ -411,7 +411,7 @@ def _(c: Claim) -> None:
 
 
 @_entry("similarity-fixes-circular-points", "A similarity fixes the circular points", "hierarchy-2d")
-def _(c: Claim) -> None:
+def _similarity_fixes_circular_points(c: Claim) -> None:
     """S (1, i, 0) is proportional to (1, i, 0); i is a parameter with the hypothesis i² + 1 = 0."""
     S = _similarity(c)
     (i,) = c.params("i")
@@ -421,7 +421,7 @@ def _(c: Claim) -> None:
 
 
 @_entry("euclidean-preserves-distance", "A Euclidean motion preserves distances", "hierarchy-2d")
-def _(c: Claim) -> None:
+def _euclidean_preserves_distance(c: Claim) -> None:
     """|EA − EB|² = |A − B|² for the rational rotation and a translation."""
     E = _euclidean(c)
     A, B = c.free_point("A"), c.free_point("B")
@@ -431,7 +431,7 @@ def _(c: Claim) -> None:
 
 
 @_entry("similarity-preserves-length-ratio", "A similarity preserves ratios of lengths", "hierarchy-2d")
-def _(c: Claim) -> None:
+def _similarity_preserves_length_ratio(c: Claim) -> None:
     """|SA SB|² / |SA SC|² = |AB|² / |AC|²."""
     S = _similarity(c)
     A, B, C = c.free_point("A"), c.free_point("B"), c.free_point("C")
@@ -442,7 +442,7 @@ def _(c: Claim) -> None:
 
 
 @_entry("affine-preserves-area-ratio", "An affinity preserves ratios of areas", "hierarchy-2d")
-def _(c: Claim) -> None:
+def _affine_preserves_area_ratio(c: Claim) -> None:
     """area(T A, T B, T C) / area(T A, T B, T D) = area(A, B, C) / area(A, B, D)."""
     T = _affine(c)
     A, B, C, D = (c.free_point(n) for n in "ABCD")
@@ -454,7 +454,7 @@ def _(c: Claim) -> None:
 
 @_entry("homography-preserves-cross-ratio", "A homography preserves the cross-ratio of collinear points",
         "projective-transformations")
-def _(c: Claim) -> None:
+def _homography_preserves_cross_ratio(c: Claim) -> None:
     """(A, B; C, D) of four collinear points, seen from O, equals that of their images seen from another point O2."""
     s, t = c.params("s t")
     A, B, O, O2 = c.free_point("A"), c.free_point("B"), c.free_point("O"), c.free_point("O2")
@@ -472,7 +472,7 @@ def _four(c: Claim) -> tuple:
 
 
 @_entry("cross-ratio-invariance", "The cross-ratio is invariant under projective maps of the line", "projective-line")
-def _(c: Claim) -> None:
+def _cross_ratio_invariance(c: Claim) -> None:
     """(MA, MB; MC, MD) = (A, B; C, D) for every invertible 2×2 matrix M."""
     A, B, C, D = _four(c)
     M = c.free_matrix("M", 2)
@@ -481,7 +481,7 @@ def _(c: Claim) -> None:
 
 
 @_entry("cross-ratio-symmetries", "The cross-ratio is unchanged by swapping both pairs", "projective-line")
-def _(c: Claim) -> None:
+def _cross_ratio_symmetries(c: Claim) -> None:
     """(A, B; C, D) = (B, A; D, C) = (C, D; A, B)."""
     A, B, C, D = _four(c)
     cr = c.cross_ratio("cr", A, B, C, D)
@@ -490,7 +490,7 @@ def _(c: Claim) -> None:
 
 
 @_entry("cross-ratio-reciprocal", "Swapping C and D inverts the cross-ratio", "projective-line")
-def _(c: Claim) -> None:
+def _cross_ratio_reciprocal(c: Claim) -> None:
     """(A, B; C, D) · (A, B; D, C) = 1."""
     A, B, C, D = _four(c)
     r, s = c.cross_ratio("r", A, B, C, D), c.cross_ratio("s", A, B, D, C)
@@ -499,7 +499,7 @@ def _(c: Claim) -> None:
 
 
 @_entry("cross-ratio-complement", "Swapping B and C complements the cross-ratio", "projective-line")
-def _(c: Claim) -> None:
+def _cross_ratio_complement(c: Claim) -> None:
     """(A, B; C, D) + (A, C; B, D) = 1."""
     A, B, C, D = _four(c)
     r, s = c.cross_ratio("r", A, B, C, D), c.cross_ratio("s", A, C, B, D)
@@ -509,7 +509,7 @@ def _(c: Claim) -> None:
 
 
 @_entry("harmonic-conjugate-is-harmonic", "The harmonic conjugate gives the cross-ratio −1", "projective-line")
-def _(c: Claim) -> None:
+def _harmonic_conjugate_is_harmonic(c: Claim) -> None:
     """D = [A C] B + [B C] A satisfies (A, B; C, D) = −1."""
     A, B, C = (c.free_point1(n) for n in "ABC")
     D = c.harmonic_conjugate("D", A, B, C)
@@ -518,7 +518,7 @@ def _(c: Claim) -> None:
 
 @_entry("harmonic-conjugate-involution", "Taking the harmonic conjugate twice gives the point back",
         "projective-line")
-def _(c: Claim) -> None:
+def _harmonic_conjugate_involution(c: Claim) -> None:
     """The harmonic conjugate of D = h(A, B; C) is C again."""
     A, B, C = (c.free_point1(n) for n in "ABC")
     D = c.harmonic_conjugate("D", A, B, C)
@@ -533,7 +533,7 @@ def _generic_conic(c: Claim) -> object:
 
 
 @_entry("conic-through-five-points", "The conic through five points contains them", "conics")
-def _(c: Claim) -> None:
+def _conic_through_five_points(c: Claim) -> None:
     """The signed 5×5 minors of the 5×6 system give a conic through all five points."""
     pts = [c.free_point(f"P{i}") for i in range(1, 6)]
     C = c.conic_through("C", *pts)
@@ -542,7 +542,7 @@ def _(c: Claim) -> None:
 
 
 @_entry("tangent-touches-conic", "The polar of a point on a conic is tangent there", "conics")
-def _(c: Claim) -> None:
+def _tangent_touches_conic(c: Claim) -> None:
     """If PᵀCP = 0 then l = CP passes through P and lᵀ adj(C) l = 0 (l is a tangent line)."""
     C = _generic_conic(c)
     x, y = c.params("x y")
@@ -556,7 +556,7 @@ def _(c: Claim) -> None:
 
 
 @_entry("pole-polar-reciprocity", "La Hire: Q on the polar of P iff P on the polar of Q", "conics")
-def _(c: Claim) -> None:
+def _pole_polar_reciprocity(c: Claim) -> None:
     """For Q on the polar of P (Q = polar(P) × m), P lies on the polar of Q."""
     C = _generic_conic(c)
     P, m = c.free_point("P"), c.free_line("m")
@@ -565,7 +565,7 @@ def _(c: Claim) -> None:
 
 
 @_entry("circle-contains-circular-points", "Every circle passes through the circular points", "conics")
-def _(c: Claim) -> None:
+def _circle_contains_circular_points(c: Claim) -> None:
     """(x − a)² + (y − b)² = r² contains (1, ±i, 0), with the hypothesis i² + 1 = 0."""
     a, b, r, i = c.params("a b r i")
     c.assume_zero(i**2 + 1, "i² + 1 = 0")
@@ -576,7 +576,7 @@ def _(c: Claim) -> None:
 
 
 @_entry("dual-conic-is-adjugate", "C adj(C) = det(C) I: the dual conic is C⁻¹ up to scale", "conics")
-def _(c: Claim) -> None:
+def _dual_conic_is_adjugate(c: Claim) -> None:
     """For a symmetric C, the adjugate is the inverse up to the scale det C."""
     C = _generic_conic(c)
     D = c.dual_conic("D", C)
@@ -591,7 +591,7 @@ def _(c: Claim) -> None:
 # == points and planes ============================================================================
 
 @_entry("plane-through-three-points", "The plane through three points contains them", "points-and-planes")
-def _(c: Claim) -> None:
+def _plane_through_three_points(c: Claim) -> None:
     """π = the signed 3×3 minors of [A; B; C] satisfies πᵀA = πᵀB = πᵀC = 0."""
     A, B, C = (c.free_point3(n) for n in "ABC")
     pi = c.plane_through("pi", A, B, C)
@@ -600,7 +600,7 @@ def _(c: Claim) -> None:
 
 
 @_entry("point-on-three-planes", "The point common to three planes lies on each", "points-and-planes")
-def _(c: Claim) -> None:
+def _point_on_three_planes(c: Claim) -> None:
     """X = the signed 3×3 minors of [π₁; π₂; π₃] satisfies πᵢᵀX = 0."""
     ps = [c.free_plane(f"p{i}") for i in (1, 2, 3)]
     X = c.point_on_planes("X", *ps)
@@ -610,7 +610,7 @@ def _(c: Claim) -> None:
 
 @_entry("plane-equation-determinant", "The equation of a plane through three points is a determinant",
         "points-and-planes")
-def _(c: Claim) -> None:
+def _plane_equation_determinant(c: Claim) -> None:
     """πᵀX = det[X A B C] for every point X."""
     A, B, C, X = (c.free_point3(n) for n in "ABCX")
     pi = c.plane_through("pi", A, B, C)
@@ -619,7 +619,7 @@ def _(c: Claim) -> None:
 
 
 @_entry("coplanar-iff-determinant", "Four coplanar points have a zero determinant", "points-and-planes")
-def _(c: Claim) -> None:
+def _coplanar_iff_determinant(c: Claim) -> None:
     """D = A + sB + tC gives det[A B C D] = 0."""
     s, t = c.params("s t")
     A, B, C = (c.free_point3(n) for n in "ABC")
@@ -629,7 +629,7 @@ def _(c: Claim) -> None:
 
 
 @_entry("parallel-planes-meet-at-infinity", "Parallel planes meet on the plane at infinity", "points-and-planes")
-def _(c: Claim) -> None:
+def _parallel_planes_meet_at_infinity(c: Claim) -> None:
     """ax + by + cz + p = 0 and ax + by + cz + q = 0 meet any third plane in an ideal point."""
     a, b, cc, p, q = c.params("a b c p q")
     g = c.free_plane("g")
@@ -638,7 +638,7 @@ def _(c: Claim) -> None:
 
 
 @_entry("planes-transform-by-inverse-transpose", "Planes transform by H⁻ᵀ", "points-and-planes")
-def _(c: Claim) -> None:
+def _planes_transform_by_inverse_transpose(c: Claim) -> None:
     """The plane through HA, HB, HC is proportional to adj(H)ᵀ π for π through A, B, C."""
     A, B, C = (c.free_point3(n) for n in "ABC")
     H = c.free_matrix("H", 4)
@@ -650,7 +650,7 @@ def _(c: Claim) -> None:
 
 @_entry("collinear-points-rank-two", "Three collinear points of P² stack to a rank-2 matrix",
         "null-space-and-svd")
-def _(c: Claim) -> None:
+def _collinear_points_rank_two(c: Claim) -> None:
     """[A; B; sA + tB] has rank exactly 2, so its null space is the line through them."""
     s, t = c.params("s t")
     A, B = c.free_point("A"), c.free_point("B")
@@ -659,7 +659,7 @@ def _(c: Claim) -> None:
 
 
 @_entry("coplanar-points-rank-three", "Four coplanar points of P³ stack to a rank-3 matrix", "null-space-and-svd")
-def _(c: Claim) -> None:
+def _coplanar_points_rank_three(c: Claim) -> None:
     """[A; B; C; D] with D in the plane ABC has rank 3: the plane is its one-dimensional null space."""
     s, t = c.params("s t")
     A, B, C = (c.free_point3(n) for n in "ABC")
@@ -679,14 +679,14 @@ def _reciprocal(L: tuple, M: tuple) -> object:
 
 
 @_entry("plucker-matrix-rank-two", "A Plücker matrix has rank 2", "lines-in-3d")
-def _(c: Claim) -> None:
+def _plucker_matrix_rank_two(c: Claim) -> None:
     """L = ABᵀ − BAᵀ: all 3×3 minors vanish and a 2×2 minor does not."""
     A, B = c.free_point3("A"), c.free_point3("B")
     c.conclude_rank(c.line3("L", A, B), 2)
 
 
 @_entry("klein-quadric", "Plücker coordinates satisfy the Klein relation", "lines-in-3d")
-def _(c: Claim) -> None:
+def _klein_quadric(c: Claim) -> None:
     """l12 l34 − l13 l24 + l14 l23 = 0 for L = ABᵀ − BAᵀ."""
     A, B = c.free_point3("A"), c.free_point3("B")
     L = c.line3("L", A, B)
@@ -694,7 +694,7 @@ def _(c: Claim) -> None:
 
 
 @_entry("plucker-meets-plane", "L π is the point where the line L meets the plane π", "lines-in-3d")
-def _(c: Claim) -> None:
+def _plucker_meets_plane(c: Claim) -> None:
     """X = Lπ lies on π and on the line AB (rank [A; B; X] = 2)."""
     A, B = c.free_point3("A"), c.free_point3("B")
     L = c.line3("L", A, B)
@@ -705,7 +705,7 @@ def _(c: Claim) -> None:
 
 
 @_entry("dual-plucker-annihilates", "L L* = 0 for the two Plücker matrices of one line", "lines-in-3d")
-def _(c: Claim) -> None:
+def _dual_plucker_annihilates(c: Claim) -> None:
     """With π, ρ two planes through A and B, L* = πρᵀ − ρπᵀ satisfies L L* = 0."""
     A, B, C, D = (c.free_point3(n) for n in "ABCD")
     L = c.line3("L", A, B)
@@ -715,7 +715,7 @@ def _(c: Claim) -> None:
 
 
 @_entry("reciprocal-product-is-determinant", "The reciprocal product of two lines is det[A B C D]", "lines-in-3d")
-def _(c: Claim) -> None:
+def _reciprocal_product_is_determinant(c: Claim) -> None:
     """(AB | CD) = det[A B C D], so two lines are coplanar exactly when it vanishes."""
     A, B, C, D = (c.free_point3(n) for n in "ABCD")
     L, M = c.line3("L", A, B), c.line3("M", C, D)
@@ -724,7 +724,7 @@ def _(c: Claim) -> None:
 
 
 @_entry("lines-in-a-plane-meet", "Two lines in one plane have reciprocal product 0", "lines-in-3d")
-def _(c: Claim) -> None:
+def _lines_in_a_plane_meet(c: Claim) -> None:
     """For D in the plane ABC, the lines AB and CD are coplanar: (AB | CD) = 0."""
     s, t = c.params("s t")
     A, B, C = (c.free_point3(n) for n in "ABC")
@@ -736,7 +736,7 @@ def _(c: Claim) -> None:
 # == classical theorems ============================================================================
 
 @_entry("pappus", "Pappus's hexagon theorem", "classical-theorems")
-def _(c: Claim) -> None:
+def _pappus(c: Claim) -> None:
     """A, B, C on one line and A', B', C' on another: AB'∧A'B, AC'∧A'C, BC'∧B'C are collinear."""
     c.method_note = ("the two lines are y = 0 and the line through the origin with direction (p, q): every pair "
                      "of lines is mapped there by a projective transformation, which preserves incidence")
@@ -757,7 +757,7 @@ def _desargues_triangles(c: Claim) -> tuple:
 
 
 @_entry("desargues", "Desargues's theorem", "classical-theorems")
-def _(c: Claim) -> None:
+def _desargues(c: Claim) -> None:
     """Triangles ABC and A'B'C' in perspective from a point O are in perspective from a line."""
     A, B, C, A2, B2, C2 = _desargues_triangles(c)
     X = c.meet("X", c.join("AB", A, B), c.join("A'B'", A2, B2))
@@ -767,7 +767,7 @@ def _(c: Claim) -> None:
 
 
 @_entry("desargues-converse", "The converse of Desargues's theorem", "classical-theorems")
-def _(c: Claim) -> None:
+def _desargues_converse(c: Claim) -> None:
     """If corresponding sides of ABC and A'B'C' meet on one line, then AA', BB', CC' are concurrent."""
     x, y, s = c.params("x y s")
     A, B, C = (c.free_point(n) for n in "ABC")
@@ -785,7 +785,7 @@ def _on_parabola(c: Claim, names: str) -> list:
 
 
 @_entry("pascal", "Pascal's theorem", "classical-theorems")
-def _(c: Claim) -> None:
+def _pascal(c: Claim) -> None:
     """For six points of a conic, the meets of opposite sides of the hexagon ABCDEF are collinear."""
     c.method_note = "the six points are (t, t², 1) on the conic y = x², projectively equivalent to every "\
         "non-degenerate conic"
@@ -797,7 +797,7 @@ def _(c: Claim) -> None:
 
 
 @_entry("brianchon", "Brianchon's theorem", "classical-theorems")
-def _(c: Claim) -> None:
+def _brianchon(c: Claim) -> None:
     """For six tangents of a conic, the diagonals joining opposite vertices of the hexagon are concurrent."""
     c.method_note = "the tangents of y = x² at t are (2t, −1, −t²)"
     ts = c.params("a b c d e f")
@@ -807,7 +807,7 @@ def _(c: Claim) -> None:
 
 
 @_entry("complete-quadrilateral-harmonic", "The harmonic property of the complete quadrangle", "classical-theorems")
-def _(c: Claim) -> None:
+def _complete_quadrilateral_harmonic(c: Claim) -> None:
     """For four points A, B, C, D with diagonal points E = AB∧CD, F = AD∧BC, G = AC∧BD and H = AC∧EF,
     (A, C; G, H) = −1."""
     A, B, C, D = (c.free_point(n) for n in "ABCD")
@@ -825,7 +825,7 @@ def _(c: Claim) -> None:
 
 @_entry("lines-transform-like-points", "FALSE: lines transform by H like points", "projective-transformations",
         expected=False)
-def _(c: Claim) -> None:
+def _lines_transform_like_points(c: Claim) -> None:
     """Claims (HA) × (HB) ∝ H (A × B); the correct rule is H⁻ᵀ."""
     A, B = c.free_point("A"), c.free_point("B")
     H = c.free_matrix("H", 3)
@@ -836,7 +836,7 @@ def _(c: Claim) -> None:
 
 @_entry("cross-product-sign-flipped", "FALSE: a cross product with the middle sign flipped", "points-and-lines",
         expected=False)
-def _(c: Claim) -> None:
+def _cross_product_sign_flipped(c: Claim) -> None:
     """Claims that (a₂b₃ − a₃b₂, a₁b₃ − a₃b₁, a₁b₂ − a₂b₁) passes through A."""
     A, B = c.free_point("A"), c.free_point("B")
     wrong = lambda u, v: (u[1] * v[2] - u[2] * v[1], u[0] * v[2] - u[2] * v[0], u[0] * v[1] - u[1] * v[0])  # noqa: E731
@@ -845,7 +845,7 @@ def _(c: Claim) -> None:
 
 @_entry("cross-ratio-under-squaring", "FALSE: a reordered cross-ratio is invariant under x ↦ x²", "projective-line",
         expected=False)
-def _(c: Claim) -> None:
+def _cross_ratio_under_squaring(c: Claim) -> None:
     """Claims (A, B; C, D) = (A², B²; D², C²): wrong order, and squaring is not projective."""
     A, B, C, D = _four(c)
     sq = lambda p: (p[0] * p[0], p[1] * p[1])  # noqa: E731
@@ -855,7 +855,7 @@ def _(c: Claim) -> None:
 
 @_entry("cross-ratio-order-irrelevant", "FALSE: the order of the four points does not matter", "projective-line",
         expected=False)
-def _(c: Claim) -> None:
+def _cross_ratio_order_irrelevant(c: Claim) -> None:
     """Claims (A, B; C, D) = (A, C; B, D)."""
     A, B, C, D = _four(c)
     c.conclude_equal_ratio(c.cross_ratio("r", A, B, C, D), c.cross_ratio("s", A, C, B, D))
@@ -863,7 +863,7 @@ def _(c: Claim) -> None:
 
 @_entry("homography-preserves-parallelism", "FALSE: a homography keeps parallel lines parallel", "hierarchy-2d",
         expected=False)
-def _(c: Claim) -> None:
+def _homography_preserves_parallelism(c: Claim) -> None:
     """Claims that the images of two parallel lines under a general H meet on the line at infinity."""
     H = c.free_matrix("H", 3)
     a, b, p, q = c.params("la lb p q")
@@ -873,7 +873,7 @@ def _(c: Claim) -> None:
 
 
 @_entry("affine-preserves-distance", "FALSE: an affinity preserves distances", "hierarchy-2d", expected=False)
-def _(c: Claim) -> None:
+def _affine_preserves_distance(c: Claim) -> None:
     """Claims |TA TB|² = |AB|² for an affinity T."""
     T = _affine(c)
     A, B = c.free_point("A"), c.free_point("B")
@@ -882,7 +882,7 @@ def _(c: Claim) -> None:
 
 
 @_entry("pascal-without-conic", "FALSE: Pascal's line for any six points", "classical-theorems", expected=False)
-def _(c: Claim) -> None:
+def _pascal_without_conic(c: Claim) -> None:
     """Claims Pascal's collinearity for six free points, not on one conic."""
     A, B, C, D, E, F = (c.free_point(n) for n in "ABCDEF")
     X = c.meet("X", c.join("AB", A, B), c.join("DE", D, E))
@@ -892,7 +892,7 @@ def _(c: Claim) -> None:
 
 
 @_entry("klein-relation-sign-flipped", "FALSE: the Klein relation with a sign flipped", "lines-in-3d", expected=False)
-def _(c: Claim) -> None:
+def _klein_relation_sign_flipped(c: Claim) -> None:
     """Claims l12 l34 + l13 l24 + l14 l23 = 0."""
     A, B = c.free_point3("A"), c.free_point3("B")
     L = c.line3("L", A, B)

@@ -42,6 +42,7 @@ from .. import ring as alg
 from ..errors import PgsymError
 from ..exact import is_zero
 from .claims import Claim, Node
+from .operations import CoreDegenerate, flat
 from .verdicts import Certificate, Condition, Counterexample, Verdict
 from .verdicts import poly_str as _poly_str
 
@@ -88,83 +89,7 @@ def _alarm(seconds: float | None):  # type: ignore[no-untyped-def]
         signal.signal(signal.SIGALRM, old)
 
 
-def _flat(value: Any) -> list[Any]:
-    if isinstance(value, tuple):
-        out: list[Any] = []
-        for v in value:
-            out.extend(_flat(v))
-        return out
-    return [value]
-
-
 # -- evaluation of a claim in one arithmetic -----------------------------------------------
-
-def _conic_from_points(points: list[tuple[Any, ...]]) -> tuple[tuple[Any, ...], ...]:
-    rows = [(x * x, x * y, y * y, x * w, y * w, w * w) for x, y, w in points]
-    coeffs = []
-    for j in range(6):
-        d = alg.det([r[:j] + r[j + 1:] for r in rows])
-        coeffs.append(d if j % 2 == 0 else -d)
-    a, b, c, d, e, f = coeffs
-    return ((a + a, b, d), (b, c + c, e), (d, e, f + f))
-
-
-def _formula(node: Node, v: list[Any], scalar: Callable[[Any], Any]) -> Any:
-    op = node.op
-    if op == "free":
-        return tuple(tuple(scalar(e) for e in row) for row in node.data) if node.kind in ("matrix", "conic") \
-            else (scalar(node.data[0]) if node.kind == "scalar" else tuple(scalar(e) for e in node.data))
-    if op == "const":
-        return (scalar(node.data[0]), scalar(node.data[1]))
-    if op in ("join", "meet"):
-        return alg.cross(v[0], v[1])
-    if op == "combine":
-        s, t = scalar(node.data[0]), scalar(node.data[1])
-        return tuple(s * a + t * b for a, b in zip(v[0], v[1], strict=True))
-    if op in ("plane_through", "point_on_planes"):
-        return alg.plane_through(*v)
-    if op == "line3":
-        return alg.wedge(v[0], v[1])
-    if op == "apply":
-        return alg.matvec(v[0], v[1])
-    if op == "apply_line":
-        return alg.matvec(alg.transpose(alg.adjugate(v[0])), v[1])
-    if op == "apply_conic":
-        a = alg.adjugate(v[0])
-        return alg.matmul(alg.transpose(a), alg.matmul(v[1], a))
-    if op == "polar":
-        return alg.matvec(v[0], v[1])
-    if op == "conic_through":
-        return _conic_from_points(v)
-    if op == "dual_conic":
-        return alg.adjugate(v[0])
-    if op == "cross_ratio":
-        a, b, c, d = v
-        br = lambda p, q: p[0] * q[1] - p[1] * q[0]  # noqa: E731
-        return (br(a, c) * br(b, d), br(a, d) * br(b, c))
-    if op == "harmonic_conjugate":
-        a, b, c = v
-        ac, bc = a[0] * c[1] - a[1] * c[0], b[0] * c[1] - b[1] * c[0]
-        return tuple(ac * bi + bc * ai for ai, bi in zip(a, b, strict=True))
-    if op == "formula":
-        return node.data(*v)
-    raise PgsymError(f"internal: no formula for operation {op!r}")  # pragma: no cover
-
-
-def _condition_values(node: Node, value: Any, values: dict[Node, Any]) -> list[list[Any]]:
-    """One list per condition text of the node: the condition holds when not all entries vanish."""
-    if not node.conditions:
-        return []
-    if node.op == "free" and node.kind == "matrix":
-        return [[alg.det(value)]]
-    if node.op in ("apply_line", "apply_conic"):
-        return [[alg.det(values[node.args[0]])]]
-    if node.op == "dual_conic":
-        return [[alg.det(values[node.args[0]])]]
-    if node.op == "cross_ratio":
-        return [[value[1]]]
-    return [_flat(value)] * len(node.conditions)
-
 
 def _evaluate(claim: Claim, scalar: Callable[[Any], Any], reduce: Callable[[Any], Any] | None = None,
               deadline: _Deadline | None = None) -> dict[Node, Any]:
@@ -172,7 +97,7 @@ def _evaluate(claim: Claim, scalar: Callable[[Any], Any], reduce: Callable[[Any]
     for node in claim.nodes.values():
         if deadline is not None:
             deadline.check(f"constructing {node.name}")
-        value = _formula(node, [values[a] for a in node.args if isinstance(a, Node)], scalar)
+        value = node.operation.formula(node, [values[a] for a in node.args if isinstance(a, Node)], scalar)
         if reduce is not None:
             value = _map(value, reduce)
         values[node] = value
@@ -186,7 +111,7 @@ def _map(value: Any, f: Callable[[Any], Any]) -> Any:
 
 
 def _is_zero_vector(value: Any) -> bool:
-    return all(x == 0 for x in _flat(value))
+    return all(x == 0 for x in flat(value))
 
 
 def _conclusion_polys(claim: Claim, values: dict[Node, Any], skip: Any = ()) -> list[tuple[str, Any]]:
@@ -202,19 +127,19 @@ def _conclusion_polys(claim: Claim, values: dict[Node, Any], skip: Any = ()) -> 
         elif c.kind == "det":
             out.append((f"det[{' '.join(names)}]", alg.det(vals)))
         elif c.kind == "proportional":
-            u, v = _flat(vals[0]), _flat(vals[1])
+            u, v = flat(vals[0]), flat(vals[1])
             k = next((i for i, x in enumerate(v) if x != 0), 0)
             for i in range(len(u)):
                 if i != k:
                     out.append((f"{names[0]}[{i}]·{names[1]}[{k}] − {names[0]}[{k}]·{names[1]}[{i}]",
                                 u[i] * v[k] - u[k] * v[i]))
         elif c.kind == "equal":
-            u, v = _flat(vals[0]), _flat(vals[1])
+            u, v = flat(vals[0]), flat(vals[1])
             for i, (a, b) in enumerate(zip(u, v, strict=True)):
                 out.append((f"{names[0]}[{i}] − {names[1]}[{i}]", a - b))
         elif c.kind == "zero":
-            for i, a in enumerate(_flat(vals[0])):
-                out.append((f"{names[0]}[{i}]" if len(_flat(vals[0])) > 1 else names[0], a))
+            for i, a in enumerate(flat(vals[0])):
+                out.append((f"{names[0]}[{i}]" if len(flat(vals[0])) > 1 else names[0], a))
         elif c.kind == "equal_ratio":
             (n1, d1), (n2, d2) = vals
             out.append((f"num({names[0]})·den({names[1]}) − num({names[1]})·den({names[0]})", n1 * d2 - n2 * d1))
@@ -224,12 +149,13 @@ def _conclusion_polys(claim: Claim, values: dict[Node, Any], skip: Any = ()) -> 
 def _nonzero_requirements(claim: Claim, values: dict[Node, Any]) -> list[tuple[str, list[Any]]]:
     out = []
     for node in claim.nodes.values():
-        for text, polys in zip(node.conditions, _condition_values(node, values[node], values), strict=True):
+        args = [values[a] for a in node.args if isinstance(a, Node)]
+        for text, polys in zip(node.conditions, node.operation.nonzero(node, values[node], args), strict=True):
             out.append((text, polys))
     for c in claim.conclusions:
         if c.kind == "proportional":
             for a in c.args:
-                out.append((f"{a.name} is not zero", _flat(values[a])))
+                out.append((f"{a.name} is not zero", flat(values[a])))
         if c.kind == "equal_ratio":
             for a in c.args:
                 if a.op != "const":
@@ -285,8 +211,8 @@ _CONVERTERS: dict[tuple[int, str, bool], tuple[Claim, _Converter]] = {}
 def _integral(claim: Claim) -> bool:
     """True when every coefficient in the claim's data is an integer (then ℤ[params] suffices)."""
     for node in claim.nodes.values():
-        if node.op in ("free", "combine", "const"):
-            for e in _flat(node.data) if isinstance(node.data, tuple) else []:
+        if node.operation.coefficients:
+            for e in flat(node.data) if isinstance(node.data, tuple) else []:
                 if any(not a.is_Integer for a in sympy.sympify(e).atoms(sympy.Rational)):
                     return False
     return not claim.hypotheses
@@ -418,7 +344,7 @@ def _random_pass(claim: Claim, R: Any, rng: random.Random, deadline: _Deadline) 
 
 def _proportional_by_division(c: Any, values: dict[Node, Any]) -> str | None:
     """Prove u = q·v (or v = q·u) with one exact polynomial division; None when that does not work."""
-    u, v = (_flat(values[a]) for a in c.args)
+    u, v = (flat(values[a]) for a in c.args)
     names = [a.name for a in c.args]
     for (x, y), (nx, ny) in (((u, v), names), ((v, u), names[::-1])):
         k = next((i for i, t in enumerate(y) if t != 0), None)
@@ -438,7 +364,7 @@ def _exact_pass(claim: Claim, deadline: _Deadline, rank_witness: list[Any]) -> t
     conv = _converter(claim, order, field=bool(hyps))
     R = conv.R
     values = _evaluate(claim, conv, deadline=deadline)
-    largest = max((len(p) for v in values.values() for p in _flat(v) if hasattr(p, "terms")), default=0)
+    largest = max((len(p) for v in values.values() for p in flat(v) if hasattr(p, "terms")), default=0)
     conditions = []
     for text, polys in _nonzero_requirements(claim, values):
         deadline.check("checking the non-degeneracy conditions")
@@ -499,68 +425,23 @@ def _exact_pass(claim: Claim, deadline: _Deadline, rank_witness: list[Any]) -> t
 
 def _core_objects(claim: Claim, point: dict[Any, Any]) -> dict[Node, Any]:
     """Build the configuration with pgsym's own objects at an exact rational point."""
-    from sympy import Matrix, Rational
-
-    from .. import conics, plucker, projective_line, projective_plane, space
-
     R = _converter(claim).R
     frac = _point_evaluator(claim, R, point)
 
-    def q(x: Fraction) -> Rational:
-        return Rational(x.numerator, x.denominator)
+    def exact(e: Any) -> sympy.Rational:
+        x = frac(e)
+        return sympy.Rational(x.numerator, x.denominator)
 
-    vector_class = {"point": projective_plane.Point, "line": projective_plane.Line, "point1": projective_line.Point1,
-                    "point3": space.Point3, "plane": space.Plane}
     objs: dict[Node, Any] = {}
     for node in claim.nodes.values():
+        build = node.operation.core
         a = [objs.get(x) for x in node.args if isinstance(x, Node)]
-        op = node.op
-        if op == "free":
-            if node.kind in vector_class:
-                objs[node] = vector_class[node.kind](*(q(frac(e)) for e in node.data))
-            elif node.kind in ("matrix", "conic"):
-                objs[node] = Matrix([[q(frac(e)) for e in row] for row in node.data])
+        if build is None or any(x is None for x in a):
             continue
-        if any(x is None for x in a):
-            continue
-        if op == "join":
-            objs[node] = projective_plane.join(*a)
-        elif op == "meet":
-            objs[node] = projective_plane.meet(*a)
-        elif op == "combine":
-            s, t = q(frac(node.data[0])), q(frac(node.data[1]))
-            pairs = zip(a[0].coords, a[1].coords, strict=True)
-            objs[node] = vector_class[node.kind](*(s * x + t * y for x, y in pairs))
-        elif op == "plane_through":
-            objs[node] = space.plane_through(*a)
-        elif op == "point_on_planes":
-            objs[node] = space.point_on_planes(*a)
-        elif op == "line3":
-            objs[node] = plucker.Line3.join(*a)
-        elif op == "apply":
-            objs[node] = vector_class[node.kind](*(a[0] * a[1].vector))
-        elif op == "apply_line":
-            if is_zero(a[0].det()):
-                raise _CoreDegenerate(f"{node.args[0].name} is singular")
-            objs[node] = vector_class[node.kind](*(a[0].adjugate().T * a[1].vector))
-        elif op == "apply_conic":
-            adj = a[0].adjugate()
-            objs[node] = conics.Conic(adj.T * (a[1].matrix if hasattr(a[1], "matrix") else a[1]) * adj)
-        elif op == "polar":
-            objs[node] = conics.Conic(a[0]).polar(a[1])
-        elif op == "conic_through":
-            objs[node] = conics.conic_through(*a)
-        elif op == "dual_conic":
-            objs[node] = conics.Conic(a[0]).dual()
-        elif op == "cross_ratio":
-            objs[node] = projective_line.cross_ratio(*a)
-        elif op == "harmonic_conjugate":
-            objs[node] = projective_line.harmonic_conjugate(*a)
+        obj = build(node, a, exact)
+        if obj is not None:
+            objs[node] = obj
     return objs
-
-
-class _CoreDegenerate(Exception):
-    pass
 
 
 def _core_value(obj: Any) -> list[Fraction]:
@@ -584,7 +465,7 @@ def _agree(claim: Claim, objs: dict[Node, Any], values: dict[Node, Any]) -> str 
             if d == 0 or Fraction(n) / Fraction(d) != _core_value(obj)[0]:
                 return node.name
             continue
-        u, v = _flat(mine), _core_value(obj)
+        u, v = flat(mine), _core_value(obj)
         k = next((i for i, x in enumerate(v) if x != 0), None)
         if len(u) != len(v) or k is None or u[k] == 0 or any(u[i] * v[k] != u[k] * v[i] for i in range(len(u))):
             return node.name
@@ -598,7 +479,7 @@ def _core_check(claim: Claim, rng: random.Random, deadline: _Deadline) -> str:
         point = _random_point(claim, rng, 9)
         try:
             objs = _core_objects(claim, point)
-        except (PgsymError, _CoreDegenerate):
+        except (PgsymError, CoreDegenerate):
             continue
         values = _evaluate(claim, _point_evaluator(claim, R, point))
         bad = _agree(claim, objs, values)
@@ -617,7 +498,7 @@ def recheck_counterexample(claim: Claim, values: dict[str, Any]) -> bool:
     point = {s: Fraction(values[str(s)]) for s in claim.parameters}
     try:
         objs = _core_objects(claim, point)
-    except (PgsymError, _CoreDegenerate):
+    except (PgsymError, CoreDegenerate):
         return False
     vals = _evaluate(claim, _point_evaluator(claim, _converter(claim).R, point))
     if _agree(claim, objs, vals) is not None:
