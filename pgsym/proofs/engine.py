@@ -32,6 +32,7 @@ import time
 import zlib
 from collections.abc import Callable
 from contextlib import contextmanager
+from enum import StrEnum
 from fractions import Fraction
 from typing import Any
 
@@ -43,13 +44,26 @@ from ..errors import PgsymError
 from ..exact import is_zero
 from .claims import Claim, Node
 from .operations import CoreDegenerate, flat
-from .verdicts import Certificate, Condition, Counterexample, Verdict
+from .verdicts import Certificate, Condition, Counterexample, Status, Verdict
 from .verdicts import poly_str as _poly_str
 
 __all__ = ["PRIME", "prove", "recheck_counterexample"]
 
 PRIME = 2**61 - 1
 """The prime of the random pass (a Mersenne prime)."""
+
+
+class _Outcome(StrEnum):
+    """What one pass (or one evaluated point) found, before it becomes a verdict's :class:`Status`."""
+
+    PROVED = "proved"
+    HOLDS = "holds"
+    FAILS = "fails"
+    LOW_RANK = "low-rank"
+    DEGENERATE = "degenerate"
+    NONZERO = "nonzero"
+    NOT_IN_IDEAL = "not-in-ideal"
+    NO_WITNESS = "no-witness"
 
 
 class _Timeout(Exception):
@@ -260,7 +274,7 @@ def _check_point(claim: Claim, values: dict[Node, Any], modp: bool) -> tuple[str
     red = (lambda x: x % PRIME) if modp else (lambda x: x)
     for _text, polys in _nonzero_requirements(claim, values):
         if all(red(p) == 0 for p in polys):
-            return "degenerate", _text
+            return _Outcome.DEGENERATE, _text
     residuals = [red(val) for _, val in _conclusion_polys(claim, values)]
     rank_info = []
     for c in claim.conclusions:
@@ -276,10 +290,10 @@ def _check_point(claim: Claim, values: dict[Node, Any], modp: bool) -> tuple[str
                 residuals.append(Fraction(rk - r) if not modp else rk - r)
             rank_info.append((node, r, rk, rs, cs))
     if any(x != 0 for x in residuals):
-        return "fails", residuals
+        return _Outcome.FAILS, residuals
     if any(rk < r for _, r, rk, _, _ in rank_info):
-        return "low-rank", rank_info
-    return "holds", rank_info
+        return _Outcome.LOW_RANK, rank_info
+    return _Outcome.HOLDS, rank_info
 
 
 def _rng(claim: Claim, seed: int) -> random.Random:
@@ -299,7 +313,7 @@ def _find_small_counterexample(claim: Claim, R: Any, rng: random.Random, fallbac
         point = _random_point(claim, rng, 2 + attempt // 10)
         values = _evaluate(claim, _point_evaluator(claim, R, point))
         kind, data = _check_point(claim, values, modp=False)
-        if kind == "fails":
+        if kind == _Outcome.FAILS:
             return Counterexample({str(s): Fraction(v) for s, v in point.items()}, data, claim)
     values = _evaluate(claim, _point_evaluator(claim, R, fallback))
     kind, data = _check_point(claim, values, modp=False)
@@ -321,25 +335,26 @@ def _describe_ring(claim: Claim, order: str) -> str:
 
 def _random_pass(claim: Claim, R: Any, rng: random.Random, deadline: _Deadline) -> tuple[str, Any, str]:
     """Returns (outcome, data, summary) with outcome in 'fails', 'holds', 'degenerate', 'low-rank'."""
-    last = ("degenerate", "", "")
+    last = (_Outcome.DEGENERATE, "", "")
     for trial in range(4):
         deadline.check("random evaluation")
         point = _random_point(claim, rng, PRIME)
         frac = _point_evaluator(claim, R, point)
         values = _evaluate(claim, lambda e, frac=frac: _modp(frac(e)), reduce=lambda x: x % PRIME, deadline=deadline)
         kind, data = _check_point(claim, values, modp=True)
-        if kind == "fails":
-            return "fails", point, f"conclusion nonzero modulo p = 2^61 − 1 at a random point (trial {trial + 1})"
-        if kind == "holds":
-            return "holds", (point, data), (
+        if kind == _Outcome.FAILS:
+            return (_Outcome.FAILS, point,
+                    f"conclusion nonzero modulo p = 2^61 − 1 at a random point (trial {trial + 1})")
+        if kind == _Outcome.HOLDS:
+            return _Outcome.HOLDS, (point, data), (
                 f"conclusion zero modulo p = 2^61 − 1 at a random point (trial {trial + 1}); "
                 "this finds counterexamples but proves nothing"
             )
         last = (kind, data, "")
     kind, data, _ = last
-    if kind == "low-rank":
-        return "low-rank", data, "the rank stayed below the claim at four random points"
-    return "degenerate", data, f"a construction was undefined at four random points: {data}"
+    if kind == _Outcome.LOW_RANK:
+        return _Outcome.LOW_RANK, data, "the rank stayed below the claim at four random points"
+    return _Outcome.DEGENERATE, data, f"a construction was undefined at four random points: {data}"
 
 
 def _proportional_by_division(c: Any, values: dict[Node, Any]) -> str | None:
@@ -369,7 +384,7 @@ def _exact_pass(claim: Claim, deadline: _Deadline, rank_witness: list[Any]) -> t
     for text, polys in _nonzero_requirements(claim, values):
         deadline.check("checking the non-degeneracy conditions")
         if all(p == 0 for p in polys):
-            return "degenerate", text
+            return _Outcome.DEGENERATE, text
         conditions.append(Condition(text, raw=[p for p in polys if p != 0][:3]))
     deadline.check("reducing the conclusion")
     steps = []
@@ -382,7 +397,7 @@ def _exact_pass(claim: Claim, deadline: _Deadline, rank_witness: list[Any]) -> t
             deadline.check("reducing the conclusion")
             quotients, rem = poly.div(basis)
             if rem != 0:
-                return "not-in-ideal", (label, _poly_str(rem))
+                return _Outcome.NOT_IN_IDEAL, (label, _poly_str(rem))
             combo = " + ".join(f"({_poly_str(q)})·g{i + 1}" for i, q in enumerate(quotients) if q != 0) or "0"
             steps.append(f"{label} = {combo}; remainder 0")
     else:
@@ -398,7 +413,7 @@ def _exact_pass(claim: Claim, deadline: _Deadline, rank_witness: list[Any]) -> t
         for label, poly in _conclusion_polys(claim, values, done):
             deadline.check("expanding the conclusion")
             if poly != 0:
-                return "nonzero", (label, _poly_str(poly))
+                return _Outcome.NONZERO, (label, _poly_str(poly))
             steps.append(f"{label} expands to 0")
     for c in claim.conclusions:
         if c.kind != "rank":
@@ -410,15 +425,15 @@ def _exact_pass(claim: Claim, deadline: _Deadline, rank_witness: list[Any]) -> t
             for rs, cs, minor in alg.minors(rows, r + 1):
                 deadline.check("expanding the minors")
                 if minor != 0:
-                    return "nonzero", (f"minor rows {rs} columns {cs} of {node.name}", _poly_str(minor))
+                    return _Outcome.NONZERO, (f"minor rows {rs} columns {cs} of {node.name}", _poly_str(minor))
             steps.append(f"all {r + 1}×{r + 1} minors of {node.name} expand to 0")
         witness = next((w for w in rank_witness if w[0] is node), None)
         if witness is None:
-            return "no-witness", node.name
+            return _Outcome.NO_WITNESS, node.name
         _, _, _rank, rs, cs = witness
         steps.append(f"the {r}×{r} minor of {node.name} on rows {rs}, columns {cs} is nonzero at a random point "
                      "modulo p, hence not the zero polynomial")
-    return "proved", (Certificate(method, _describe_ring(claim, order), steps, largest), conditions)
+    return _Outcome.PROVED, (Certificate(method, _describe_ring(claim, order), steps, largest), conditions)
 
 
 # -- the core check -------------------------------------------------------------------------
@@ -504,7 +519,7 @@ def recheck_counterexample(claim: Claim, values: dict[str, Any]) -> bool:
     if _agree(claim, objs, vals) is not None:
         return False
     kind, _ = _check_point(claim, vals, modp=False)
-    return kind == "fails"
+    return kind == _Outcome.FAILS
 
 
 # -- the entry point --------------------------------------------------------------------------
@@ -551,45 +566,45 @@ def prove(claim: Claim, *, timeout: float | None = 10.0, seed: int = 0, core_che
                 summary = "skipped: random points do not satisfy the equation hypotheses"
             else:
                 outcome, data, summary = _random_pass(claim, R, rng, deadline)
-                if outcome == "fails":
+                if outcome == _Outcome.FAILS:
                     ce = _find_small_counterexample(claim, R, rng, data, deadline)
-                    return Verdict(status="false", method="random evaluation modulo a prime, then exact recheck",
+                    return Verdict(status=Status.FALSE, method="random evaluation modulo a prime, then exact recheck",
                                    counterexample=ce, random_pass=summary,
                                    reason="the conclusion does not vanish at the counterexample",
                                    elapsed=time.perf_counter() - start, **base)
-                if outcome == "low-rank":
-                    return Verdict(status="unknown", random_pass=summary,
+                if outcome == _Outcome.LOW_RANK:
+                    return Verdict(status=Status.UNKNOWN, random_pass=summary,
                                    reason="the matrix had lower rank than claimed at every random point tried",
                                    elapsed=time.perf_counter() - start, **base)
-                rank_witness = data[1] if outcome == "holds" else []
+                rank_witness = data[1] if outcome == _Outcome.HOLDS else []
             status, data = _exact_pass(claim, deadline, rank_witness)
-            if status == "proved":
+            if status is _Outcome.PROVED:
                 certificate, conditions = data
                 core = _core_check(claim, rng, deadline) if core_check else "not requested"
                 if core.startswith("MISMATCH"):
-                    return Verdict(status="unknown", random_pass=summary, core_check=core,
+                    return Verdict(status=Status.UNKNOWN, random_pass=summary, core_check=core,
                                    reason=f"pgsym's core and the proof formulas disagree ({core})",
                                    elapsed=time.perf_counter() - start, **base)
                 method = certificate.method
                 if claim.method_note:
                     method = f"rational parametrisation ({claim.method_note}), then {method}"
-                return Verdict(status="proved", method=method, certificate=certificate, conditions=conditions,
+                return Verdict(status=Status.PROVED, method=method, certificate=certificate, conditions=conditions,
                                random_pass=summary, core_check=core, elapsed=time.perf_counter() - start, **base)
-            if status == "degenerate":
+            if status == _Outcome.DEGENERATE:
                 reason = f"a construction is undefined for every value of the parameters: {data} fails identically"
-            elif status == "not-in-ideal":
+            elif status == _Outcome.NOT_IN_IDEAL:
                 reason = (f"{data[0]} has the nonzero remainder {data[1][:200]} modulo the hypotheses: it is not in "
                           "their ideal (it may still hold on a component, or after saturating by the conditions)")
-            elif status == "no-witness":
+            elif status == _Outcome.NO_WITNESS:
                 reason = f"no nonzero minor of {data} of the claimed size was found"
             else:
                 ce = _find_small_counterexample(claim, R, rng, _random_point(claim, rng, PRIME), deadline)
-                return Verdict(status="false", method="exact expansion, then exact recheck", counterexample=ce,
+                return Verdict(status=Status.FALSE, method="exact expansion, then exact recheck", counterexample=ce,
                                random_pass=summary, reason=f"{data[0]} expands to a nonzero polynomial",
                                elapsed=time.perf_counter() - start, **base)
-            return Verdict(status="unknown", random_pass=summary, reason=reason,
+            return Verdict(status=Status.UNKNOWN, random_pass=summary, reason=reason,
                            elapsed=time.perf_counter() - start, **base)
     except _Timeout as err:
-        return Verdict(status="unknown", random_pass=summary,
+        return Verdict(status=Status.UNKNOWN, random_pass=summary,
                        reason=f"timed out after {timeout} s while {err.args[0] if err.args else 'working'}",
                        elapsed=time.perf_counter() - start, **base)
