@@ -10,7 +10,7 @@ import sympy
 
 from ...conics import Conic
 from ...projective_plane import Line, Point, collinear, incident
-from .._exact import adjugate, canonical_ints, canonical_matrix, det, matmul, matvec, transpose
+from ...ring import adjugate, det, matmul, matvec, primitive_integer_matrix, primitive_integers, transpose
 from ..model import Answer, Exercise
 from ..template import Draft, Template, check
 from ._util import invertible, matrix_latex, nz, primitive_dir, tuple_latex
@@ -60,7 +60,7 @@ class ApplyPointTemplate(Template):
         while all(c == 0 for c in image):  # impossible (H invertible, x nonzero): kept as a guard
             x[0] += 1
             image = matvec(H, x)
-        answer = canonical_ints(image)
+        answer = primitive_integers(image)
         statement = (f"The homography $H = {matrix_latex(H)}$ acts on points of the plane. "
                      f"Let $\\mathbf{{x}} = {tuple_latex(x)}$.")
         prompt = "Give the image $\\mathbf{x}' = H\\mathbf{x}$ (homogeneous coordinates)."
@@ -91,7 +91,7 @@ class ApplyLineTemplate(Template):
         l = list(primitive_dir(rng, 3, 3))
         adjT = transpose(adjugate(H))
         image = matvec(adjT, l)
-        answer = canonical_ints(image)
+        answer = primitive_integers(image)
         statement = (f"The homography $H = {matrix_latex(H)}$ maps points by $\\mathbf{{x}}' = H\\mathbf{{x}}$. "
                      f"Let $\\mathbf{{l}} = {tuple_latex(l)}$ be a line.")
         prompt = "Give the image line $\\mathbf{l}'$ (homogeneous coordinates)."
@@ -144,7 +144,7 @@ class ApplyConicTemplate(Template):
             what = f"the conic with matrix $C = {matrix_latex(C)}$ (non-degenerate: $\\det C = {det(C)}$)"
         A = adjugate(H)
         image = matmul(matmul(transpose(A), C), A)
-        answer = canonical_matrix(image)
+        answer = primitive_integer_matrix(image)
         statement = (f"The homography $H = {matrix_latex(H)}$ maps points by $\\mathbf{{x}}' = H\\mathbf{{x}}$. "
                      f"Consider {what}.")
         prompt = "Give the matrix $C'$ of the image conic (any nonzero multiple is accepted)."
@@ -339,13 +339,13 @@ class FourPointsTemplate(Template):
             dst = [matvec(H, x) for x in src]
             if all(d[2] != 0 for d in dst):
                 break
-        answer = canonical_matrix(H)
+        answer = primitive_integer_matrix(H)
         if level == 3:
             shown = [tuple_latex((d[0] / d[2], d[1] / d[2])) for d in dst]
             dst_params = [[str(d[0] / d[2]), str(d[1] / d[2]), "1"] for d in dst]
         else:
-            shown = [tuple_latex(canonical_ints(d)) for d in dst]
-            dst_params = [[str(x) for x in canonical_ints(d)] for d in dst]
+            shown = [tuple_latex(primitive_integers(d)) for d in dst]
+            dst_params = [[str(x) for x in primitive_integers(d)] for d in dst]
         pairs = ", ".join(f"${tuple_latex(s)} \\mapsto {t}$" for s, t in zip(src, shown, strict=True))
         statement = ("A homography $H$ of the plane maps four points (homogeneous coordinates; no three of "
                      f"them collinear) as follows: {pairs}.")
@@ -360,7 +360,7 @@ class FourPointsTemplate(Template):
 
         B1, B2 = basis(src), basis(dsts)
         solved = matmul(B2, adjugate(B1))
-        assert canonical_matrix(solved) == answer
+        assert primitive_integer_matrix(solved) == answer
         steps = ["Map the standard frame $\\mathbf{e}_1, \\mathbf{e}_2, \\mathbf{e}_3, (1,1,1)^\\top$ to each "
                  "quadruple: if $M = [\\mathbf{x}_1\\ \\mathbf{x}_2\\ \\mathbf{x}_3]$ and $\\boldsymbol{\\lambda} = "
                  "\\operatorname{adj}(M)\\,\\mathbf{x}_4$, then $B = M \\operatorname{diag}(\\boldsymbol{\\lambda})$.",
