@@ -13,12 +13,27 @@ True
 
 from __future__ import annotations
 
+import functools
 from collections.abc import Callable, Iterable, Iterator
 from dataclasses import dataclass
+from typing import Any
 
 import sympy
+from sympy.polys.rings import ring
 
 from .. import ring as alg
+from ..errors import ObjectTypeError
+from ..hierarchy import (
+    AFFINE_2D,
+    AFFINE_3D,
+    EUCLIDEAN_2D,
+    EUCLIDEAN_3D,
+    PROJECTIVE_2D,
+    PROJECTIVE_3D,
+    SIMILARITY_2D,
+    SIMILARITY_3D,
+    TransformationClass,
+)
 from .claims import Claim
 from .engine import prove as _prove_claim
 from .errors import UnknownClaimError
@@ -120,12 +135,74 @@ def _conic_value(c: tuple, x: tuple) -> object:
     return alg.dot(x, alg.matvec(c, x))
 
 
-def _cayley(a: sympy.Expr, b: sympy.Expr, c: sympy.Expr) -> tuple[sympy.Matrix, sympy.Expr]:
-    """A rotation of ℝ³ times d = 1 + a² + b² + c², by the Cayley transform (polynomial entries)."""
-    S = sympy.Matrix([[0, -c, b], [c, 0, -a], [-b, a, 0]])
-    eye = sympy.eye(3)
-    M = ((eye - S).adjugate() * (eye + S)).applyfunc(sympy.expand)
-    return M, 1 + a**2 + b**2 + c**2
+def class_matrix(c: Claim, group: TransformationClass,
+                 names: str = "") -> tuple[sympy.Matrix, tuple[sympy.Symbol, ...]]:
+    """The generic element of a class of the hierarchy with denominators cleared, and its parameters.
+
+    The parametrisation is the hierarchy's own (:attr:`~pgsym.hierarchy.TransformationClass.builder`:
+    rotations by ``rotation_2d`` / ``rotation_3d``); its parameters are declared on the claim, under
+    ``names`` (space-separated, in the order of ``group.parameter_names``; default those names). The
+    rotations have rational entries, so the element is multiplied by their common denominator: the
+    same projective transformation, with polynomial entries as a claim needs.
+
+    >>> from pgsym.hierarchy import EUCLIDEAN_2D
+    >>> M, ps = class_matrix(Claim("x", "x"), EUCLIDEAN_2D)
+    >>> M.row(2), ps
+    (Matrix([[0, 0, t**2 + 1]]), (t, t_x, t_y))
+    """
+    params = c.params(names or " ".join(group.parameter_names))
+    if len(params) != group.n_parameters:
+        raise ObjectTypeError(f"{group.name} has {group.n_parameters} parameters, got the names {names!r}")
+    R, *gens = ring(params, sympy.ZZ)
+    entries = [[_Ratio.of(e) for e in row] for row in group.builder([_Ratio(g) for g in gens], 0)]
+    dens: list[Any] = []
+    for e in (e for row in entries for e in row):
+        if e.d != 1 and all(e.d != d for d in dens):
+            dens.append(e.d)
+    den = functools.reduce(lambda x, y: x * y, dens, R.one)
+    rows = [[(R(e.n) * den.exquo(R(e.d))).as_expr() for e in row] for row in entries]
+    return sympy.Matrix(rows), params
+
+
+class _Ratio:
+    """``n / d`` of polynomials, never reduced: the builders divide only by a few common denominators
+    (``1 + t²``, ``1 + a² + b² + c²``), which are then cleared at once, without any gcd."""
+
+    __slots__ = ("d", "n")
+
+    def __init__(self, n: Any, d: Any = 1) -> None:
+        self.n, self.d = n, d
+
+    @staticmethod
+    def of(x: Any) -> _Ratio:
+        return x if isinstance(x, _Ratio) else _Ratio(x)
+
+    def __add__(self, o: Any) -> _Ratio:
+        o = _Ratio.of(o)
+        if o.d == self.d:
+            return _Ratio(self.n + o.n, self.d)
+        return _Ratio(self.n * o.d + o.n * self.d, self.d * o.d)
+
+    __radd__ = __add__
+
+    def __neg__(self) -> _Ratio:
+        return _Ratio(-self.n, self.d)
+
+    def __sub__(self, o: Any) -> _Ratio:
+        return self + -_Ratio.of(o)
+
+    def __rsub__(self, o: Any) -> _Ratio:
+        return _Ratio.of(o) + -self
+
+    def __mul__(self, o: Any) -> _Ratio:
+        o = _Ratio.of(o)
+        return _Ratio(self.n * o.n, self.d * o.d)
+
+    __rmul__ = __mul__
+
+    def __truediv__(self, o: Any) -> _Ratio:
+        o = _Ratio.of(o)
+        return _Ratio(self.n * o.d, self.d * o.n)
 
 
 def _fixed(c: Claim, name: str, kind: str, *coords: int) -> object:
@@ -304,92 +381,72 @@ def _conics_transform_by_inverse(c: Claim) -> None:
 
 # == hierarchy of 2D and 3D transformations: degrees of freedom =======================================
 
-def _dof(c: Claim, entries: sympy.Matrix, params: tuple, dof: int) -> None:
+def _dof(c: Claim, group: TransformationClass, dof: int, names: str = "") -> None:
+    entries, params = class_matrix(c, group, names)
     c.conclude_dof("H", entries, params, dof)
 
 
 @_entry("dof-projective-2d", "A 2D homography has 8 degrees of freedom", "hierarchy-2d")
 def _dof_projective_2d(c: Claim) -> None:
     """Nine entries up to a common scale: the family of all 3×3 matrices has dimension 8 in P⁸."""
-    hs = c.params(" ".join(f"h{i}" for i in range(1, 10)))
-    _dof(c, sympy.Matrix(3, 3, hs), hs, 8)
+    _dof(c, PROJECTIVE_2D, 8, " ".join(f"h{i}" for i in range(1, 10)))
 
 
 @_entry("dof-affine-2d", "A 2D affinity has 6 degrees of freedom", "hierarchy-2d")
 def _dof_affine_2d(c: Claim) -> None:
     """[[a, b, tx], [c, d, ty], [0, 0, 1]] depends on 6 independent parameters."""
-    ps = c.params("a b c d tx ty")
-    a, b, cc, d, tx, ty = ps
-    _dof(c, sympy.Matrix([[a, b, tx], [cc, d, ty], [0, 0, 1]]), ps, 6)
+    _dof(c, AFFINE_2D, 6, "a b c d tx ty")
 
 
 @_entry("dof-similarity-2d", "A 2D similarity has 4 degrees of freedom", "hierarchy-2d")
 def _dof_similarity_2d(c: Claim) -> None:
-    """[[a, −b, tx], [b, a, ty], [0, 0, 1]] (a = s cos θ, b = s sin θ) has 4."""
-    ps = c.params("a b tx ty")
-    a, b, tx, ty = ps
-    _dof(c, sympy.Matrix([[a, -b, tx], [b, a, ty], [0, 0, 1]]), ps, 4)
+    """A scale k, a rotation by the rational parametrisation of tan(θ/2) = t, and a translation: 4."""
+    _dof(c, SIMILARITY_2D, 4, "k t tx ty")
 
 
 @_entry("dof-euclidean-2d", "A 2D Euclidean motion has 3 degrees of freedom", "hierarchy-2d")
 def _dof_euclidean_2d(c: Claim) -> None:
     """A rotation by the rational parametrisation cos θ = (1 − t²)/(1 + t²), sin θ = 2t/(1 + t²), and a translation."""
-    ps = c.params("t tx ty")
-    t, tx, ty = ps
-    d = 1 + t**2
-    _dof(c, sympy.Matrix([[1 - t**2, -2 * t, tx * d], [2 * t, 1 - t**2, ty * d], [0, 0, d]]), ps, 3)
+    _dof(c, EUCLIDEAN_2D, 3, "t tx ty")
 
 
 @_entry("dof-projective-3d", "A 3D homography has 15 degrees of freedom", "hierarchy-3d")
 def _dof_projective_3d(c: Claim) -> None:
     """Sixteen entries up to a common scale."""
-    hs = c.params(" ".join(f"h{i}" for i in range(1, 17)))
-    _dof(c, sympy.Matrix(4, 4, hs), hs, 15)
+    _dof(c, PROJECTIVE_3D, 15, " ".join(f"h{i}" for i in range(1, 17)))
 
 
 @_entry("dof-affine-3d", "A 3D affinity has 12 degrees of freedom", "hierarchy-3d")
 def _dof_affine_3d(c: Claim) -> None:
     """A 3×4 top block and the row (0, 0, 0, 1)."""
-    hs = c.params(" ".join(f"a{i}" for i in range(1, 13)))
-    _dof(c, sympy.Matrix(3, 4, hs).col_join(sympy.Matrix([[0, 0, 0, 1]])), hs, 12)
+    _dof(c, AFFINE_3D, 12, " ".join(f"a{i}" for i in range(1, 13)))
 
 
 @_entry("dof-similarity-3d", "A 3D similarity has 7 degrees of freedom", "hierarchy-3d")
 def _dof_similarity_3d(c: Claim) -> None:
-    """Scale s, a rotation by the Cayley transform of (a, b, c), and a translation."""
-    ps = c.params("a b c s t1 t2 t3")
-    a, b, cc, s, t1, t2, t3 = ps
-    M, d = _cayley(a, b, cc)
-    top = (s * M).row_join(sympy.Matrix([t1, t2, t3]))
-    _dof(c, top.col_join(sympy.Matrix([[0, 0, 0, d]])), ps, 7)
+    """Scale k, a rotation by the Cayley transform of (a, b, c), and a translation."""
+    _dof(c, SIMILARITY_3D, 7, "k a b c t1 t2 t3")
 
 
 @_entry("dof-euclidean-3d", "A 3D Euclidean motion has 6 degrees of freedom", "hierarchy-3d")
 def _dof_euclidean_3d(c: Claim) -> None:
     """A rotation by the Cayley transform of (a, b, c) and a translation."""
-    ps = c.params("a b c t1 t2 t3")
-    a, b, cc, t1, t2, t3 = ps
-    M, d = _cayley(a, b, cc)
-    top = M.row_join(sympy.Matrix([t1 * d, t2 * d, t3 * d]))
-    _dof(c, top.col_join(sympy.Matrix([[0, 0, 0, d]])), ps, 6)
+    _dof(c, EUCLIDEAN_3D, 6, "a b c t1 t2 t3")
 
 
 # == invariants =================================================================================
+# the transformations are the hierarchy's generic elements, so each group has one parametrisation
 
 def _affine(c: Claim) -> object:
-    a, b, cc, d, tx, ty = c.params("a b c d tx ty")
-    return c.matrix("T", [[a, b, tx], [cc, d, ty], [0, 0, 1]], invertible=True)
+    return c.matrix("T", class_matrix(c, AFFINE_2D, "a b c d tx ty")[0], invertible=True)
 
 
 def _similarity(c: Claim) -> object:
-    a, b, tx, ty = c.params("a b tx ty")
-    return c.matrix("S", [[a, -b, tx], [b, a, ty], [0, 0, 1]], invertible=True)
+    return c.matrix("S", class_matrix(c, SIMILARITY_2D, "k t tx ty")[0], invertible=True)
 
 
 def _euclidean(c: Claim) -> object:
-    t, tx, ty = c.params("t tx ty")
-    d = 1 + t**2
-    return c.matrix("E", [[1 - t**2, -2 * t, tx * d], [2 * t, 1 - t**2, ty * d], [0, 0, d]], invertible=True)
+    return c.matrix("E", class_matrix(c, EUCLIDEAN_2D, "t tx ty")[0], invertible=True)
 
 
 @_entry("affine-fixes-line-at-infinity", "An affinity maps the line at infinity to itself", "hierarchy-2d")

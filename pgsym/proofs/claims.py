@@ -57,7 +57,13 @@ class Node:
     @property
     def operation(self) -> Operation:
         """The entry of :data:`~pgsym.proofs.operations.OPERATIONS` that built this object."""
-        return OPERATIONS[self.op]
+        try:
+            return OPERATIONS[self.op]
+        except KeyError:
+            raise UndefinedConstructionError(
+                f"{self.name} was built by {self.op!r}, which is no operation of the table "
+                f"(known: {', '.join(OPERATIONS)})"
+            ) from None
 
     def __repr__(self) -> str:
         return f"<{self.kind} {self.name} = {self.description}>"

@@ -247,8 +247,7 @@ def _point_evaluator(claim: Claim, R: Any, point: dict[sympy.Symbol, Any]) -> Ca
     """A converter from parameter expressions to exact Fractions at the given point."""
     conv = _converter(claim)
     cache: dict[Any, Fraction] = {}
-    args = [sympy.QQ(Fraction(point[s]).numerator, Fraction(point[s]).denominator) for s in claim.parameters]
-    args = args or [sympy.QQ(0)]
+    args = [Fraction(point[s]) for s in claim.parameters] or [Fraction(0)]
 
     def scalar(expr: Any) -> Fraction:
         out = cache.get(expr)
@@ -258,11 +257,24 @@ def _point_evaluator(claim: Claim, R: Any, point: dict[sympy.Symbol, Any]) -> Ca
             elif expr.is_Rational:
                 out = Fraction(int(expr.p), int(expr.q))
             else:
-                out = _qq_to_fraction(conv(expr)(*args))
+                out = _value_at(conv(expr), args)
             cache[expr] = out
         return out
 
     return scalar
+
+
+def _value_at(poly: Any, xs: list[Fraction]) -> Fraction:
+    """The exact value of a polynomial of the ring at a point (term by term: much faster than
+    the ring's own evaluation, which builds a smaller ring for every variable)."""
+    total = Fraction(0)
+    for monom, coeff in poly.items():
+        term = _qq_to_fraction(coeff)
+        for x, e in zip(xs, monom, strict=False):
+            if e:
+                term *= x**e
+        total += term
+    return total
 
 
 def _modp(x: Fraction) -> int:
