@@ -109,6 +109,53 @@ def test_verify_catches_a_wrong_answer():
         t.verify(wrong)
 
 
+def _with_answer(ex, index, answer):
+    import dataclasses
+
+    parts = list(ex.parts)
+    parts[index] = dataclasses.replace(parts[index], answer=answer)
+    return dataclasses.replace(ex, parts=tuple(parts))
+
+
+def _with_params(ex, params):
+    import dataclasses
+
+    return dataclasses.replace(ex, params=params)
+
+
+def test_classify_is_verified_by_the_hierarchy():
+    from pgsym.exercises.model import Answer
+
+    t = get_template("classify")
+    # H = [[0, -1, 5], [1, 0, 2], [0, 0, 1]]: a quarter turn and a translation, so pgsym.hierarchy.classify
+    # says Euclidean, which the exercise calls an isometry (key A, 3 degrees of freedom)
+    ex = next(e for e in (t.generate(seed=s, level=1, slot=1) for s in range(200)) if e.params["class"] == "isometry")
+    t.verify(ex)
+    with pytest.raises(TemplateError, match="but the matrix is an isometry"):
+        t.verify(_with_answer(ex, 0, Answer.choice("B")))
+    with pytest.raises(TemplateError, match="wrong DoF"):
+        t.verify(_with_answer(ex, 1, Answer.integer(4)))
+    rotation = _with_params(ex, {"H": [[0, -1, 5], [1, 0, 2], [0, 0, 1]], "class": "isometry"})
+    t.verify(rotation)
+    with pytest.raises(TemplateError, match="singular"):
+        t.verify(_with_params(ex, {"H": [[1, 2, 0], [2, 4, 0], [0, 0, 1]], "class": "isometry"}))
+
+
+def test_decompose_is_verified_by_the_library_decomposition():
+    from pgsym.exercises.model import Answer
+
+    t = get_template("decompose")
+    ex = t.generate(seed=1, level=3, slot=1)
+    s = ex.parts[0].answer.value
+    with pytest.raises(TemplateError, match="the scale is"):
+        t.verify(_with_answer(ex, 0, Answer.scalar(2 * s)))
+    # R transposed is the inverse rotation: still orthogonal with det 1, but not the factor of H
+    R = ex.parts[1].answer.value
+    assert R[0][1] != 0  # not a half turn or the identity, which equal their transposes
+    with pytest.raises(TemplateError, match="R or K differs"):
+        t.verify(_with_answer(ex, 1, Answer.matrix_exact([[R[0][0], R[1][0]], [R[0][1], R[1][1]]])))
+
+
 # --- seeds ------------------------------------------------------------------------------------------------------
 def test_seed_depends_on_master_student_and_slot():
     s = variant_seed(1, "a", "join#0")
