@@ -205,8 +205,19 @@ class _Ratio:
         return _Ratio(self.n * o.d, self.d * o.n)
 
 
-def _fixed(c: Claim, name: str, kind: str, *coords: int) -> object:
-    return getattr(c, kind)(name, *coords)
+def _incident_to_both(c: Claim, free: Callable[[str], object], op: str, name: str, given: str) -> None:
+    """Two generic objects, the one ``op`` builds from them, and its incidence with each (join and meet are dual)."""
+    objs = [free(n) for n in given]
+    new = c.construct(op, name, *objs)
+    for obj in objs:
+        c.conclude_incident(*((obj, new) if new.kind == "line" else (new, obj)))
+
+
+def _span(c: Claim, free: Callable[[str], object], a: str, b: str, name: str) -> tuple:
+    """Two generic objects and their combination s·a + t·b (parameters s, t first)."""
+    s, t = c.params("s t")
+    p, q = free(a), free(b)
+    return p, q, c.combine(name, p, q, s, t)
 
 
 # == Part I: points and lines ===================================================================
@@ -214,19 +225,13 @@ def _fixed(c: Claim, name: str, kind: str, *coords: int) -> object:
 @_entry("join-contains-both-points", "The join of two points contains both", "points-and-lines")
 def _join_contains_both_points(c: Claim) -> None:
     """The line l = A × B passes through A and through B."""
-    A, B = c.free_point("A"), c.free_point("B")
-    l = c.join("l", A, B)
-    c.conclude_incident(A, l)
-    c.conclude_incident(B, l)
+    _incident_to_both(c, c.free_point, "join", "l", "AB")
 
 
 @_entry("meet-lies-on-both-lines", "The meet of two lines lies on both", "points-and-lines")
 def _meet_lies_on_both_lines(c: Claim) -> None:
     """The point x = l × m lies on l and on m."""
-    l, m = c.free_line("l"), c.free_line("m")
-    x = c.meet("x", l, m)
-    c.conclude_incident(x, l)
-    c.conclude_incident(x, m)
+    _incident_to_both(c, c.free_line, "meet", "x", "lm")
 
 
 @_entry("join-is-determinant", "The equation of the join is a determinant", "points-and-lines")
@@ -242,27 +247,19 @@ def _join_is_determinant(c: Claim) -> None:
 @_entry("collinear-iff-determinant", "Collinear points have a zero determinant", "points-and-lines")
 def _collinear_iff_determinant(c: Claim) -> None:
     """A point C = sA + tB on the line AB gives det[A B C] = 0."""
-    s, t = c.params("s t")
-    A, B = c.free_point("A"), c.free_point("B")
-    C = c.combine("C", A, B, s, t)
-    c.conclude_collinear(A, B, C)
+    c.conclude_collinear(*_span(c, c.free_point, "A", "B", "C"))
 
 
 @_entry("concurrent-iff-determinant", "Concurrent lines have a zero determinant", "points-and-lines")
 def _concurrent_iff_determinant(c: Claim) -> None:
     """A line n = s l + t m of the pencil of l and m gives det[l m n] = 0."""
-    s, t = c.params("s t")
-    l, m = c.free_line("l"), c.free_line("m")
-    n = c.combine("n", l, m, s, t)
-    c.conclude_concurrent(l, m, n)
+    c.conclude_concurrent(*_span(c, c.free_line, "l", "m", "n"))
 
 
 @_entry("pencil-passes-through-meet", "Every line of a pencil passes through its centre", "points-and-lines")
 def _pencil_passes_through_meet(c: Claim) -> None:
     """The lines s l + t m all pass through l × m."""
-    s, t = c.params("s t")
-    l, m = c.free_line("l"), c.free_line("m")
-    n = c.combine("n", l, m, s, t)
+    l, m, n = _span(c, c.free_line, "l", "m", "n")
     c.conclude_incident(c.meet("x", l, m), n)
 
 
@@ -346,9 +343,7 @@ def _homography_preserves_incidence(c: Claim) -> None:
         "projective-transformations")
 def _homography_preserves_collinearity(c: Claim) -> None:
     """det[HA HB HC] = 0 when C = sA + tB."""
-    s, t = c.params("s t")
-    A, B = c.free_point("A"), c.free_point("B")
-    C = c.combine("C", A, B, s, t)
+    A, B, C = _span(c, c.free_point, "A", "B", "C")
     H = c.free_matrix("H", 3)
     c.conclude_collinear(c.apply("A2", H, A), c.apply("B2", H, B), c.apply("C2", H, C))
 
@@ -381,57 +376,44 @@ def _conics_transform_by_inverse(c: Claim) -> None:
 
 # == hierarchy of 2D and 3D transformations: degrees of freedom =======================================
 
-def _dof(c: Claim, group: TransformationClass, dof: int, names: str = "") -> None:
-    entries, params = class_matrix(c, group, names)
-    c.conclude_dof("H", entries, params, dof)
+# name, title, chapter, class of the hierarchy, degrees of freedom, parameter names, statement
+_DOF_CLAIMS = (
+    ("dof-projective-2d", "A 2D homography has 8 degrees of freedom", "hierarchy-2d", PROJECTIVE_2D, 8,
+     " ".join(f"h{i}" for i in range(1, 10)),
+     "Nine entries up to a common scale: the family of all 3×3 matrices has dimension 8 in P⁸."),
+    ("dof-affine-2d", "A 2D affinity has 6 degrees of freedom", "hierarchy-2d", AFFINE_2D, 6, "a b c d tx ty",
+     "[[a, b, tx], [c, d, ty], [0, 0, 1]] depends on 6 independent parameters."),
+    ("dof-similarity-2d", "A 2D similarity has 4 degrees of freedom", "hierarchy-2d", SIMILARITY_2D, 4, "k t tx ty",
+     "A scale k, a rotation by the rational parametrisation of tan(θ/2) = t, and a translation: 4."),
+    ("dof-euclidean-2d", "A 2D Euclidean motion has 3 degrees of freedom", "hierarchy-2d", EUCLIDEAN_2D, 3, "t tx ty",
+     "A rotation by the rational parametrisation cos θ = (1 − t²)/(1 + t²), sin θ = 2t/(1 + t²), and a translation."),
+    ("dof-projective-3d", "A 3D homography has 15 degrees of freedom", "hierarchy-3d", PROJECTIVE_3D, 15,
+     " ".join(f"h{i}" for i in range(1, 17)), "Sixteen entries up to a common scale."),
+    ("dof-affine-3d", "A 3D affinity has 12 degrees of freedom", "hierarchy-3d", AFFINE_3D, 12,
+     " ".join(f"a{i}" for i in range(1, 13)), "A 3×4 top block and the row (0, 0, 0, 1)."),
+    ("dof-similarity-3d", "A 3D similarity has 7 degrees of freedom", "hierarchy-3d", SIMILARITY_3D, 7,
+     "k a b c t1 t2 t3", "Scale k, a rotation by the Cayley transform of (a, b, c), and a translation."),
+    ("dof-euclidean-3d", "A 3D Euclidean motion has 6 degrees of freedom", "hierarchy-3d", EUCLIDEAN_3D, 6,
+     "a b c t1 t2 t3", "A rotation by the Cayley transform of (a, b, c) and a translation."),
+)
 
 
-@_entry("dof-projective-2d", "A 2D homography has 8 degrees of freedom", "hierarchy-2d")
-def _dof_projective_2d(c: Claim) -> None:
-    """Nine entries up to a common scale: the family of all 3×3 matrices has dimension 8 in P⁸."""
-    _dof(c, PROJECTIVE_2D, 8, " ".join(f"h{i}" for i in range(1, 10)))
+def _dof_claim(group: TransformationClass, dof: int, names: str, statement: str) -> Callable[[Claim], None]:
+    """The builder of one DoF claim: the hierarchy's generic element of ``group`` has ``dof`` degrees of freedom."""
+
+    def build(c: Claim) -> None:
+        entries, params = class_matrix(c, group, names)
+        c.conclude_dof("H", entries, params, dof)
+
+    # named after the class (e.g. _dof_similarity3) in tracebacks and profiles, like the other builders
+    name = f"_dof_{group.key}"
+    build.__code__ = build.__code__.replace(co_name=name, co_qualname=name)
+    build.__doc__, build.__name__, build.__qualname__ = statement, name, name
+    return build
 
 
-@_entry("dof-affine-2d", "A 2D affinity has 6 degrees of freedom", "hierarchy-2d")
-def _dof_affine_2d(c: Claim) -> None:
-    """[[a, b, tx], [c, d, ty], [0, 0, 1]] depends on 6 independent parameters."""
-    _dof(c, AFFINE_2D, 6, "a b c d tx ty")
-
-
-@_entry("dof-similarity-2d", "A 2D similarity has 4 degrees of freedom", "hierarchy-2d")
-def _dof_similarity_2d(c: Claim) -> None:
-    """A scale k, a rotation by the rational parametrisation of tan(θ/2) = t, and a translation: 4."""
-    _dof(c, SIMILARITY_2D, 4, "k t tx ty")
-
-
-@_entry("dof-euclidean-2d", "A 2D Euclidean motion has 3 degrees of freedom", "hierarchy-2d")
-def _dof_euclidean_2d(c: Claim) -> None:
-    """A rotation by the rational parametrisation cos θ = (1 − t²)/(1 + t²), sin θ = 2t/(1 + t²), and a translation."""
-    _dof(c, EUCLIDEAN_2D, 3, "t tx ty")
-
-
-@_entry("dof-projective-3d", "A 3D homography has 15 degrees of freedom", "hierarchy-3d")
-def _dof_projective_3d(c: Claim) -> None:
-    """Sixteen entries up to a common scale."""
-    _dof(c, PROJECTIVE_3D, 15, " ".join(f"h{i}" for i in range(1, 17)))
-
-
-@_entry("dof-affine-3d", "A 3D affinity has 12 degrees of freedom", "hierarchy-3d")
-def _dof_affine_3d(c: Claim) -> None:
-    """A 3×4 top block and the row (0, 0, 0, 1)."""
-    _dof(c, AFFINE_3D, 12, " ".join(f"a{i}" for i in range(1, 13)))
-
-
-@_entry("dof-similarity-3d", "A 3D similarity has 7 degrees of freedom", "hierarchy-3d")
-def _dof_similarity_3d(c: Claim) -> None:
-    """Scale k, a rotation by the Cayley transform of (a, b, c), and a translation."""
-    _dof(c, SIMILARITY_3D, 7, "k a b c t1 t2 t3")
-
-
-@_entry("dof-euclidean-3d", "A 3D Euclidean motion has 6 degrees of freedom", "hierarchy-3d")
-def _dof_euclidean_3d(c: Claim) -> None:
-    """A rotation by the Cayley transform of (a, b, c) and a translation."""
-    _dof(c, EUCLIDEAN_3D, 6, "a b c t1 t2 t3")
+for _name, _title, _chapter, _group, _dof, _names, _statement in _DOF_CLAIMS:
+    _entry(_name, _title, _chapter)(_dof_claim(_group, _dof, _names, _statement))
 
 
 # == invariants =================================================================================
@@ -709,9 +691,7 @@ def _planes_transform_by_inverse_transpose(c: Claim) -> None:
         "null-space-and-svd")
 def _collinear_points_rank_two(c: Claim) -> None:
     """[A; B; sA + tB] has rank exactly 2, so its null space is the line through them."""
-    s, t = c.params("s t")
-    A, B = c.free_point("A"), c.free_point("B")
-    C = c.combine("C", A, B, s, t)
+    A, B, C = _span(c, c.free_point, "A", "B", "C")
     c.conclude_rank(c.formula("M", "matrix", lambda *rows: tuple(rows), A, B, C, description="[A; B; C]"), 2)
 
 
@@ -800,10 +780,13 @@ def _pappus(c: Claim) -> None:
     a, b, cc, a2, b2, c2, p, q = c.params("a b c a2 b2 c2 p q")
     A, B, C = (c.point(n, t, 0) for n, t in (("A", a), ("B", b), ("C", cc)))
     A2, B2, C2 = (c.point(n, t * p, t * q) for n, t in (("A'", a2), ("B'", b2), ("C'", c2)))
-    X = c.meet("X", c.join("AB'", A, B2), c.join("A'B", A2, B))
-    Y = c.meet("Y", c.join("AC'", A, C2), c.join("A'C", A2, C))
-    Z = c.meet("Z", c.join("BC'", B, C2), c.join("B'C", B2, C))
-    c.conclude_collinear(X, Y, Z)
+    _collinear_meets(c, ((A, B2), (A2, B)), ((A, C2), (A2, C)), ((B, C2), (B2, C)))
+
+
+def _collinear_meets(c: Claim, *pairs: tuple) -> None:
+    """X, Y, Z = the meets of three pairs of joins ((P, Q), (R, S)) ↦ PQ ∧ RS, concluded collinear."""
+    joins = (tuple(c.join(p.name + q.name, p, q) for p, q in pair) for pair in pairs)
+    c.conclude_collinear(*(c.meet(name, *lines) for name, lines in zip("XYZ", joins, strict=True)))
 
 
 def _desargues_triangles(c: Claim) -> tuple:
@@ -817,10 +800,7 @@ def _desargues_triangles(c: Claim) -> tuple:
 def _desargues(c: Claim) -> None:
     """Triangles ABC and A'B'C' in perspective from a point O are in perspective from a line."""
     A, B, C, A2, B2, C2 = _desargues_triangles(c)
-    X = c.meet("X", c.join("AB", A, B), c.join("A'B'", A2, B2))
-    Y = c.meet("Y", c.join("BC", B, C), c.join("B'C'", B2, C2))
-    Z = c.meet("Z", c.join("CA", C, A), c.join("C'A'", C2, A2))
-    c.conclude_collinear(X, Y, Z)
+    _collinear_meets(c, ((A, B), (A2, B2)), ((B, C), (B2, C2)), ((C, A), (C2, A2)))
 
 
 @_entry("desargues-converse", "The converse of Desargues's theorem", "classical-theorems")
@@ -847,10 +827,7 @@ def _pascal(c: Claim) -> None:
     c.method_note = "the six points are (t, t², 1) on the conic y = x², projectively equivalent to every "\
         "non-degenerate conic"
     A, B, C, D, E, F = _on_parabola(c, "ABCDEF")
-    X = c.meet("X", c.join("AB", A, B), c.join("DE", D, E))
-    Y = c.meet("Y", c.join("BC", B, C), c.join("EF", E, F))
-    Z = c.meet("Z", c.join("CD", C, D), c.join("FA", F, A))
-    c.conclude_collinear(X, Y, Z)
+    _collinear_meets(c, ((A, B), (D, E)), ((B, C), (E, F)), ((C, D), (F, A)))
 
 
 @_entry("brianchon", "Brianchon's theorem", "classical-theorems")
@@ -942,10 +919,7 @@ def _affine_preserves_distance(c: Claim) -> None:
 def _pascal_without_conic(c: Claim) -> None:
     """Claims Pascal's collinearity for six free points, not on one conic."""
     A, B, C, D, E, F = (c.free_point(n) for n in "ABCDEF")
-    X = c.meet("X", c.join("AB", A, B), c.join("DE", D, E))
-    Y = c.meet("Y", c.join("BC", B, C), c.join("EF", E, F))
-    Z = c.meet("Z", c.join("CD", C, D), c.join("FA", F, A))
-    c.conclude_collinear(X, Y, Z)
+    _collinear_meets(c, ((A, B), (D, E)), ((B, C), (E, F)), ((C, D), (F, A)))
 
 
 @_entry("klein-relation-sign-flipped", "FALSE: the Klein relation with a sign flipped", "lines-in-3d", expected=False)
