@@ -22,8 +22,6 @@ from fractions import Fraction
 from itertools import combinations
 from typing import Any
 
-from .errors import ZeroVectorError
-
 __all__ = [
     "adjugate",
     "cross",
@@ -182,8 +180,8 @@ def primitive_integers(values: Sequence[Any]) -> tuple[int, ...]:
     """The primitive integer representative of a nonzero rational vector up to scale, first nonzero entry positive.
 
     Entries are integers or :class:`fractions.Fraction` (or anything ``Fraction`` accepts). It never
-    divides by the last entry, so ideal points keep their zero. Raises
-    :class:`~pgsym.errors.ZeroVectorError` (a ``ValueError``) for the zero vector.
+    divides by the last entry, so ideal points keep their zero. Raises ``ValueError`` for the zero
+    vector (a template that produced it has a bug; the stress check reports it).
 
     >>> primitive_integers([Fraction(1, 2), Fraction(-1, 3), 0])
     (3, -2, 0)
@@ -199,7 +197,8 @@ def primitive_integers(values: Sequence[Any]) -> tuple[int, ...]:
         den = math.lcm(*[v.denominator for v in fr])
         ints = [int(v * den) for v in fr]
     if not any(ints):
-        raise ZeroVectorError("the zero vector has no primitive integer representative")
+        # a plain ValueError with this text, as before the move: stress reports and the book show it
+        raise ValueError("the zero vector has no canonical form")
     g = math.gcd(*ints)
     sign = -1 if next(i for i in ints if i != 0) < 0 else 1
     return tuple(sign * i // g for i in ints)
