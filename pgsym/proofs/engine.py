@@ -14,6 +14,9 @@
    pgsym's own objects (``join``, ``meet``, ``plane_through``, ``Line3.join``, …) and
    compared with the formulas, so the catalogue and the library cannot drift.
 
+All three read each construction's formula, conditions and core builder from the one table
+:data:`pgsym.proofs.operations.OPERATIONS`.
+
 >>> from pgsym.proofs.claims import Claim
 >>> c = Claim("demo", "the join of A and B contains A")
 >>> A, B = c.free_point("A"), c.free_point("B")
