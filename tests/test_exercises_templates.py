@@ -6,6 +6,8 @@ import random
 from fractions import Fraction
 
 import pytest
+from hypothesis import given
+from hypothesis import strategies as st
 
 from pgsym.exercises.seeds import form_id, slot_keys, variant_seed
 from pgsym.exercises.sheets import build_sheet, build_sheets, parse_topics
@@ -59,6 +61,29 @@ def test_exact_helpers_by_hand():
     A = adjugate(M)
     assert [[sum(A[i][k] * M[k][j] for k in range(3)) for j in range(3)] for i in range(3)] == \
         [[2, 0, 0], [0, 2, 0], [0, 0, 2]]
+
+
+fractions = st.fractions(min_value=-50, max_value=50, max_denominator=12)
+
+
+@given(st.lists(fractions, min_size=2, max_size=6).filter(any), fractions.filter(bool))
+def test_primitive_integers_is_the_one_representative_up_to_scale(values, scale):
+    import math
+
+    ints = primitive_integers(values)
+    # integers, coprime, first nonzero entry positive, proportional to the input, zeros kept in place
+    assert all(type(x) is int for x in ints) and math.gcd(*ints) == 1
+    assert next(x for x in ints if x) > 0
+    k = next(i for i, v in enumerate(values) if v)
+    assert all(ints[i] * values[k] == ints[k] * v for i, v in enumerate(values))
+    assert [x == 0 for x in ints] == [v == 0 for v in values]
+    # the same projective point, scaled by any nonzero rational, has the same representative
+    assert primitive_integers([scale * v for v in values]) == ints
+
+
+def test_primitive_integers_of_the_zero_vector_is_an_error():
+    with pytest.raises(ValueError, match="zero vector"):
+        primitive_integers([0, Fraction(0), 0])
 
 
 def test_join_instance_is_right_by_hand():
