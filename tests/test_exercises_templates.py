@@ -6,12 +6,14 @@ import random
 from fractions import Fraction
 
 import pytest
+from hypothesis import given
+from hypothesis import strategies as st
 
-from pgsym.exercises._exact import adjugate, canonical_ints, det
 from pgsym.exercises.seeds import form_id, slot_keys, variant_seed
 from pgsym.exercises.sheets import build_sheet, build_sheets, parse_topics
 from pgsym.exercises.stress import stress
 from pgsym.exercises.template import TemplateError, UnknownTopicError, all_templates, get_template
+from pgsym.ring import adjugate, det, primitive_integers
 
 TOPICS = ["homogeneous", "join", "meet", "ideal", "incidence", "apply-point", "apply-line", "apply-conic", "classify",
           "preserved", "cross-ratio", "homography4", "plane3", "point3", "plucker", "decompose"]
@@ -50,8 +52,8 @@ def test_multiple_choice_keys_are_spread():
 # --- worked examples, derived by hand -------------------------------------------------------------------------
 def test_exact_helpers_by_hand():
     # (1/2, -1/3, 0) * 6 = (3, -2, 0); never divided by the last coordinate
-    assert canonical_ints([Fraction(1, 2), Fraction(-1, 3), 0]) == (3, -2, 0)
-    assert canonical_ints([0, -4, 6]) == (0, 2, -3)
+    assert primitive_integers([Fraction(1, 2), Fraction(-1, 3), 0]) == (3, -2, 0)
+    assert primitive_integers([0, -4, 6]) == (0, 2, -3)
     # det of [[2,1,0],[0,1,0],[1,0,1]] = 2*(1*1-0*0) - 1*(0*1-0*1) + 0 = 2
     M = [[2, 1, 0], [0, 1, 0], [1, 0, 1]]
     assert det(M) == 2
@@ -61,12 +63,35 @@ def test_exact_helpers_by_hand():
         [[2, 0, 0], [0, 2, 0], [0, 0, 2]]
 
 
+fractions = st.fractions(min_value=-50, max_value=50, max_denominator=12)
+
+
+@given(st.lists(fractions, min_size=2, max_size=6).filter(any), fractions.filter(bool))
+def test_primitive_integers_is_the_one_representative_up_to_scale(values, scale):
+    import math
+
+    ints = primitive_integers(values)
+    # integers, coprime, first nonzero entry positive, proportional to the input, zeros kept in place
+    assert all(type(x) is int for x in ints) and math.gcd(*ints) == 1
+    assert next(x for x in ints if x) > 0
+    k = next(i for i, v in enumerate(values) if v)
+    assert all(ints[i] * values[k] == ints[k] * v for i, v in enumerate(values))
+    assert [x == 0 for x in ints] == [v == 0 for v in values]
+    # the same projective point, scaled by any nonzero rational, has the same representative
+    assert primitive_integers([scale * v for v in values]) == ints
+
+
+def test_primitive_integers_of_the_zero_vector_is_an_error():
+    with pytest.raises(ValueError, match="zero vector"):
+        primitive_integers([0, Fraction(0), 0])
+
+
 def test_join_instance_is_right_by_hand():
     ex = get_template("join").generate(seed=3, level=1, slot=1)
     p, q = ex.params["p"], ex.params["q"]
     # l = p x q written out component by component
     l = (p[1] * q[2] - p[2] * q[1], p[2] * q[0] - p[0] * q[2], p[0] * q[1] - p[1] * q[0])
-    assert canonical_ints(l) == ex.parts[0].answer.value
+    assert primitive_integers(l) == ex.parts[0].answer.value
     assert sum(a * b for a, b in zip(l, p, strict=True)) == 0
 
 
@@ -107,6 +132,53 @@ def test_verify_catches_a_wrong_answer():
     wrong = dataclasses.replace(ex, parts=(dataclasses.replace(ex.parts[0], answer=Answer.projective([1, 2, 3])),))
     with pytest.raises(TemplateError):
         t.verify(wrong)
+
+
+def _with_answer(ex, index, answer):
+    import dataclasses
+
+    parts = list(ex.parts)
+    parts[index] = dataclasses.replace(parts[index], answer=answer)
+    return dataclasses.replace(ex, parts=tuple(parts))
+
+
+def _with_params(ex, params):
+    import dataclasses
+
+    return dataclasses.replace(ex, params=params)
+
+
+def test_classify_is_verified_by_the_hierarchy():
+    from pgsym.exercises.model import Answer
+
+    t = get_template("classify")
+    # H = [[0, -1, 5], [1, 0, 2], [0, 0, 1]]: a quarter turn and a translation, so pgsym.hierarchy.classify
+    # says Euclidean, which the exercise calls an isometry (key A, 3 degrees of freedom)
+    ex = next(e for e in (t.generate(seed=s, level=1, slot=1) for s in range(200)) if e.params["class"] == "isometry")
+    t.verify(ex)
+    with pytest.raises(TemplateError, match="but the matrix is an isometry"):
+        t.verify(_with_answer(ex, 0, Answer.choice("B")))
+    with pytest.raises(TemplateError, match="wrong DoF"):
+        t.verify(_with_answer(ex, 1, Answer.integer(4)))
+    rotation = _with_params(ex, {"H": [[0, -1, 5], [1, 0, 2], [0, 0, 1]], "class": "isometry"})
+    t.verify(rotation)
+    with pytest.raises(TemplateError, match="singular"):
+        t.verify(_with_params(ex, {"H": [[1, 2, 0], [2, 4, 0], [0, 0, 1]], "class": "isometry"}))
+
+
+def test_decompose_is_verified_by_the_library_decomposition():
+    from pgsym.exercises.model import Answer
+
+    t = get_template("decompose")
+    ex = t.generate(seed=1, level=3, slot=1)
+    s = ex.parts[0].answer.value
+    with pytest.raises(TemplateError, match="the scale is"):
+        t.verify(_with_answer(ex, 0, Answer.scalar(2 * s)))
+    # R transposed is the inverse rotation: still orthogonal with det 1, but not the factor of H
+    R = ex.parts[1].answer.value
+    assert R[0][1] != 0  # not a half turn or the identity, which equal their transposes
+    with pytest.raises(TemplateError, match="R or K differs"):
+        t.verify(_with_answer(ex, 1, Answer.matrix_exact([[R[0][0], R[1][0]], [R[0][1], R[1][1]]])))
 
 
 # --- seeds ------------------------------------------------------------------------------------------------------

@@ -163,3 +163,48 @@ INDEPENDENT = {
 
 def test_every_false_claim_has_an_independent_check():
     assert set(INDEPENDENT) == set(FALSE)
+
+
+# -- one parametrisation of each group: the hierarchy's ------------------------------------------------------
+
+DOF_CLAIMS = {"dof-projective-2d": "projective2", "dof-affine-2d": "affine2", "dof-similarity-2d": "similarity2",
+              "dof-euclidean-2d": "euclidean2", "dof-projective-3d": "projective3", "dof-affine-3d": "affine3",
+              "dof-similarity-3d": "similarity3", "dof-euclidean-3d": "euclidean3"}
+
+
+def _proportional_matrices(M, G):
+    u, v = list(M), list(G)
+    return any(u) and all(sympy.cancel(u[i] * v[j] - u[j] * v[i]) == 0 for i in range(len(u)) for j in range(len(u)))
+
+
+@pytest.mark.parametrize("name", sorted(DOF_CLAIMS))
+def test_dof_claims_use_the_hierarchy_parametrisation(name):
+    from pgsym.hierarchy import class_by_key
+
+    group = class_by_key(DOF_CLAIMS[name])
+    claim = get_claim(name)
+    # the claim's own parameters stand for the hierarchy's, in the same order
+    ours = claim.parameters[: group.n_parameters]
+    generic = group.generic().subs(dict(zip(group.parameters, ours, strict=True)), simultaneous=True)
+    # the last column of [J | vec H] is vec H: the claim's matrix is the generic element times a scalar
+    jac = Matrix(claim.nodes["H"].data)
+    n = generic.rows
+    H = Matrix(n, n, list(jac[:, -1]))
+    assert _proportional_matrices(H, generic)
+    assert jac.shape[1] == group.n_parameters + 1
+    # and the catalogue's DoF is the one the hierarchy derives independently (exact Jacobian rank at a point)
+    _, rank = claim.conclusions[0].args
+    assert rank - 1 == group.dof().dof
+
+
+@pytest.mark.parametrize(("name", "node", "key"), [("euclidean-preserves-distance", "E", "euclidean2"),
+                                                   ("similarity-preserves-length-ratio", "S", "similarity2"),
+                                                   ("affine-preserves-area-ratio", "T", "affine2")])
+def test_invariant_claims_transform_by_the_hierarchy_generic_element(name, node, key):
+    from pgsym.hierarchy import class_by_key
+
+    group = class_by_key(key)
+    claim = get_claim(name)
+    ours = claim.parameters[: group.n_parameters]
+    generic = group.generic().subs(dict(zip(group.parameters, ours, strict=True)), simultaneous=True)
+    assert _proportional_matrices(Matrix(claim.nodes[node].data), generic)

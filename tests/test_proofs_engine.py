@@ -234,3 +234,95 @@ def test_cross_ratio_from_a_point_matches_the_line_formula(xs, o):
     num, den = _cross_ratio_p2(a, b, c, d, view)
     x1, x2, x3, x4 = xs
     assert sympy.Rational(num, den) == sympy.Rational((x1 - x3) * (x2 - x4), (x1 - x4) * (x2 - x3))
+
+
+# -- the table of operations ---------------------------------------------------------------------------------
+
+def test_every_operation_of_the_table_has_formula_conditions_and_core_builder():
+    from pgsym.proofs.operations import KINDS, OPERATIONS
+
+    for op in OPERATIONS.values():
+        assert callable(op.formula) and callable(op.conditions) and callable(op.description), op.name
+        # a user formula has no counterpart in the core, and a constant ratio is just a number
+        assert (op.core is None) == (op.name in ("formula", "const")), op.name
+        for kinds in op.arg_kinds or ():
+            assert set(kinds) <= set(KINDS), op.name
+        assert isinstance(op.result, int) or op.result in KINDS or op.name in ("free", "formula"), op.name
+    # every construction states its non-degeneracy in words, e.g. "A and B distinct" for a join
+    assert OPERATIONS["join"].conditions(["A", "B"], "l", None) == ["A ≠ B"]
+    assert OPERATIONS["plane_through"].conditions(["A", "B", "C"], "p", None) == ["A, B, C are not collinear"]
+
+
+def test_the_builder_accepts_exactly_the_table_operations():
+    from pgsym.proofs.operations import OPERATIONS, constructions
+
+    accepted = set(constructions())
+    assert accepted == {n for n, op in OPERATIONS.items() if op.constructible} | {"apply_plane"}
+    for name in accepted:
+        assert callable(getattr(Claim, name)), name
+    for name in ("free", "const", "frobnicate", "cross"):
+        with pytest.raises(UndefinedConstructionError, match="unknown construction"):
+            Claim("x", "x").construct(name, "z")
+    # construct dispatches through the table: the same node as the method
+    c = Claim("x", "x")
+    A, B = c.free_point("A"), c.free_point("B")
+    via_table, via_method = c.construct("join", "l", A, B), c.join("m", A, B)
+    assert (via_table.op, via_table.args, via_table.conditions) == (via_method.op, via_method.args, ["A ≠ B"])
+    assert c.construct("apply_plane", "q", c.free_matrix("H", 4), c.free_plane("p")).op == "apply_line"
+    with pytest.raises(ObjectTypeError, match="conic_through needs five points, got 2"):
+        c.conic_through("C", A, B)
+
+
+def test_the_engine_evaluates_exactly_the_table_operations():
+    c = Claim("x", "x")
+    A = c.free_point("A")
+    c.conclude_incident(A, c.join("l", A, c.point("B", 1, 2)))
+    c.nodes["l"].op = "wedge-of-three"  # an operation no entry of the table defines
+    with pytest.raises(UndefinedConstructionError, match="no operation of the table"):
+        prove(c)
+
+
+def test_one_claim_with_every_operation_agrees_with_the_core():
+    # each operation's formula is compared with its core builder at a rational point (the core check)
+    from pgsym.proofs.operations import OPERATIONS
+
+    c = Claim("all-operations", "every operation of the table once")
+    (s,) = c.params("s")
+    A, B = c.free_point("A"), c.point("B", 1, 2)
+    l = c.join("l", A, B)
+    c.meet("X", l, c.line("m", 1, s, 3))
+    c.combine("Y", A, B, s, 1)
+    Q = c.free_point3("Q")
+    P1, P2 = c.point3("P1", 1, 0, 0), c.point3("P2", 0, 1, 2)
+    pi = c.plane_through("pi", Q, P1, P2)
+    c.point_on_planes("Z", pi, c.plane("q1", 1, 0, 0, s), c.plane("q2", 0, 1, 0, 2))
+    c.line3("L", Q, P1)
+    H = c.matrix("H", [[1, s, 0], [0, 1, 2], [1, 0, 1]], invertible=True)
+    c.apply("HA", H, A)
+    c.apply_line("Hl", H, l)
+    C0 = c.conic("C0", [[1, 0, 0], [0, 2, 0], [0, 0, -1]])
+    c.apply_conic("HC", H, C0)
+    c.polar("p", C0, A)
+    c.dual_conic("D", C0)
+    c.conic_through("C", *(c.point(f"K{i}", x, y) for i, (x, y) in enumerate(((1, 0), (0, 1), (-1, 0), (0, -1),
+                                                                                 (2, 3)))))
+    a, b, d = c.free_point1("a"), c.free_point1("b"), c.free_point1("d")
+    h = c.harmonic_conjugate("h", a, b, d)
+    c.conclude_equal_ratio(c.cross_ratio("cr", a, b, d, h), -1)  # -1 is a constant ratio node
+    c.formula("f", "scalar", alg.dot, l, A)
+    c.conclude_incident(A, l)
+    assert {n.op for n in c.nodes.values()} == set(OPERATIONS)
+    v = prove(c)
+    assert v.proved, v.reason
+    rebuilt = sum(1 for n in c.nodes.values() if n.op not in ("formula", "const"))
+    assert v.core_check == f"{rebuilt} objects rebuilt with pgsym's core at a rational point agree with the formulas"
+
+
+def test_statuses_are_an_enum_that_reads_as_before():
+    from pgsym.proofs import Status
+
+    v = prove("pappus")
+    assert v.status is Status.PROVED and v.status == "proved" and f"{v.status:8s}|" == "proved  |"
+    assert repr(v.status) == "'proved'" and v.to_dict()["status"] == "proved"
+    assert json.loads(v.to_json())["status"] == "proved"
+    assert [str(s) for s in Status] == ["proved", "false", "unknown"]

@@ -16,6 +16,7 @@ import click
 
 from ..limits import MAX_ARGUMENT_CHARS
 from ..proofs.errors import UnknownClaimError
+from ..proofs.verdicts import Status  # no SymPy: the statuses only
 from ._common import DecimalRange
 
 __all__ = ["prove_command"]
@@ -24,9 +25,9 @@ __all__ = ["prove_command"]
 def _line(verdict) -> str:  # type: ignore[no-untyped-def]
     expected = "" if verdict.expected else "  [false claim]"
     ok = "" if verdict.as_expected else "  <-- NOT AS EXPECTED"
-    if verdict.status == "proved":
+    if verdict.status is Status.PROVED:
         extra = f"({len(verdict.conditions)} non-degeneracy conditions)"
-    elif verdict.status == "false":
+    elif verdict.status is Status.FALSE:
         values = ", ".join(f"{k}={v}" for k, v in verdict.counterexample.values.items())
         extra = f"(counterexample: {values[:100]})"
     else:
@@ -83,7 +84,7 @@ def prove_command(names: tuple[str, ...], list_: bool, all_: bool, as_json: bool
     else:
         for v in verdicts:
             click.echo(_line(v))
-    bad = [v.name for v in verdicts if not v.as_expected and (v.expected or v.status == "proved")]
+    bad = [v.name for v in verdicts if not v.as_expected and (v.expected or v.status is Status.PROVED)]
     if bad:
         click.echo(f"not as expected: {', '.join(bad)}", err=True)
         sys.exit(1)

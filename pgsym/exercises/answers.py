@@ -27,7 +27,7 @@ from fractions import Fraction
 from typing import Any
 
 from ..limits import MAX_ANSWER_CHARS, MAX_DIGITS
-from ._exact import canonical_ints
+from ..ring import primitive_integers as canonical_ints
 from .errors import UnparsableAnswerError
 from .model import Answer
 

@@ -17,7 +17,8 @@ from dataclasses import dataclass, field
 from fractions import Fraction
 from typing import Any
 
-from ._exact import canonical_ints, canonical_matrix
+from ..ring import primitive_integer_matrix as canonical_matrix
+from ..ring import primitive_integers as canonical_ints
 
 #: Answer kinds. ``projective`` and ``matrix`` compare up to a nonzero scale; the others exactly.
 KINDS = ("projective", "vector", "scalar", "integer", "matrix", "matrix_exact", "choice")

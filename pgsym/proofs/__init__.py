@@ -27,6 +27,7 @@ _LAZY = {
     "Certificate": "verdicts",
     "Condition": "verdicts",
     "Counterexample": "verdicts",
+    "Status": "verdicts",
     "Verdict": "verdicts",
 }
 

@@ -13,12 +13,27 @@ True
 
 from __future__ import annotations
 
+import functools
 from collections.abc import Callable, Iterable, Iterator
 from dataclasses import dataclass
+from typing import Any
 
 import sympy
+from sympy.polys.rings import ring
 
 from .. import ring as alg
+from ..errors import ObjectTypeError
+from ..hierarchy import (
+    AFFINE_2D,
+    AFFINE_3D,
+    EUCLIDEAN_2D,
+    EUCLIDEAN_3D,
+    PROJECTIVE_2D,
+    PROJECTIVE_3D,
+    SIMILARITY_2D,
+    SIMILARITY_3D,
+    TransformationClass,
+)
 from .claims import Claim
 from .engine import prove as _prove_claim
 from .errors import UnknownClaimError
@@ -120,40 +135,107 @@ def _conic_value(c: tuple, x: tuple) -> object:
     return alg.dot(x, alg.matvec(c, x))
 
 
-def _cayley(a: sympy.Expr, b: sympy.Expr, c: sympy.Expr) -> tuple[sympy.Matrix, sympy.Expr]:
-    """A rotation of ℝ³ times d = 1 + a² + b² + c², by the Cayley transform (polynomial entries)."""
-    S = sympy.Matrix([[0, -c, b], [c, 0, -a], [-b, a, 0]])
-    eye = sympy.eye(3)
-    M = ((eye - S).adjugate() * (eye + S)).applyfunc(sympy.expand)
-    return M, 1 + a**2 + b**2 + c**2
+def class_matrix(c: Claim, group: TransformationClass,
+                 names: str = "") -> tuple[sympy.Matrix, tuple[sympy.Symbol, ...]]:
+    """The generic element of a class of the hierarchy with denominators cleared, and its parameters.
+
+    The parametrisation is the hierarchy's own (:attr:`~pgsym.hierarchy.TransformationClass.builder`:
+    rotations by ``rotation_2d`` / ``rotation_3d``); its parameters are declared on the claim, under
+    ``names`` (space-separated, in the order of ``group.parameter_names``; default those names). The
+    rotations have rational entries, so the element is multiplied by their common denominator: the
+    same projective transformation, with polynomial entries as a claim needs.
+
+    >>> from pgsym.hierarchy import EUCLIDEAN_2D
+    >>> M, ps = class_matrix(Claim("x", "x"), EUCLIDEAN_2D)
+    >>> M.row(2), ps
+    (Matrix([[0, 0, t**2 + 1]]), (t, t_x, t_y))
+    """
+    params = c.params(names or " ".join(group.parameter_names))
+    if len(params) != group.n_parameters:
+        raise ObjectTypeError(f"{group.name} has {group.n_parameters} parameters, got the names {names!r}")
+    R, *gens = ring(params, sympy.ZZ)
+    entries = [[_Ratio.of(e) for e in row] for row in group.builder([_Ratio(g) for g in gens], 0)]
+    dens: list[Any] = []
+    for e in (e for row in entries for e in row):
+        if e.d != 1 and all(e.d != d for d in dens):
+            dens.append(e.d)
+    den = functools.reduce(lambda x, y: x * y, dens, R.one)
+    rows = [[(R(e.n) * den.exquo(R(e.d))).as_expr() for e in row] for row in entries]
+    return sympy.Matrix(rows), params
 
 
-def _fixed(c: Claim, name: str, kind: str, *coords: int) -> object:
-    return getattr(c, kind)(name, *coords)
+class _Ratio:
+    """``n / d`` of polynomials, never reduced: the builders divide only by a few common denominators
+    (``1 + t²``, ``1 + a² + b² + c²``), which are then cleared at once, without any gcd."""
+
+    __slots__ = ("d", "n")
+
+    def __init__(self, n: Any, d: Any = 1) -> None:
+        self.n, self.d = n, d
+
+    @staticmethod
+    def of(x: Any) -> _Ratio:
+        return x if isinstance(x, _Ratio) else _Ratio(x)
+
+    def __add__(self, o: Any) -> _Ratio:
+        o = _Ratio.of(o)
+        if o.d == self.d:
+            return _Ratio(self.n + o.n, self.d)
+        return _Ratio(self.n * o.d + o.n * self.d, self.d * o.d)
+
+    __radd__ = __add__
+
+    def __neg__(self) -> _Ratio:
+        return _Ratio(-self.n, self.d)
+
+    def __sub__(self, o: Any) -> _Ratio:
+        return self + -_Ratio.of(o)
+
+    def __rsub__(self, o: Any) -> _Ratio:
+        return _Ratio.of(o) + -self
+
+    def __mul__(self, o: Any) -> _Ratio:
+        o = _Ratio.of(o)
+        return _Ratio(self.n * o.n, self.d * o.d)
+
+    __rmul__ = __mul__
+
+    def __truediv__(self, o: Any) -> _Ratio:
+        o = _Ratio.of(o)
+        return _Ratio(self.n * o.d, self.d * o.n)
+
+
+def _incident_to_both(c: Claim, free: Callable[[str], object], op: str, name: str, given: str) -> None:
+    """Two generic objects, the one ``op`` builds from them, and its incidence with each (join and meet are dual)."""
+    objs = [free(n) for n in given]
+    new = c.construct(op, name, *objs)
+    for obj in objs:
+        c.conclude_incident(*((obj, new) if new.kind == "line" else (new, obj)))
+
+
+def _span(c: Claim, free: Callable[[str], object], a: str, b: str, name: str) -> tuple:
+    """Two generic objects and their combination s·a + t·b (parameters s, t first)."""
+    s, t = c.params("s t")
+    p, q = free(a), free(b)
+    return p, q, c.combine(name, p, q, s, t)
 
 
 # == Part I: points and lines ===================================================================
 
 @_entry("join-contains-both-points", "The join of two points contains both", "points-and-lines")
-def _(c: Claim) -> None:
+def _join_contains_both_points(c: Claim) -> None:
     """The line l = A × B passes through A and through B."""
-    A, B = c.free_point("A"), c.free_point("B")
-    l = c.join("l", A, B)
-    c.conclude_incident(A, l)
-    c.conclude_incident(B, l)
+    _incident_to_both(c, c.free_point, "join", "l", "AB")
 
 
 @_entry("meet-lies-on-both-lines", "The meet of two lines lies on both", "points-and-lines")
-def _(c: Claim) -> None:
+def _meet_lies_on_both_lines(c: Claim) -> None:
     """The point x = l × m lies on l and on m."""
-    l, m = c.free_line("l"), c.free_line("m")
-    x = c.meet("x", l, m)
-    c.conclude_incident(x, l)
-    c.conclude_incident(x, m)
+    _incident_to_both(c, c.free_line, "meet", "x", "lm")
 
 
 @_entry("join-is-determinant", "The equation of the join is a determinant", "points-and-lines")
-def _(c: Claim) -> None:
+def _join_is_determinant(c: Claim) -> None:
     """For every point X, (A × B)ᵀX = det[X A B]."""
     A, B, X = c.free_point("A"), c.free_point("B"), c.free_point("X")
     l = c.join("l", A, B)
@@ -163,34 +245,26 @@ def _(c: Claim) -> None:
 
 
 @_entry("collinear-iff-determinant", "Collinear points have a zero determinant", "points-and-lines")
-def _(c: Claim) -> None:
+def _collinear_iff_determinant(c: Claim) -> None:
     """A point C = sA + tB on the line AB gives det[A B C] = 0."""
-    s, t = c.params("s t")
-    A, B = c.free_point("A"), c.free_point("B")
-    C = c.combine("C", A, B, s, t)
-    c.conclude_collinear(A, B, C)
+    c.conclude_collinear(*_span(c, c.free_point, "A", "B", "C"))
 
 
 @_entry("concurrent-iff-determinant", "Concurrent lines have a zero determinant", "points-and-lines")
-def _(c: Claim) -> None:
+def _concurrent_iff_determinant(c: Claim) -> None:
     """A line n = s l + t m of the pencil of l and m gives det[l m n] = 0."""
-    s, t = c.params("s t")
-    l, m = c.free_line("l"), c.free_line("m")
-    n = c.combine("n", l, m, s, t)
-    c.conclude_concurrent(l, m, n)
+    c.conclude_concurrent(*_span(c, c.free_line, "l", "m", "n"))
 
 
 @_entry("pencil-passes-through-meet", "Every line of a pencil passes through its centre", "points-and-lines")
-def _(c: Claim) -> None:
+def _pencil_passes_through_meet(c: Claim) -> None:
     """The lines s l + t m all pass through l × m."""
-    s, t = c.params("s t")
-    l, m = c.free_line("l"), c.free_line("m")
-    n = c.combine("n", l, m, s, t)
+    l, m, n = _span(c, c.free_line, "l", "m", "n")
     c.conclude_incident(c.meet("x", l, m), n)
 
 
 @_entry("duality-join-meet", "Duality: join and meet are the same operation", "points-and-lines")
-def _(c: Claim) -> None:
+def _duality_join_meet(c: Claim) -> None:
     """The line through A and B has the coordinates of the point where the lines with A's and B's coordinates meet."""
     A, B = c.free_point("A"), c.free_point("B")
     a = c.line("a", *A.data)
@@ -199,7 +273,7 @@ def _(c: Claim) -> None:
 
 
 @_entry("join-ignores-scale", "The join does not depend on the scale of the points", "points-and-lines")
-def _(c: Claim) -> None:
+def _join_ignores_scale(c: Claim) -> None:
     """(λA) × B is proportional to A × B for λ ≠ 0."""
     (lam,) = c.params("lam")
     A, B = c.free_point("A"), c.free_point("B")
@@ -210,7 +284,7 @@ def _(c: Claim) -> None:
 # == ideal points ===============================================================================
 
 @_entry("parallel-lines-meet-at-infinity", "Parallel lines meet on the line at infinity", "ideal-points")
-def _(c: Claim) -> None:
+def _parallel_lines_meet_at_infinity(c: Claim) -> None:
     """The lines ax + by + p = 0 and ax + by + q = 0 meet in a point with third coordinate 0."""
     a, b, p, q = c.params("a b p q")
     x = c.meet("x", c.line("l", a, b, p), c.line("m", a, b, q))
@@ -218,7 +292,7 @@ def _(c: Claim) -> None:
 
 
 @_entry("ideal-point-is-direction", "A line meets the line at infinity in its direction", "ideal-points")
-def _(c: Claim) -> None:
+def _ideal_point_is_direction(c: Claim) -> None:
     """l × l∞ is proportional to the direction (b, −a, 0) of l = (a, b, c)."""
     a, b, cc = c.params("a b c")
     l = c.line("l", a, b, cc)
@@ -227,7 +301,7 @@ def _(c: Claim) -> None:
 
 
 @_entry("ideal-points-span-line-at-infinity", "Two ideal points span the line at infinity", "ideal-points")
-def _(c: Claim) -> None:
+def _ideal_points_span_line_at_infinity(c: Claim) -> None:
     """The join of (p, q, 0) and (r, s, 0) is proportional to (0, 0, 1)."""
     p, q, r, s = c.params("p q r s")
     l = c.join("l", c.point("U", p, q, 0), c.point("V", r, s, 0))
@@ -235,7 +309,7 @@ def _(c: Claim) -> None:
 
 
 @_entry("parallel-through-a-point", "The line through C and the ideal point of AB is parallel to AB", "ideal-points")
-def _(c: Claim) -> None:
+def _parallel_through_a_point(c: Claim) -> None:
     """m = C × (l × l∞) has the same normal direction as l = A × B."""
     A, B, C = c.free_point("A"), c.free_point("B"), c.free_point("C")
     l = c.join("l", A, B)
@@ -248,7 +322,7 @@ def _(c: Claim) -> None:
 # == projective transformations ==================================================================
 
 @_entry("lines-transform-by-inverse-transpose", "Lines transform by H⁻ᵀ", "projective-transformations")
-def _(c: Claim) -> None:
+def _lines_transform_by_inverse_transpose(c: Claim) -> None:
     """The join of HA and HB is proportional to adj(H)ᵀ(A × B) = det(H) H⁻ᵀ(A × B)."""
     A, B = c.free_point("A"), c.free_point("B")
     H = c.free_matrix("H", 3)
@@ -257,7 +331,7 @@ def _(c: Claim) -> None:
 
 
 @_entry("homography-preserves-incidence", "A homography preserves incidence", "projective-transformations")
-def _(c: Claim) -> None:
+def _homography_preserves_incidence(c: Claim) -> None:
     """If P lies on l then HP lies on H⁻ᵀl."""
     P, Q = c.free_point("P"), c.free_point("Q")
     H = c.free_matrix("H", 3)
@@ -267,17 +341,15 @@ def _(c: Claim) -> None:
 
 @_entry("homography-preserves-collinearity", "A homography maps collinear points to collinear points",
         "projective-transformations")
-def _(c: Claim) -> None:
+def _homography_preserves_collinearity(c: Claim) -> None:
     """det[HA HB HC] = 0 when C = sA + tB."""
-    s, t = c.params("s t")
-    A, B = c.free_point("A"), c.free_point("B")
-    C = c.combine("C", A, B, s, t)
+    A, B, C = _span(c, c.free_point, "A", "B", "C")
     H = c.free_matrix("H", 3)
     c.conclude_collinear(c.apply("A2", H, A), c.apply("B2", H, B), c.apply("C2", H, C))
 
 
 @_entry("adjugate-is-scaled-inverse", "H adj(H) = det(H) I", "projective-transformations")
-def _(c: Claim) -> None:
+def _adjugate_is_scaled_inverse(c: Claim) -> None:
     """The adjugate is the inverse up to the scale det H, so it can replace H⁻¹ in homogeneous formulas."""
     H = c.free_matrix("H", 3, invertible=False)
 
@@ -289,7 +361,7 @@ def _(c: Claim) -> None:
 
 
 @_entry("conics-transform-by-inverse", "Conics transform by C ↦ H⁻ᵀ C H⁻¹", "projective-transformations")
-def _(c: Claim) -> None:
+def _conics_transform_by_inverse(c: Claim) -> None:
     """(HX)ᵀ adj(H)ᵀ C adj(H) (HX) = det(H)² XᵀCX: a point of C maps to a point of the image conic."""
     a, b, cc, d, e, f = c.params("a b c d e f")
     C = c.conic("C", [[a, b, d], [b, cc, e], [d, e, f]])
@@ -304,96 +376,63 @@ def _(c: Claim) -> None:
 
 # == hierarchy of 2D and 3D transformations: degrees of freedom =======================================
 
-def _dof(c: Claim, entries: sympy.Matrix, params: tuple, dof: int) -> None:
-    c.conclude_dof("H", entries, params, dof)
+# name, title, chapter, class of the hierarchy, degrees of freedom, parameter names, statement
+_DOF_CLAIMS = (
+    ("dof-projective-2d", "A 2D homography has 8 degrees of freedom", "hierarchy-2d", PROJECTIVE_2D, 8,
+     " ".join(f"h{i}" for i in range(1, 10)),
+     "Nine entries up to a common scale: the family of all 3×3 matrices has dimension 8 in P⁸."),
+    ("dof-affine-2d", "A 2D affinity has 6 degrees of freedom", "hierarchy-2d", AFFINE_2D, 6, "a b c d tx ty",
+     "[[a, b, tx], [c, d, ty], [0, 0, 1]] depends on 6 independent parameters."),
+    ("dof-similarity-2d", "A 2D similarity has 4 degrees of freedom", "hierarchy-2d", SIMILARITY_2D, 4, "k t tx ty",
+     "A scale k, a rotation by the rational parametrisation of tan(θ/2) = t, and a translation: 4."),
+    ("dof-euclidean-2d", "A 2D Euclidean motion has 3 degrees of freedom", "hierarchy-2d", EUCLIDEAN_2D, 3, "t tx ty",
+     "A rotation by the rational parametrisation cos θ = (1 − t²)/(1 + t²), sin θ = 2t/(1 + t²), and a translation."),
+    ("dof-projective-3d", "A 3D homography has 15 degrees of freedom", "hierarchy-3d", PROJECTIVE_3D, 15,
+     " ".join(f"h{i}" for i in range(1, 17)), "Sixteen entries up to a common scale."),
+    ("dof-affine-3d", "A 3D affinity has 12 degrees of freedom", "hierarchy-3d", AFFINE_3D, 12,
+     " ".join(f"a{i}" for i in range(1, 13)), "A 3×4 top block and the row (0, 0, 0, 1)."),
+    ("dof-similarity-3d", "A 3D similarity has 7 degrees of freedom", "hierarchy-3d", SIMILARITY_3D, 7,
+     "k a b c t1 t2 t3", "Scale k, a rotation by the Cayley transform of (a, b, c), and a translation."),
+    ("dof-euclidean-3d", "A 3D Euclidean motion has 6 degrees of freedom", "hierarchy-3d", EUCLIDEAN_3D, 6,
+     "a b c t1 t2 t3", "A rotation by the Cayley transform of (a, b, c) and a translation."),
+)
 
 
-@_entry("dof-projective-2d", "A 2D homography has 8 degrees of freedom", "hierarchy-2d")
-def _(c: Claim) -> None:
-    """Nine entries up to a common scale: the family of all 3×3 matrices has dimension 8 in P⁸."""
-    hs = c.params(" ".join(f"h{i}" for i in range(1, 10)))
-    _dof(c, sympy.Matrix(3, 3, hs), hs, 8)
+def _dof_claim(group: TransformationClass, dof: int, names: str, statement: str) -> Callable[[Claim], None]:
+    """The builder of one DoF claim: the hierarchy's generic element of ``group`` has ``dof`` degrees of freedom."""
+
+    def build(c: Claim) -> None:
+        entries, params = class_matrix(c, group, names)
+        c.conclude_dof("H", entries, params, dof)
+
+    # named after the class (e.g. _dof_similarity3) in tracebacks and profiles, like the other builders
+    name = f"_dof_{group.key}"
+    build.__code__ = build.__code__.replace(co_name=name, co_qualname=name)
+    build.__doc__, build.__name__, build.__qualname__ = statement, name, name
+    return build
 
 
-@_entry("dof-affine-2d", "A 2D affinity has 6 degrees of freedom", "hierarchy-2d")
-def _(c: Claim) -> None:
-    """[[a, b, tx], [c, d, ty], [0, 0, 1]] depends on 6 independent parameters."""
-    ps = c.params("a b c d tx ty")
-    a, b, cc, d, tx, ty = ps
-    _dof(c, sympy.Matrix([[a, b, tx], [cc, d, ty], [0, 0, 1]]), ps, 6)
-
-
-@_entry("dof-similarity-2d", "A 2D similarity has 4 degrees of freedom", "hierarchy-2d")
-def _(c: Claim) -> None:
-    """[[a, −b, tx], [b, a, ty], [0, 0, 1]] (a = s cos θ, b = s sin θ) has 4."""
-    ps = c.params("a b tx ty")
-    a, b, tx, ty = ps
-    _dof(c, sympy.Matrix([[a, -b, tx], [b, a, ty], [0, 0, 1]]), ps, 4)
-
-
-@_entry("dof-euclidean-2d", "A 2D Euclidean motion has 3 degrees of freedom", "hierarchy-2d")
-def _(c: Claim) -> None:
-    """A rotation by the rational parametrisation cos θ = (1 − t²)/(1 + t²), sin θ = 2t/(1 + t²), and a translation."""
-    ps = c.params("t tx ty")
-    t, tx, ty = ps
-    d = 1 + t**2
-    _dof(c, sympy.Matrix([[1 - t**2, -2 * t, tx * d], [2 * t, 1 - t**2, ty * d], [0, 0, d]]), ps, 3)
-
-
-@_entry("dof-projective-3d", "A 3D homography has 15 degrees of freedom", "hierarchy-3d")
-def _(c: Claim) -> None:
-    """Sixteen entries up to a common scale."""
-    hs = c.params(" ".join(f"h{i}" for i in range(1, 17)))
-    _dof(c, sympy.Matrix(4, 4, hs), hs, 15)
-
-
-@_entry("dof-affine-3d", "A 3D affinity has 12 degrees of freedom", "hierarchy-3d")
-def _(c: Claim) -> None:
-    """A 3×4 top block and the row (0, 0, 0, 1)."""
-    hs = c.params(" ".join(f"a{i}" for i in range(1, 13)))
-    _dof(c, sympy.Matrix(3, 4, hs).col_join(sympy.Matrix([[0, 0, 0, 1]])), hs, 12)
-
-
-@_entry("dof-similarity-3d", "A 3D similarity has 7 degrees of freedom", "hierarchy-3d")
-def _(c: Claim) -> None:
-    """Scale s, a rotation by the Cayley transform of (a, b, c), and a translation."""
-    ps = c.params("a b c s t1 t2 t3")
-    a, b, cc, s, t1, t2, t3 = ps
-    M, d = _cayley(a, b, cc)
-    top = (s * M).row_join(sympy.Matrix([t1, t2, t3]))
-    _dof(c, top.col_join(sympy.Matrix([[0, 0, 0, d]])), ps, 7)
-
-
-@_entry("dof-euclidean-3d", "A 3D Euclidean motion has 6 degrees of freedom", "hierarchy-3d")
-def _(c: Claim) -> None:
-    """A rotation by the Cayley transform of (a, b, c) and a translation."""
-    ps = c.params("a b c t1 t2 t3")
-    a, b, cc, t1, t2, t3 = ps
-    M, d = _cayley(a, b, cc)
-    top = M.row_join(sympy.Matrix([t1 * d, t2 * d, t3 * d]))
-    _dof(c, top.col_join(sympy.Matrix([[0, 0, 0, d]])), ps, 6)
+for _name, _title, _chapter, _group, _dof, _names, _statement in _DOF_CLAIMS:
+    _entry(_name, _title, _chapter)(_dof_claim(_group, _dof, _names, _statement))
 
 
 # == invariants =================================================================================
+# the transformations are the hierarchy's generic elements, so each group has one parametrisation
 
 def _affine(c: Claim) -> object:
-    a, b, cc, d, tx, ty = c.params("a b c d tx ty")
-    return c.matrix("T", [[a, b, tx], [cc, d, ty], [0, 0, 1]], invertible=True)
+    return c.matrix("T", class_matrix(c, AFFINE_2D, "a b c d tx ty")[0], invertible=True)
 
 
 def _similarity(c: Claim) -> object:
-    a, b, tx, ty = c.params("a b tx ty")
-    return c.matrix("S", [[a, -b, tx], [b, a, ty], [0, 0, 1]], invertible=True)
+    return c.matrix("S", class_matrix(c, SIMILARITY_2D, "k t tx ty")[0], invertible=True)
 
 
 def _euclidean(c: Claim) -> object:
-    t, tx, ty = c.params("t tx ty")
-    d = 1 + t**2
-    return c.matrix("E", [[1 - t**2, -2 * t, tx * d], [2 * t, 1 - t**2, ty * d], [0, 0, d]], invertible=True)
+    return c.matrix("E", class_matrix(c, EUCLIDEAN_2D, "t tx ty")[0], invertible=True)
 
 
 @_entry("affine-fixes-line-at-infinity", "An affinity maps the line at infinity to itself", "hierarchy-2d")
-def _(c: Claim) -> None:
+def _affine_fixes_line_at_infinity(c: Claim) -> None:
     """adj(T)ᵀ (0, 0, 1) is proportional to (0, 0, 1)."""
     T = _affine(c)
     linf = c.line("l_inf", 0, 0, 1)
@@ -401,7 +440,7 @@ def _(c: Claim) -> None:
 
 
 @_entry("affine-preserves-parallelism", "An affinity maps parallel lines to parallel lines", "hierarchy-2d")
-def _(c: Claim) -> None:
+def _affine_preserves_parallelism(c: Claim) -> None:
     """The images of ax + by + p = 0 and ax + by + q = 0 still meet on the line at infinity."""
     T = _affine(c)
     a, b, p, q = c.params("la lb p q")
@@ -411,7 +450,7 @@ def _(c: Claim) -> None:
 
 
 @_entry("similarity-fixes-circular-points", "A similarity fixes the circular points", "hierarchy-2d")
-def _(c: Claim) -> None:
+def _similarity_fixes_circular_points(c: Claim) -> None:
     """S (1, i, 0) is proportional to (1, i, 0); i is a parameter with the hypothesis i² + 1 = 0."""
     S = _similarity(c)
     (i,) = c.params("i")
@@ -421,7 +460,7 @@ def _(c: Claim) -> None:
 
 
 @_entry("euclidean-preserves-distance", "A Euclidean motion preserves distances", "hierarchy-2d")
-def _(c: Claim) -> None:
+def _euclidean_preserves_distance(c: Claim) -> None:
     """|EA − EB|² = |A − B|² for the rational rotation and a translation."""
     E = _euclidean(c)
     A, B = c.free_point("A"), c.free_point("B")
@@ -431,7 +470,7 @@ def _(c: Claim) -> None:
 
 
 @_entry("similarity-preserves-length-ratio", "A similarity preserves ratios of lengths", "hierarchy-2d")
-def _(c: Claim) -> None:
+def _similarity_preserves_length_ratio(c: Claim) -> None:
     """|SA SB|² / |SA SC|² = |AB|² / |AC|²."""
     S = _similarity(c)
     A, B, C = c.free_point("A"), c.free_point("B"), c.free_point("C")
@@ -442,7 +481,7 @@ def _(c: Claim) -> None:
 
 
 @_entry("affine-preserves-area-ratio", "An affinity preserves ratios of areas", "hierarchy-2d")
-def _(c: Claim) -> None:
+def _affine_preserves_area_ratio(c: Claim) -> None:
     """area(T A, T B, T C) / area(T A, T B, T D) = area(A, B, C) / area(A, B, D)."""
     T = _affine(c)
     A, B, C, D = (c.free_point(n) for n in "ABCD")
@@ -454,7 +493,7 @@ def _(c: Claim) -> None:
 
 @_entry("homography-preserves-cross-ratio", "A homography preserves the cross-ratio of collinear points",
         "projective-transformations")
-def _(c: Claim) -> None:
+def _homography_preserves_cross_ratio(c: Claim) -> None:
     """(A, B; C, D) of four collinear points, seen from O, equals that of their images seen from another point O2."""
     s, t = c.params("s t")
     A, B, O, O2 = c.free_point("A"), c.free_point("B"), c.free_point("O"), c.free_point("O2")
@@ -472,7 +511,7 @@ def _four(c: Claim) -> tuple:
 
 
 @_entry("cross-ratio-invariance", "The cross-ratio is invariant under projective maps of the line", "projective-line")
-def _(c: Claim) -> None:
+def _cross_ratio_invariance(c: Claim) -> None:
     """(MA, MB; MC, MD) = (A, B; C, D) for every invertible 2×2 matrix M."""
     A, B, C, D = _four(c)
     M = c.free_matrix("M", 2)
@@ -481,7 +520,7 @@ def _(c: Claim) -> None:
 
 
 @_entry("cross-ratio-symmetries", "The cross-ratio is unchanged by swapping both pairs", "projective-line")
-def _(c: Claim) -> None:
+def _cross_ratio_symmetries(c: Claim) -> None:
     """(A, B; C, D) = (B, A; D, C) = (C, D; A, B)."""
     A, B, C, D = _four(c)
     cr = c.cross_ratio("cr", A, B, C, D)
@@ -490,7 +529,7 @@ def _(c: Claim) -> None:
 
 
 @_entry("cross-ratio-reciprocal", "Swapping C and D inverts the cross-ratio", "projective-line")
-def _(c: Claim) -> None:
+def _cross_ratio_reciprocal(c: Claim) -> None:
     """(A, B; C, D) · (A, B; D, C) = 1."""
     A, B, C, D = _four(c)
     r, s = c.cross_ratio("r", A, B, C, D), c.cross_ratio("s", A, B, D, C)
@@ -499,7 +538,7 @@ def _(c: Claim) -> None:
 
 
 @_entry("cross-ratio-complement", "Swapping B and C complements the cross-ratio", "projective-line")
-def _(c: Claim) -> None:
+def _cross_ratio_complement(c: Claim) -> None:
     """(A, B; C, D) + (A, C; B, D) = 1."""
     A, B, C, D = _four(c)
     r, s = c.cross_ratio("r", A, B, C, D), c.cross_ratio("s", A, C, B, D)
@@ -509,7 +548,7 @@ def _(c: Claim) -> None:
 
 
 @_entry("harmonic-conjugate-is-harmonic", "The harmonic conjugate gives the cross-ratio −1", "projective-line")
-def _(c: Claim) -> None:
+def _harmonic_conjugate_is_harmonic(c: Claim) -> None:
     """D = [A C] B + [B C] A satisfies (A, B; C, D) = −1."""
     A, B, C = (c.free_point1(n) for n in "ABC")
     D = c.harmonic_conjugate("D", A, B, C)
@@ -518,7 +557,7 @@ def _(c: Claim) -> None:
 
 @_entry("harmonic-conjugate-involution", "Taking the harmonic conjugate twice gives the point back",
         "projective-line")
-def _(c: Claim) -> None:
+def _harmonic_conjugate_involution(c: Claim) -> None:
     """The harmonic conjugate of D = h(A, B; C) is C again."""
     A, B, C = (c.free_point1(n) for n in "ABC")
     D = c.harmonic_conjugate("D", A, B, C)
@@ -533,7 +572,7 @@ def _generic_conic(c: Claim) -> object:
 
 
 @_entry("conic-through-five-points", "The conic through five points contains them", "conics")
-def _(c: Claim) -> None:
+def _conic_through_five_points(c: Claim) -> None:
     """The signed 5×5 minors of the 5×6 system give a conic through all five points."""
     pts = [c.free_point(f"P{i}") for i in range(1, 6)]
     C = c.conic_through("C", *pts)
@@ -542,7 +581,7 @@ def _(c: Claim) -> None:
 
 
 @_entry("tangent-touches-conic", "The polar of a point on a conic is tangent there", "conics")
-def _(c: Claim) -> None:
+def _tangent_touches_conic(c: Claim) -> None:
     """If PᵀCP = 0 then l = CP passes through P and lᵀ adj(C) l = 0 (l is a tangent line)."""
     C = _generic_conic(c)
     x, y = c.params("x y")
@@ -556,7 +595,7 @@ def _(c: Claim) -> None:
 
 
 @_entry("pole-polar-reciprocity", "La Hire: Q on the polar of P iff P on the polar of Q", "conics")
-def _(c: Claim) -> None:
+def _pole_polar_reciprocity(c: Claim) -> None:
     """For Q on the polar of P (Q = polar(P) × m), P lies on the polar of Q."""
     C = _generic_conic(c)
     P, m = c.free_point("P"), c.free_line("m")
@@ -565,7 +604,7 @@ def _(c: Claim) -> None:
 
 
 @_entry("circle-contains-circular-points", "Every circle passes through the circular points", "conics")
-def _(c: Claim) -> None:
+def _circle_contains_circular_points(c: Claim) -> None:
     """(x − a)² + (y − b)² = r² contains (1, ±i, 0), with the hypothesis i² + 1 = 0."""
     a, b, r, i = c.params("a b r i")
     c.assume_zero(i**2 + 1, "i² + 1 = 0")
@@ -576,7 +615,7 @@ def _(c: Claim) -> None:
 
 
 @_entry("dual-conic-is-adjugate", "C adj(C) = det(C) I: the dual conic is C⁻¹ up to scale", "conics")
-def _(c: Claim) -> None:
+def _dual_conic_is_adjugate(c: Claim) -> None:
     """For a symmetric C, the adjugate is the inverse up to the scale det C."""
     C = _generic_conic(c)
     D = c.dual_conic("D", C)
@@ -591,7 +630,7 @@ def _(c: Claim) -> None:
 # == points and planes ============================================================================
 
 @_entry("plane-through-three-points", "The plane through three points contains them", "points-and-planes")
-def _(c: Claim) -> None:
+def _plane_through_three_points(c: Claim) -> None:
     """π = the signed 3×3 minors of [A; B; C] satisfies πᵀA = πᵀB = πᵀC = 0."""
     A, B, C = (c.free_point3(n) for n in "ABC")
     pi = c.plane_through("pi", A, B, C)
@@ -600,7 +639,7 @@ def _(c: Claim) -> None:
 
 
 @_entry("point-on-three-planes", "The point common to three planes lies on each", "points-and-planes")
-def _(c: Claim) -> None:
+def _point_on_three_planes(c: Claim) -> None:
     """X = the signed 3×3 minors of [π₁; π₂; π₃] satisfies πᵢᵀX = 0."""
     ps = [c.free_plane(f"p{i}") for i in (1, 2, 3)]
     X = c.point_on_planes("X", *ps)
@@ -610,7 +649,7 @@ def _(c: Claim) -> None:
 
 @_entry("plane-equation-determinant", "The equation of a plane through three points is a determinant",
         "points-and-planes")
-def _(c: Claim) -> None:
+def _plane_equation_determinant(c: Claim) -> None:
     """πᵀX = det[X A B C] for every point X."""
     A, B, C, X = (c.free_point3(n) for n in "ABCX")
     pi = c.plane_through("pi", A, B, C)
@@ -619,7 +658,7 @@ def _(c: Claim) -> None:
 
 
 @_entry("coplanar-iff-determinant", "Four coplanar points have a zero determinant", "points-and-planes")
-def _(c: Claim) -> None:
+def _coplanar_iff_determinant(c: Claim) -> None:
     """D = A + sB + tC gives det[A B C D] = 0."""
     s, t = c.params("s t")
     A, B, C = (c.free_point3(n) for n in "ABC")
@@ -629,7 +668,7 @@ def _(c: Claim) -> None:
 
 
 @_entry("parallel-planes-meet-at-infinity", "Parallel planes meet on the plane at infinity", "points-and-planes")
-def _(c: Claim) -> None:
+def _parallel_planes_meet_at_infinity(c: Claim) -> None:
     """ax + by + cz + p = 0 and ax + by + cz + q = 0 meet any third plane in an ideal point."""
     a, b, cc, p, q = c.params("a b c p q")
     g = c.free_plane("g")
@@ -638,7 +677,7 @@ def _(c: Claim) -> None:
 
 
 @_entry("planes-transform-by-inverse-transpose", "Planes transform by H⁻ᵀ", "points-and-planes")
-def _(c: Claim) -> None:
+def _planes_transform_by_inverse_transpose(c: Claim) -> None:
     """The plane through HA, HB, HC is proportional to adj(H)ᵀ π for π through A, B, C."""
     A, B, C = (c.free_point3(n) for n in "ABC")
     H = c.free_matrix("H", 4)
@@ -650,16 +689,14 @@ def _(c: Claim) -> None:
 
 @_entry("collinear-points-rank-two", "Three collinear points of P² stack to a rank-2 matrix",
         "null-space-and-svd")
-def _(c: Claim) -> None:
+def _collinear_points_rank_two(c: Claim) -> None:
     """[A; B; sA + tB] has rank exactly 2, so its null space is the line through them."""
-    s, t = c.params("s t")
-    A, B = c.free_point("A"), c.free_point("B")
-    C = c.combine("C", A, B, s, t)
+    A, B, C = _span(c, c.free_point, "A", "B", "C")
     c.conclude_rank(c.formula("M", "matrix", lambda *rows: tuple(rows), A, B, C, description="[A; B; C]"), 2)
 
 
 @_entry("coplanar-points-rank-three", "Four coplanar points of P³ stack to a rank-3 matrix", "null-space-and-svd")
-def _(c: Claim) -> None:
+def _coplanar_points_rank_three(c: Claim) -> None:
     """[A; B; C; D] with D in the plane ABC has rank 3: the plane is its one-dimensional null space."""
     s, t = c.params("s t")
     A, B, C = (c.free_point3(n) for n in "ABC")
@@ -679,14 +716,14 @@ def _reciprocal(L: tuple, M: tuple) -> object:
 
 
 @_entry("plucker-matrix-rank-two", "A Plücker matrix has rank 2", "lines-in-3d")
-def _(c: Claim) -> None:
+def _plucker_matrix_rank_two(c: Claim) -> None:
     """L = ABᵀ − BAᵀ: all 3×3 minors vanish and a 2×2 minor does not."""
     A, B = c.free_point3("A"), c.free_point3("B")
     c.conclude_rank(c.line3("L", A, B), 2)
 
 
 @_entry("klein-quadric", "Plücker coordinates satisfy the Klein relation", "lines-in-3d")
-def _(c: Claim) -> None:
+def _klein_quadric(c: Claim) -> None:
     """l12 l34 − l13 l24 + l14 l23 = 0 for L = ABᵀ − BAᵀ."""
     A, B = c.free_point3("A"), c.free_point3("B")
     L = c.line3("L", A, B)
@@ -694,7 +731,7 @@ def _(c: Claim) -> None:
 
 
 @_entry("plucker-meets-plane", "L π is the point where the line L meets the plane π", "lines-in-3d")
-def _(c: Claim) -> None:
+def _plucker_meets_plane(c: Claim) -> None:
     """X = Lπ lies on π and on the line AB (rank [A; B; X] = 2)."""
     A, B = c.free_point3("A"), c.free_point3("B")
     L = c.line3("L", A, B)
@@ -705,7 +742,7 @@ def _(c: Claim) -> None:
 
 
 @_entry("dual-plucker-annihilates", "L L* = 0 for the two Plücker matrices of one line", "lines-in-3d")
-def _(c: Claim) -> None:
+def _dual_plucker_annihilates(c: Claim) -> None:
     """With π, ρ two planes through A and B, L* = πρᵀ − ρπᵀ satisfies L L* = 0."""
     A, B, C, D = (c.free_point3(n) for n in "ABCD")
     L = c.line3("L", A, B)
@@ -715,7 +752,7 @@ def _(c: Claim) -> None:
 
 
 @_entry("reciprocal-product-is-determinant", "The reciprocal product of two lines is det[A B C D]", "lines-in-3d")
-def _(c: Claim) -> None:
+def _reciprocal_product_is_determinant(c: Claim) -> None:
     """(AB | CD) = det[A B C D], so two lines are coplanar exactly when it vanishes."""
     A, B, C, D = (c.free_point3(n) for n in "ABCD")
     L, M = c.line3("L", A, B), c.line3("M", C, D)
@@ -724,7 +761,7 @@ def _(c: Claim) -> None:
 
 
 @_entry("lines-in-a-plane-meet", "Two lines in one plane have reciprocal product 0", "lines-in-3d")
-def _(c: Claim) -> None:
+def _lines_in_a_plane_meet(c: Claim) -> None:
     """For D in the plane ABC, the lines AB and CD are coplanar: (AB | CD) = 0."""
     s, t = c.params("s t")
     A, B, C = (c.free_point3(n) for n in "ABC")
@@ -736,17 +773,20 @@ def _(c: Claim) -> None:
 # == classical theorems ============================================================================
 
 @_entry("pappus", "Pappus's hexagon theorem", "classical-theorems")
-def _(c: Claim) -> None:
+def _pappus(c: Claim) -> None:
     """A, B, C on one line and A', B', C' on another: AB'∧A'B, AC'∧A'C, BC'∧B'C are collinear."""
     c.method_note = ("the two lines are y = 0 and the line through the origin with direction (p, q): every pair "
                      "of lines is mapped there by a projective transformation, which preserves incidence")
     a, b, cc, a2, b2, c2, p, q = c.params("a b c a2 b2 c2 p q")
     A, B, C = (c.point(n, t, 0) for n, t in (("A", a), ("B", b), ("C", cc)))
     A2, B2, C2 = (c.point(n, t * p, t * q) for n, t in (("A'", a2), ("B'", b2), ("C'", c2)))
-    X = c.meet("X", c.join("AB'", A, B2), c.join("A'B", A2, B))
-    Y = c.meet("Y", c.join("AC'", A, C2), c.join("A'C", A2, C))
-    Z = c.meet("Z", c.join("BC'", B, C2), c.join("B'C", B2, C))
-    c.conclude_collinear(X, Y, Z)
+    _collinear_meets(c, ((A, B2), (A2, B)), ((A, C2), (A2, C)), ((B, C2), (B2, C)))
+
+
+def _collinear_meets(c: Claim, *pairs: tuple) -> None:
+    """X, Y, Z = the meets of three pairs of joins ((P, Q), (R, S)) ↦ PQ ∧ RS, concluded collinear."""
+    joins = (tuple(c.join(p.name + q.name, p, q) for p, q in pair) for pair in pairs)
+    c.conclude_collinear(*(c.meet(name, *lines) for name, lines in zip("XYZ", joins, strict=True)))
 
 
 def _desargues_triangles(c: Claim) -> tuple:
@@ -757,17 +797,14 @@ def _desargues_triangles(c: Claim) -> tuple:
 
 
 @_entry("desargues", "Desargues's theorem", "classical-theorems")
-def _(c: Claim) -> None:
+def _desargues(c: Claim) -> None:
     """Triangles ABC and A'B'C' in perspective from a point O are in perspective from a line."""
     A, B, C, A2, B2, C2 = _desargues_triangles(c)
-    X = c.meet("X", c.join("AB", A, B), c.join("A'B'", A2, B2))
-    Y = c.meet("Y", c.join("BC", B, C), c.join("B'C'", B2, C2))
-    Z = c.meet("Z", c.join("CA", C, A), c.join("C'A'", C2, A2))
-    c.conclude_collinear(X, Y, Z)
+    _collinear_meets(c, ((A, B), (A2, B2)), ((B, C), (B2, C2)), ((C, A), (C2, A2)))
 
 
 @_entry("desargues-converse", "The converse of Desargues's theorem", "classical-theorems")
-def _(c: Claim) -> None:
+def _desargues_converse(c: Claim) -> None:
     """If corresponding sides of ABC and A'B'C' meet on one line, then AA', BB', CC' are concurrent."""
     x, y, s = c.params("x y s")
     A, B, C = (c.free_point(n) for n in "ABC")
@@ -785,19 +822,16 @@ def _on_parabola(c: Claim, names: str) -> list:
 
 
 @_entry("pascal", "Pascal's theorem", "classical-theorems")
-def _(c: Claim) -> None:
+def _pascal(c: Claim) -> None:
     """For six points of a conic, the meets of opposite sides of the hexagon ABCDEF are collinear."""
     c.method_note = "the six points are (t, t², 1) on the conic y = x², projectively equivalent to every "\
         "non-degenerate conic"
     A, B, C, D, E, F = _on_parabola(c, "ABCDEF")
-    X = c.meet("X", c.join("AB", A, B), c.join("DE", D, E))
-    Y = c.meet("Y", c.join("BC", B, C), c.join("EF", E, F))
-    Z = c.meet("Z", c.join("CD", C, D), c.join("FA", F, A))
-    c.conclude_collinear(X, Y, Z)
+    _collinear_meets(c, ((A, B), (D, E)), ((B, C), (E, F)), ((C, D), (F, A)))
 
 
 @_entry("brianchon", "Brianchon's theorem", "classical-theorems")
-def _(c: Claim) -> None:
+def _brianchon(c: Claim) -> None:
     """For six tangents of a conic, the diagonals joining opposite vertices of the hexagon are concurrent."""
     c.method_note = "the tangents of y = x² at t are (2t, −1, −t²)"
     ts = c.params("a b c d e f")
@@ -807,7 +841,7 @@ def _(c: Claim) -> None:
 
 
 @_entry("complete-quadrilateral-harmonic", "The harmonic property of the complete quadrangle", "classical-theorems")
-def _(c: Claim) -> None:
+def _complete_quadrilateral_harmonic(c: Claim) -> None:
     """For four points A, B, C, D with diagonal points E = AB∧CD, F = AD∧BC, G = AC∧BD and H = AC∧EF,
     (A, C; G, H) = −1."""
     A, B, C, D = (c.free_point(n) for n in "ABCD")
@@ -825,7 +859,7 @@ def _(c: Claim) -> None:
 
 @_entry("lines-transform-like-points", "FALSE: lines transform by H like points", "projective-transformations",
         expected=False)
-def _(c: Claim) -> None:
+def _lines_transform_like_points(c: Claim) -> None:
     """Claims (HA) × (HB) ∝ H (A × B); the correct rule is H⁻ᵀ."""
     A, B = c.free_point("A"), c.free_point("B")
     H = c.free_matrix("H", 3)
@@ -836,7 +870,7 @@ def _(c: Claim) -> None:
 
 @_entry("cross-product-sign-flipped", "FALSE: a cross product with the middle sign flipped", "points-and-lines",
         expected=False)
-def _(c: Claim) -> None:
+def _cross_product_sign_flipped(c: Claim) -> None:
     """Claims that (a₂b₃ − a₃b₂, a₁b₃ − a₃b₁, a₁b₂ − a₂b₁) passes through A."""
     A, B = c.free_point("A"), c.free_point("B")
     wrong = lambda u, v: (u[1] * v[2] - u[2] * v[1], u[0] * v[2] - u[2] * v[0], u[0] * v[1] - u[1] * v[0])  # noqa: E731
@@ -845,7 +879,7 @@ def _(c: Claim) -> None:
 
 @_entry("cross-ratio-under-squaring", "FALSE: a reordered cross-ratio is invariant under x ↦ x²", "projective-line",
         expected=False)
-def _(c: Claim) -> None:
+def _cross_ratio_under_squaring(c: Claim) -> None:
     """Claims (A, B; C, D) = (A², B²; D², C²): wrong order, and squaring is not projective."""
     A, B, C, D = _four(c)
     sq = lambda p: (p[0] * p[0], p[1] * p[1])  # noqa: E731
@@ -855,7 +889,7 @@ def _(c: Claim) -> None:
 
 @_entry("cross-ratio-order-irrelevant", "FALSE: the order of the four points does not matter", "projective-line",
         expected=False)
-def _(c: Claim) -> None:
+def _cross_ratio_order_irrelevant(c: Claim) -> None:
     """Claims (A, B; C, D) = (A, C; B, D)."""
     A, B, C, D = _four(c)
     c.conclude_equal_ratio(c.cross_ratio("r", A, B, C, D), c.cross_ratio("s", A, C, B, D))
@@ -863,7 +897,7 @@ def _(c: Claim) -> None:
 
 @_entry("homography-preserves-parallelism", "FALSE: a homography keeps parallel lines parallel", "hierarchy-2d",
         expected=False)
-def _(c: Claim) -> None:
+def _homography_preserves_parallelism(c: Claim) -> None:
     """Claims that the images of two parallel lines under a general H meet on the line at infinity."""
     H = c.free_matrix("H", 3)
     a, b, p, q = c.params("la lb p q")
@@ -873,7 +907,7 @@ def _(c: Claim) -> None:
 
 
 @_entry("affine-preserves-distance", "FALSE: an affinity preserves distances", "hierarchy-2d", expected=False)
-def _(c: Claim) -> None:
+def _affine_preserves_distance(c: Claim) -> None:
     """Claims |TA TB|² = |AB|² for an affinity T."""
     T = _affine(c)
     A, B = c.free_point("A"), c.free_point("B")
@@ -882,17 +916,14 @@ def _(c: Claim) -> None:
 
 
 @_entry("pascal-without-conic", "FALSE: Pascal's line for any six points", "classical-theorems", expected=False)
-def _(c: Claim) -> None:
+def _pascal_without_conic(c: Claim) -> None:
     """Claims Pascal's collinearity for six free points, not on one conic."""
     A, B, C, D, E, F = (c.free_point(n) for n in "ABCDEF")
-    X = c.meet("X", c.join("AB", A, B), c.join("DE", D, E))
-    Y = c.meet("Y", c.join("BC", B, C), c.join("EF", E, F))
-    Z = c.meet("Z", c.join("CD", C, D), c.join("FA", F, A))
-    c.conclude_collinear(X, Y, Z)
+    _collinear_meets(c, ((A, B), (D, E)), ((B, C), (E, F)), ((C, D), (F, A)))
 
 
 @_entry("klein-relation-sign-flipped", "FALSE: the Klein relation with a sign flipped", "lines-in-3d", expected=False)
-def _(c: Claim) -> None:
+def _klein_relation_sign_flipped(c: Claim) -> None:
     """Claims l12 l34 + l13 l24 + l14 l23 = 0."""
     A, B = c.free_point3("A"), c.free_point3("B")
     L = c.line3("L", A, B)

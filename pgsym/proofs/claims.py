@@ -28,6 +28,7 @@ import sympy
 from .. import ring as alg
 from ..errors import ObjectTypeError
 from .errors import NonPolynomialClaimError, UndefinedConstructionError
+from .operations import KINDS, OPERATIONS, Operation, constructions, operation
 
 __all__ = [
     "KINDS",
@@ -38,24 +39,7 @@ __all__ = [
     "UndefinedConstructionError",
 ]
 
-
-
-
-#: kind of object -> number of homogeneous coordinates (None for matrices and scalars)
-KINDS: dict[str, int | None] = {
-    "point1": 2,
-    "point": 3,
-    "line": 3,
-    "point3": 4,
-    "plane": 4,
-    "line3": None,
-    "conic": None,
-    "matrix": None,
-    "scalar": None,
-    "ratio": None,
-}
-
-_VECTOR_KINDS = ("point1", "point", "line", "point3", "plane")
+_VECTOR_KINDS = tuple(k for k, size in KINDS.items() if size is not None)
 
 
 @dataclass(eq=False)
@@ -69,6 +53,17 @@ class Node:
     description: str = ""
     data: Any = None
     conditions: list[str] = field(default_factory=list)
+
+    @property
+    def operation(self) -> Operation:
+        """The entry of :data:`~pgsym.proofs.operations.OPERATIONS` that built this object."""
+        try:
+            return OPERATIONS[self.op]
+        except KeyError:
+            raise UndefinedConstructionError(
+                f"{self.name} was built by {self.op!r}, which is no operation of the table "
+                f"(known: {', '.join(OPERATIONS)})"
+            ) from None
 
     def __repr__(self) -> str:
         return f"<{self.kind} {self.name} = {self.description}>"
@@ -108,6 +103,13 @@ def _polynomial(expr: Any, params: Sequence[sympy.Symbol], what: str) -> sympy.E
             "and avoid roots and transcendental functions"
         )
     return e
+
+
+_NUMBER_WORDS = ("no", "one", "two", "three", "four", "five", "six")
+
+
+def _count(n: int) -> str:
+    return _NUMBER_WORDS[n] if n < len(_NUMBER_WORDS) else str(n)
 
 
 class Claim:
@@ -290,14 +292,31 @@ class Claim:
         ...
         pgsym.proofs.errors.UndefinedConstructionError: unknown construction 'frobnicate'; ...
         """
-        methods = {"join", "meet", "combine", "plane_through", "point_on_planes", "line3", "apply", "apply_line",
-                   "apply_plane", "apply_conic", "polar", "conic_through", "dual_conic", "cross_ratio",
-                   "harmonic_conjugate", "formula"}
-        if op not in methods:
+        found = operation(op)
+        if found is None or not found.constructible:
             raise UndefinedConstructionError(
-                f"unknown construction {op!r}; the operations are: {', '.join(sorted(methods))}"
+                f"unknown construction {op!r}; the operations are: {', '.join(sorted(constructions()))}"
             )
-        return getattr(self, op)(name, *args)
+        return getattr(self, found.name)(name, *args)
+
+    def _construct(self, op: str, name: str, args: Sequence[Any], data: Any = None, *, kind: str | None = None,
+                   description: str = "", conditions: Sequence[str] | None = None) -> Node:
+        """Check the arguments against the operation's table entry and record the new object."""
+        entry = OPERATIONS[op]
+        kinds = entry.arg_kinds
+        if kinds is None:
+            nodes = tuple(self._get(a, (), op) for a in args)
+        else:
+            if len(args) != len(kinds):
+                raise ObjectTypeError(f"{op} needs {_count(len(kinds))} {kinds[0][0]}s, got {len(args)}")
+            nodes = []
+            for i, (a, allowed) in enumerate(zip(args, kinds, strict=True)):
+                nodes.append(self._get(a, (nodes[0].kind,) if entry.same_kind and i else allowed, op))
+            nodes = tuple(nodes)
+        names = [n.name for n in nodes]
+        return self._node(name, kind or entry.result_kind([n.kind for n in nodes]), op, nodes,
+                          description or entry.description(names, data), data,
+                          entry.conditions(names, name, data) if conditions is None else conditions)
 
     def join(self, name: str, p: Any, q: Any) -> Node:
         """The line through two points of P² (their cross product); needs ``P ≠ Q``.
@@ -306,8 +325,7 @@ class Claim:
         >>> c.join("l", c.free_point("P"), c.free_point("Q")).conditions
         ['P ≠ Q']
         """
-        p, q = self._get(p, ("point",), "join"), self._get(q, ("point",), "join")
-        return self._node(name, "line", "join", (p, q), f"{p.name} × {q.name}", conditions=[f"{p.name} ≠ {q.name}"])
+        return self._construct("join", name, (p, q))
 
     def meet(self, name: str, l: Any, m: Any) -> Node:
         """The point common to two lines of P² (their cross product); needs ``l ≠ m``.
@@ -316,92 +334,65 @@ class Claim:
         >>> c.meet("X", c.free_line("l"), c.free_line("m")).kind
         'point'
         """
-        l, m = self._get(l, ("line",), "meet"), self._get(m, ("line",), "meet")
-        return self._node(name, "point", "meet", (l, m), f"{l.name} × {m.name}", conditions=[f"{l.name} ≠ {m.name}"])
+        return self._construct("meet", name, (l, m))
 
     def combine(self, name: str, p: Any, q: Any, s: Any, t: Any = 1) -> Node:
         """The point (or line, plane) ``s·P + t·Q``: a generic point on the line PQ for a parameter s."""
-        p = self._get(p, _VECTOR_KINDS, "combine")
-        q = self._get(q, (p.kind,), "combine")
         s = _polynomial(s, self.parameters, f"coefficient of {name}")
         t = _polynomial(t, self.parameters, f"coefficient of {name}")
-        return self._node(name, p.kind, "combine", (p, q), f"{s}·{p.name} + {t}·{q.name}", (s, t),
-                          [f"{name} is not the zero vector ({p.name} ≠ {q.name})"])
+        return self._construct("combine", name, (p, q), (s, t))
 
     def plane_through(self, name: str, a: Any, b: Any, c: Any) -> Node:
         """The plane through three points of P³; needs them not collinear."""
-        a, b, c = (self._get(x, ("point3",), "plane_through") for x in (a, b, c))
-        return self._node(name, "plane", "plane_through", (a, b, c), f"plane({a.name}, {b.name}, {c.name})",
-                          conditions=[f"{a.name}, {b.name}, {c.name} are not collinear"])
+        return self._construct("plane_through", name, (a, b, c))
 
     def point_on_planes(self, name: str, a: Any, b: Any, c: Any) -> Node:
         """The point common to three planes of P³; needs them independent."""
-        a, b, c = (self._get(x, ("plane",), "point_on_planes") for x in (a, b, c))
-        return self._node(name, "point3", "point_on_planes", (a, b, c), f"point({a.name}, {b.name}, {c.name})",
-                          conditions=[f"{a.name}, {b.name}, {c.name} do not share a line"])
+        return self._construct("point_on_planes", name, (a, b, c))
 
     def line3(self, name: str, a: Any, b: Any) -> Node:
         """The Plücker matrix ``A Bᵀ − B Aᵀ`` of the line through two points of P³; needs ``A ≠ B``."""
-        a, b = self._get(a, ("point3",), "line3"), self._get(b, ("point3",), "line3")
-        return self._node(name, "line3", "line3", (a, b), f"{a.name} {b.name}ᵀ − {b.name} {a.name}ᵀ",
-                          conditions=[f"{a.name} ≠ {b.name}"])
+        return self._construct("line3", name, (a, b))
 
     def apply(self, name: str, h: Any, x: Any) -> Node:
         """The image ``H x`` of a point (of P¹, P² or P³) under a matrix."""
-        h = self._get(h, ("matrix",), "apply")
-        x = self._get(x, ("point1", "point", "point3"), "apply")
-        return self._node(name, x.kind, "apply", (h, x), f"{h.name} {x.name}")
+        return self._construct("apply", name, (h, x))
 
     def apply_line(self, name: str, h: Any, l: Any) -> Node:
         """The image of a line (or plane) under H: ``adj(H)ᵀ l``, i.e. ``H⁻ᵀ l`` up to the scale det H."""
-        h = self._get(h, ("matrix",), "apply_line")
-        l = self._get(l, ("line", "plane"), "apply_line")
-        return self._node(name, l.kind, "apply_line", (h, l), f"adj({h.name})ᵀ {l.name}",
-                          conditions=[f"{h.name} is non-singular (det {h.name} ≠ 0)"])
+        return self._construct("apply_line", name, (h, l))
 
     apply_plane = apply_line
 
     def apply_conic(self, name: str, h: Any, c: Any) -> Node:
         """The image of a conic under H: ``adj(H)ᵀ C adj(H)``, i.e. ``H⁻ᵀ C H⁻¹`` up to scale."""
-        h = self._get(h, ("matrix",), "apply_conic")
-        c = self._get(c, ("conic",), "apply_conic")
-        return self._node(name, "conic", "apply_conic", (h, c), f"adj({h.name})ᵀ {c.name} adj({h.name})",
-                          conditions=[f"{h.name} is non-singular (det {h.name} ≠ 0)"])
+        return self._construct("apply_conic", name, (h, c))
 
     def polar(self, name: str, c: Any, p: Any) -> Node:
         """The polar line ``C p`` of a point with respect to a conic (the tangent when p is on C)."""
-        c, p = self._get(c, ("conic",), "polar"), self._get(p, ("point",), "polar")
-        return self._node(name, "line", "polar", (c, p), f"{c.name} {p.name}",
-                          conditions=[f"{p.name} is not a singular point of {c.name} ({c.name} {p.name} ≠ 0)"])
+        return self._construct("polar", name, (c, p))
 
     def conic_through(self, name: str, *points: Any) -> Node:
-        """The conic through five points (its six coefficients are signed 5×5 minors)."""
-        if len(points) != 5:
-            raise ObjectTypeError(f"conic_through needs five points, got {len(points)}")
-        pts = tuple(self._get(p, ("point",), "conic_through") for p in points)
-        names = ", ".join(p.name for p in pts)
-        return self._node(name, "conic", "conic_through", pts, f"conic({names})",
-                          conditions=[f"{names} determine a unique conic (no two equal, no four collinear)"])
+        """The conic through five points (its six coefficients are signed 5×5 minors).
+
+        >>> Claim("x", "x").conic_through("C")
+        Traceback (most recent call last):
+        ...
+        pgsym.errors.ObjectTypeError: conic_through needs five points, got 0
+        """
+        return self._construct("conic_through", name, points)
 
     def dual_conic(self, name: str, c: Any) -> Node:
         """The dual conic ``adj(C)``: the tangent lines of C satisfy ``lᵀ adj(C) l = 0``."""
-        c = self._get(c, ("conic",), "dual_conic")
-        return self._node(name, "matrix", "dual_conic", (c,), f"adj({c.name})",
-                          conditions=[f"{c.name} is non-degenerate (det {c.name} ≠ 0)"])
+        return self._construct("dual_conic", name, (c,))
 
     def cross_ratio(self, name: str, a: Any, b: Any, c: Any, d: Any) -> Node:
         """The cross-ratio ``(A, B; C, D) = [A C][B D] / ([A D][B C])`` of four points of P¹."""
-        pts = tuple(self._get(x, ("point1",), "cross_ratio") for x in (a, b, c, d))
-        A, B, C, D = (p.name for p in pts)
-        return self._node(name, "ratio", "cross_ratio", pts, f"({A}, {B}; {C}, {D})",
-                          conditions=[f"[{A} {D}][{B} {C}] ≠ 0 ({A} ≠ {D} and {B} ≠ {C})"])
+        return self._construct("cross_ratio", name, (a, b, c, d))
 
     def harmonic_conjugate(self, name: str, a: Any, b: Any, c: Any) -> Node:
         """The harmonic conjugate ``[A C] B + [B C] A`` of C with respect to A and B (points of P¹)."""
-        pts = tuple(self._get(x, ("point1",), "harmonic_conjugate") for x in (a, b, c))
-        A, B, C = (p.name for p in pts)
-        return self._node(name, "point1", "harmonic_conjugate", pts, f"[{A} {C}] {B} + [{B} {C}] {A}",
-                          conditions=[f"{A}, {B}, {C} are distinct"])
+        return self._construct("harmonic_conjugate", name, (a, b, c))
 
     def formula(self, name: str, kind: str, fn: Callable[..., Any], *args: Any, description: str = "",
                 conditions: Sequence[str] = ()) -> Node:
@@ -413,9 +404,8 @@ class Claim:
         """
         if kind not in KINDS:
             raise ObjectTypeError(f"unknown kind {kind!r}; use one of {', '.join(KINDS)}")
-        nodes = tuple(self._get(a, (), "formula") for a in args)
-        text = description or f"{getattr(fn, '__name__', 'f')}({', '.join(n.name for n in nodes)})"
-        return self._node(name, kind, "formula", nodes, text, fn, conditions)
+        return self._construct("formula", name, args, fn, kind=kind, description=description,
+                               conditions=conditions)
 
     # -- hypotheses ----------------------------------------------------------------
     def assume_zero(self, expr: Any, text: str) -> None:

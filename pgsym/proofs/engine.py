@@ -14,6 +14,9 @@
    pgsym's own objects (``join``, ``meet``, ``plane_through``, ``Line3.join``, …) and
    compared with the formulas, so the catalogue and the library cannot drift.
 
+All three read each construction's formula, conditions and core builder from the one table
+:data:`pgsym.proofs.operations.OPERATIONS`.
+
 >>> from pgsym.proofs.claims import Claim
 >>> c = Claim("demo", "the join of A and B contains A")
 >>> A, B = c.free_point("A"), c.free_point("B")
@@ -32,6 +35,7 @@ import time
 import zlib
 from collections.abc import Callable
 from contextlib import contextmanager
+from enum import StrEnum
 from fractions import Fraction
 from typing import Any
 
@@ -42,13 +46,27 @@ from .. import ring as alg
 from ..errors import PgsymError
 from ..exact import is_zero
 from .claims import Claim, Node
-from .verdicts import Certificate, Condition, Counterexample, Verdict
+from .operations import CoreDegenerate, flat
+from .verdicts import Certificate, Condition, Counterexample, Status, Verdict
 from .verdicts import poly_str as _poly_str
 
 __all__ = ["PRIME", "prove", "recheck_counterexample"]
 
 PRIME = 2**61 - 1
 """The prime of the random pass (a Mersenne prime)."""
+
+
+class _Outcome(StrEnum):
+    """What one pass (or one evaluated point) found, before it becomes a verdict's :class:`Status`."""
+
+    PROVED = "proved"
+    HOLDS = "holds"
+    FAILS = "fails"
+    LOW_RANK = "low-rank"
+    DEGENERATE = "degenerate"
+    NONZERO = "nonzero"
+    NOT_IN_IDEAL = "not-in-ideal"
+    NO_WITNESS = "no-witness"
 
 
 class _Timeout(Exception):
@@ -88,83 +106,7 @@ def _alarm(seconds: float | None):  # type: ignore[no-untyped-def]
         signal.signal(signal.SIGALRM, old)
 
 
-def _flat(value: Any) -> list[Any]:
-    if isinstance(value, tuple):
-        out: list[Any] = []
-        for v in value:
-            out.extend(_flat(v))
-        return out
-    return [value]
-
-
 # -- evaluation of a claim in one arithmetic -----------------------------------------------
-
-def _conic_from_points(points: list[tuple[Any, ...]]) -> tuple[tuple[Any, ...], ...]:
-    rows = [(x * x, x * y, y * y, x * w, y * w, w * w) for x, y, w in points]
-    coeffs = []
-    for j in range(6):
-        d = alg.det([r[:j] + r[j + 1:] for r in rows])
-        coeffs.append(d if j % 2 == 0 else -d)
-    a, b, c, d, e, f = coeffs
-    return ((a + a, b, d), (b, c + c, e), (d, e, f + f))
-
-
-def _formula(node: Node, v: list[Any], scalar: Callable[[Any], Any]) -> Any:
-    op = node.op
-    if op == "free":
-        return tuple(tuple(scalar(e) for e in row) for row in node.data) if node.kind in ("matrix", "conic") \
-            else (scalar(node.data[0]) if node.kind == "scalar" else tuple(scalar(e) for e in node.data))
-    if op == "const":
-        return (scalar(node.data[0]), scalar(node.data[1]))
-    if op in ("join", "meet"):
-        return alg.cross(v[0], v[1])
-    if op == "combine":
-        s, t = scalar(node.data[0]), scalar(node.data[1])
-        return tuple(s * a + t * b for a, b in zip(v[0], v[1], strict=True))
-    if op in ("plane_through", "point_on_planes"):
-        return alg.plane_through(*v)
-    if op == "line3":
-        return alg.wedge(v[0], v[1])
-    if op == "apply":
-        return alg.matvec(v[0], v[1])
-    if op == "apply_line":
-        return alg.matvec(alg.transpose(alg.adjugate(v[0])), v[1])
-    if op == "apply_conic":
-        a = alg.adjugate(v[0])
-        return alg.matmul(alg.transpose(a), alg.matmul(v[1], a))
-    if op == "polar":
-        return alg.matvec(v[0], v[1])
-    if op == "conic_through":
-        return _conic_from_points(v)
-    if op == "dual_conic":
-        return alg.adjugate(v[0])
-    if op == "cross_ratio":
-        a, b, c, d = v
-        br = lambda p, q: p[0] * q[1] - p[1] * q[0]  # noqa: E731
-        return (br(a, c) * br(b, d), br(a, d) * br(b, c))
-    if op == "harmonic_conjugate":
-        a, b, c = v
-        ac, bc = a[0] * c[1] - a[1] * c[0], b[0] * c[1] - b[1] * c[0]
-        return tuple(ac * bi + bc * ai for ai, bi in zip(a, b, strict=True))
-    if op == "formula":
-        return node.data(*v)
-    raise PgsymError(f"internal: no formula for operation {op!r}")  # pragma: no cover
-
-
-def _condition_values(node: Node, value: Any, values: dict[Node, Any]) -> list[list[Any]]:
-    """One list per condition text of the node: the condition holds when not all entries vanish."""
-    if not node.conditions:
-        return []
-    if node.op == "free" and node.kind == "matrix":
-        return [[alg.det(value)]]
-    if node.op in ("apply_line", "apply_conic"):
-        return [[alg.det(values[node.args[0]])]]
-    if node.op == "dual_conic":
-        return [[alg.det(values[node.args[0]])]]
-    if node.op == "cross_ratio":
-        return [[value[1]]]
-    return [_flat(value)] * len(node.conditions)
-
 
 def _evaluate(claim: Claim, scalar: Callable[[Any], Any], reduce: Callable[[Any], Any] | None = None,
               deadline: _Deadline | None = None) -> dict[Node, Any]:
@@ -172,7 +114,7 @@ def _evaluate(claim: Claim, scalar: Callable[[Any], Any], reduce: Callable[[Any]
     for node in claim.nodes.values():
         if deadline is not None:
             deadline.check(f"constructing {node.name}")
-        value = _formula(node, [values[a] for a in node.args if isinstance(a, Node)], scalar)
+        value = node.operation.formula(node, [values[a] for a in node.args if isinstance(a, Node)], scalar)
         if reduce is not None:
             value = _map(value, reduce)
         values[node] = value
@@ -186,7 +128,7 @@ def _map(value: Any, f: Callable[[Any], Any]) -> Any:
 
 
 def _is_zero_vector(value: Any) -> bool:
-    return all(x == 0 for x in _flat(value))
+    return all(x == 0 for x in flat(value))
 
 
 def _conclusion_polys(claim: Claim, values: dict[Node, Any], skip: Any = ()) -> list[tuple[str, Any]]:
@@ -202,19 +144,19 @@ def _conclusion_polys(claim: Claim, values: dict[Node, Any], skip: Any = ()) -> 
         elif c.kind == "det":
             out.append((f"det[{' '.join(names)}]", alg.det(vals)))
         elif c.kind == "proportional":
-            u, v = _flat(vals[0]), _flat(vals[1])
+            u, v = flat(vals[0]), flat(vals[1])
             k = next((i for i, x in enumerate(v) if x != 0), 0)
             for i in range(len(u)):
                 if i != k:
                     out.append((f"{names[0]}[{i}]·{names[1]}[{k}] − {names[0]}[{k}]·{names[1]}[{i}]",
                                 u[i] * v[k] - u[k] * v[i]))
         elif c.kind == "equal":
-            u, v = _flat(vals[0]), _flat(vals[1])
+            u, v = flat(vals[0]), flat(vals[1])
             for i, (a, b) in enumerate(zip(u, v, strict=True)):
                 out.append((f"{names[0]}[{i}] − {names[1]}[{i}]", a - b))
         elif c.kind == "zero":
-            for i, a in enumerate(_flat(vals[0])):
-                out.append((f"{names[0]}[{i}]" if len(_flat(vals[0])) > 1 else names[0], a))
+            for i, a in enumerate(flat(vals[0])):
+                out.append((f"{names[0]}[{i}]" if len(flat(vals[0])) > 1 else names[0], a))
         elif c.kind == "equal_ratio":
             (n1, d1), (n2, d2) = vals
             out.append((f"num({names[0]})·den({names[1]}) − num({names[1]})·den({names[0]})", n1 * d2 - n2 * d1))
@@ -224,12 +166,13 @@ def _conclusion_polys(claim: Claim, values: dict[Node, Any], skip: Any = ()) -> 
 def _nonzero_requirements(claim: Claim, values: dict[Node, Any]) -> list[tuple[str, list[Any]]]:
     out = []
     for node in claim.nodes.values():
-        for text, polys in zip(node.conditions, _condition_values(node, values[node], values), strict=True):
+        args = [values[a] for a in node.args if isinstance(a, Node)]
+        for text, polys in zip(node.conditions, node.operation.nonzero(node, values[node], args), strict=True):
             out.append((text, polys))
     for c in claim.conclusions:
         if c.kind == "proportional":
             for a in c.args:
-                out.append((f"{a.name} is not zero", _flat(values[a])))
+                out.append((f"{a.name} is not zero", flat(values[a])))
         if c.kind == "equal_ratio":
             for a in c.args:
                 if a.op != "const":
@@ -285,8 +228,8 @@ _CONVERTERS: dict[tuple[int, str, bool], tuple[Claim, _Converter]] = {}
 def _integral(claim: Claim) -> bool:
     """True when every coefficient in the claim's data is an integer (then ℤ[params] suffices)."""
     for node in claim.nodes.values():
-        if node.op in ("free", "combine", "const"):
-            for e in _flat(node.data) if isinstance(node.data, tuple) else []:
+        if node.operation.coefficients:
+            for e in flat(node.data) if isinstance(node.data, tuple) else []:
                 if any(not a.is_Integer for a in sympy.sympify(e).atoms(sympy.Rational)):
                     return False
     return not claim.hypotheses
@@ -307,8 +250,7 @@ def _point_evaluator(claim: Claim, R: Any, point: dict[sympy.Symbol, Any]) -> Ca
     """A converter from parameter expressions to exact Fractions at the given point."""
     conv = _converter(claim)
     cache: dict[Any, Fraction] = {}
-    args = [sympy.QQ(Fraction(point[s]).numerator, Fraction(point[s]).denominator) for s in claim.parameters]
-    args = args or [sympy.QQ(0)]
+    args = [Fraction(point[s]) for s in claim.parameters] or [Fraction(0)]
 
     def scalar(expr: Any) -> Fraction:
         out = cache.get(expr)
@@ -318,11 +260,24 @@ def _point_evaluator(claim: Claim, R: Any, point: dict[sympy.Symbol, Any]) -> Ca
             elif expr.is_Rational:
                 out = Fraction(int(expr.p), int(expr.q))
             else:
-                out = _qq_to_fraction(conv(expr)(*args))
+                out = _value_at(conv(expr), args)
             cache[expr] = out
         return out
 
     return scalar
+
+
+def _value_at(poly: Any, xs: list[Fraction]) -> Fraction:
+    """The exact value of a polynomial of the ring at a point (term by term: much faster than
+    the ring's own evaluation, which builds a smaller ring for every variable)."""
+    total = Fraction(0)
+    for monom, coeff in poly.items():
+        term = _qq_to_fraction(coeff)
+        for x, e in zip(xs, monom, strict=False):
+            if e:
+                term *= x**e
+        total += term
+    return total
 
 
 def _modp(x: Fraction) -> int:
@@ -334,7 +289,7 @@ def _check_point(claim: Claim, values: dict[Node, Any], modp: bool) -> tuple[str
     red = (lambda x: x % PRIME) if modp else (lambda x: x)
     for _text, polys in _nonzero_requirements(claim, values):
         if all(red(p) == 0 for p in polys):
-            return "degenerate", _text
+            return _Outcome.DEGENERATE, _text
     residuals = [red(val) for _, val in _conclusion_polys(claim, values)]
     rank_info = []
     for c in claim.conclusions:
@@ -350,10 +305,10 @@ def _check_point(claim: Claim, values: dict[Node, Any], modp: bool) -> tuple[str
                 residuals.append(Fraction(rk - r) if not modp else rk - r)
             rank_info.append((node, r, rk, rs, cs))
     if any(x != 0 for x in residuals):
-        return "fails", residuals
+        return _Outcome.FAILS, residuals
     if any(rk < r for _, r, rk, _, _ in rank_info):
-        return "low-rank", rank_info
-    return "holds", rank_info
+        return _Outcome.LOW_RANK, rank_info
+    return _Outcome.HOLDS, rank_info
 
 
 def _rng(claim: Claim, seed: int) -> random.Random:
@@ -373,7 +328,7 @@ def _find_small_counterexample(claim: Claim, R: Any, rng: random.Random, fallbac
         point = _random_point(claim, rng, 2 + attempt // 10)
         values = _evaluate(claim, _point_evaluator(claim, R, point))
         kind, data = _check_point(claim, values, modp=False)
-        if kind == "fails":
+        if kind == _Outcome.FAILS:
             return Counterexample({str(s): Fraction(v) for s, v in point.items()}, data, claim)
     values = _evaluate(claim, _point_evaluator(claim, R, fallback))
     kind, data = _check_point(claim, values, modp=False)
@@ -395,30 +350,31 @@ def _describe_ring(claim: Claim, order: str) -> str:
 
 def _random_pass(claim: Claim, R: Any, rng: random.Random, deadline: _Deadline) -> tuple[str, Any, str]:
     """Returns (outcome, data, summary) with outcome in 'fails', 'holds', 'degenerate', 'low-rank'."""
-    last = ("degenerate", "", "")
+    last = (_Outcome.DEGENERATE, "", "")
     for trial in range(4):
         deadline.check("random evaluation")
         point = _random_point(claim, rng, PRIME)
         frac = _point_evaluator(claim, R, point)
         values = _evaluate(claim, lambda e, frac=frac: _modp(frac(e)), reduce=lambda x: x % PRIME, deadline=deadline)
         kind, data = _check_point(claim, values, modp=True)
-        if kind == "fails":
-            return "fails", point, f"conclusion nonzero modulo p = 2^61 − 1 at a random point (trial {trial + 1})"
-        if kind == "holds":
-            return "holds", (point, data), (
+        if kind == _Outcome.FAILS:
+            return (_Outcome.FAILS, point,
+                    f"conclusion nonzero modulo p = 2^61 − 1 at a random point (trial {trial + 1})")
+        if kind == _Outcome.HOLDS:
+            return _Outcome.HOLDS, (point, data), (
                 f"conclusion zero modulo p = 2^61 − 1 at a random point (trial {trial + 1}); "
                 "this finds counterexamples but proves nothing"
             )
         last = (kind, data, "")
     kind, data, _ = last
-    if kind == "low-rank":
-        return "low-rank", data, "the rank stayed below the claim at four random points"
-    return "degenerate", data, f"a construction was undefined at four random points: {data}"
+    if kind == _Outcome.LOW_RANK:
+        return _Outcome.LOW_RANK, data, "the rank stayed below the claim at four random points"
+    return _Outcome.DEGENERATE, data, f"a construction was undefined at four random points: {data}"
 
 
 def _proportional_by_division(c: Any, values: dict[Node, Any]) -> str | None:
     """Prove u = q·v (or v = q·u) with one exact polynomial division; None when that does not work."""
-    u, v = (_flat(values[a]) for a in c.args)
+    u, v = (flat(values[a]) for a in c.args)
     names = [a.name for a in c.args]
     for (x, y), (nx, ny) in (((u, v), names), ((v, u), names[::-1])):
         k = next((i for i, t in enumerate(y) if t != 0), None)
@@ -438,12 +394,12 @@ def _exact_pass(claim: Claim, deadline: _Deadline, rank_witness: list[Any]) -> t
     conv = _converter(claim, order, field=bool(hyps))
     R = conv.R
     values = _evaluate(claim, conv, deadline=deadline)
-    largest = max((len(p) for v in values.values() for p in _flat(v) if hasattr(p, "terms")), default=0)
+    largest = max((len(p) for v in values.values() for p in flat(v) if hasattr(p, "terms")), default=0)
     conditions = []
     for text, polys in _nonzero_requirements(claim, values):
         deadline.check("checking the non-degeneracy conditions")
         if all(p == 0 for p in polys):
-            return "degenerate", text
+            return _Outcome.DEGENERATE, text
         conditions.append(Condition(text, raw=[p for p in polys if p != 0][:3]))
     deadline.check("reducing the conclusion")
     steps = []
@@ -456,7 +412,7 @@ def _exact_pass(claim: Claim, deadline: _Deadline, rank_witness: list[Any]) -> t
             deadline.check("reducing the conclusion")
             quotients, rem = poly.div(basis)
             if rem != 0:
-                return "not-in-ideal", (label, _poly_str(rem))
+                return _Outcome.NOT_IN_IDEAL, (label, _poly_str(rem))
             combo = " + ".join(f"({_poly_str(q)})·g{i + 1}" for i, q in enumerate(quotients) if q != 0) or "0"
             steps.append(f"{label} = {combo}; remainder 0")
     else:
@@ -472,7 +428,7 @@ def _exact_pass(claim: Claim, deadline: _Deadline, rank_witness: list[Any]) -> t
         for label, poly in _conclusion_polys(claim, values, done):
             deadline.check("expanding the conclusion")
             if poly != 0:
-                return "nonzero", (label, _poly_str(poly))
+                return _Outcome.NONZERO, (label, _poly_str(poly))
             steps.append(f"{label} expands to 0")
     for c in claim.conclusions:
         if c.kind != "rank":
@@ -484,83 +440,38 @@ def _exact_pass(claim: Claim, deadline: _Deadline, rank_witness: list[Any]) -> t
             for rs, cs, minor in alg.minors(rows, r + 1):
                 deadline.check("expanding the minors")
                 if minor != 0:
-                    return "nonzero", (f"minor rows {rs} columns {cs} of {node.name}", _poly_str(minor))
+                    return _Outcome.NONZERO, (f"minor rows {rs} columns {cs} of {node.name}", _poly_str(minor))
             steps.append(f"all {r + 1}×{r + 1} minors of {node.name} expand to 0")
         witness = next((w for w in rank_witness if w[0] is node), None)
         if witness is None:
-            return "no-witness", node.name
+            return _Outcome.NO_WITNESS, node.name
         _, _, _rank, rs, cs = witness
         steps.append(f"the {r}×{r} minor of {node.name} on rows {rs}, columns {cs} is nonzero at a random point "
                      "modulo p, hence not the zero polynomial")
-    return "proved", (Certificate(method, _describe_ring(claim, order), steps, largest), conditions)
+    return _Outcome.PROVED, (Certificate(method, _describe_ring(claim, order), steps, largest), conditions)
 
 
 # -- the core check -------------------------------------------------------------------------
 
 def _core_objects(claim: Claim, point: dict[Any, Any]) -> dict[Node, Any]:
     """Build the configuration with pgsym's own objects at an exact rational point."""
-    from sympy import Matrix, Rational
-
-    from .. import conics, plucker, projective_line, projective_plane, space
-
     R = _converter(claim).R
     frac = _point_evaluator(claim, R, point)
 
-    def q(x: Fraction) -> Rational:
-        return Rational(x.numerator, x.denominator)
+    def exact(e: Any) -> sympy.Rational:
+        x = frac(e)
+        return sympy.Rational(x.numerator, x.denominator)
 
-    vector_class = {"point": projective_plane.Point, "line": projective_plane.Line, "point1": projective_line.Point1,
-                    "point3": space.Point3, "plane": space.Plane}
     objs: dict[Node, Any] = {}
     for node in claim.nodes.values():
+        build = node.operation.core
         a = [objs.get(x) for x in node.args if isinstance(x, Node)]
-        op = node.op
-        if op == "free":
-            if node.kind in vector_class:
-                objs[node] = vector_class[node.kind](*(q(frac(e)) for e in node.data))
-            elif node.kind in ("matrix", "conic"):
-                objs[node] = Matrix([[q(frac(e)) for e in row] for row in node.data])
+        if build is None or any(x is None for x in a):
             continue
-        if any(x is None for x in a):
-            continue
-        if op == "join":
-            objs[node] = projective_plane.join(*a)
-        elif op == "meet":
-            objs[node] = projective_plane.meet(*a)
-        elif op == "combine":
-            s, t = q(frac(node.data[0])), q(frac(node.data[1]))
-            pairs = zip(a[0].coords, a[1].coords, strict=True)
-            objs[node] = vector_class[node.kind](*(s * x + t * y for x, y in pairs))
-        elif op == "plane_through":
-            objs[node] = space.plane_through(*a)
-        elif op == "point_on_planes":
-            objs[node] = space.point_on_planes(*a)
-        elif op == "line3":
-            objs[node] = plucker.Line3.join(*a)
-        elif op == "apply":
-            objs[node] = vector_class[node.kind](*(a[0] * a[1].vector))
-        elif op == "apply_line":
-            if is_zero(a[0].det()):
-                raise _CoreDegenerate(f"{node.args[0].name} is singular")
-            objs[node] = vector_class[node.kind](*(a[0].adjugate().T * a[1].vector))
-        elif op == "apply_conic":
-            adj = a[0].adjugate()
-            objs[node] = conics.Conic(adj.T * (a[1].matrix if hasattr(a[1], "matrix") else a[1]) * adj)
-        elif op == "polar":
-            objs[node] = conics.Conic(a[0]).polar(a[1])
-        elif op == "conic_through":
-            objs[node] = conics.conic_through(*a)
-        elif op == "dual_conic":
-            objs[node] = conics.Conic(a[0]).dual()
-        elif op == "cross_ratio":
-            objs[node] = projective_line.cross_ratio(*a)
-        elif op == "harmonic_conjugate":
-            objs[node] = projective_line.harmonic_conjugate(*a)
+        obj = build(node, a, exact)
+        if obj is not None:
+            objs[node] = obj
     return objs
-
-
-class _CoreDegenerate(Exception):
-    pass
 
 
 def _core_value(obj: Any) -> list[Fraction]:
@@ -584,7 +495,7 @@ def _agree(claim: Claim, objs: dict[Node, Any], values: dict[Node, Any]) -> str 
             if d == 0 or Fraction(n) / Fraction(d) != _core_value(obj)[0]:
                 return node.name
             continue
-        u, v = _flat(mine), _core_value(obj)
+        u, v = flat(mine), _core_value(obj)
         k = next((i for i, x in enumerate(v) if x != 0), None)
         if len(u) != len(v) or k is None or u[k] == 0 or any(u[i] * v[k] != u[k] * v[i] for i in range(len(u))):
             return node.name
@@ -598,7 +509,7 @@ def _core_check(claim: Claim, rng: random.Random, deadline: _Deadline) -> str:
         point = _random_point(claim, rng, 9)
         try:
             objs = _core_objects(claim, point)
-        except (PgsymError, _CoreDegenerate):
+        except (PgsymError, CoreDegenerate):
             continue
         values = _evaluate(claim, _point_evaluator(claim, R, point))
         bad = _agree(claim, objs, values)
@@ -617,13 +528,13 @@ def recheck_counterexample(claim: Claim, values: dict[str, Any]) -> bool:
     point = {s: Fraction(values[str(s)]) for s in claim.parameters}
     try:
         objs = _core_objects(claim, point)
-    except (PgsymError, _CoreDegenerate):
+    except (PgsymError, CoreDegenerate):
         return False
     vals = _evaluate(claim, _point_evaluator(claim, _converter(claim).R, point))
     if _agree(claim, objs, vals) is not None:
         return False
     kind, _ = _check_point(claim, vals, modp=False)
-    return kind == "fails"
+    return kind == _Outcome.FAILS
 
 
 # -- the entry point --------------------------------------------------------------------------
@@ -670,45 +581,45 @@ def prove(claim: Claim, *, timeout: float | None = 10.0, seed: int = 0, core_che
                 summary = "skipped: random points do not satisfy the equation hypotheses"
             else:
                 outcome, data, summary = _random_pass(claim, R, rng, deadline)
-                if outcome == "fails":
+                if outcome == _Outcome.FAILS:
                     ce = _find_small_counterexample(claim, R, rng, data, deadline)
-                    return Verdict(status="false", method="random evaluation modulo a prime, then exact recheck",
+                    return Verdict(status=Status.FALSE, method="random evaluation modulo a prime, then exact recheck",
                                    counterexample=ce, random_pass=summary,
                                    reason="the conclusion does not vanish at the counterexample",
                                    elapsed=time.perf_counter() - start, **base)
-                if outcome == "low-rank":
-                    return Verdict(status="unknown", random_pass=summary,
+                if outcome == _Outcome.LOW_RANK:
+                    return Verdict(status=Status.UNKNOWN, random_pass=summary,
                                    reason="the matrix had lower rank than claimed at every random point tried",
                                    elapsed=time.perf_counter() - start, **base)
-                rank_witness = data[1] if outcome == "holds" else []
+                rank_witness = data[1] if outcome == _Outcome.HOLDS else []
             status, data = _exact_pass(claim, deadline, rank_witness)
-            if status == "proved":
+            if status is _Outcome.PROVED:
                 certificate, conditions = data
                 core = _core_check(claim, rng, deadline) if core_check else "not requested"
                 if core.startswith("MISMATCH"):
-                    return Verdict(status="unknown", random_pass=summary, core_check=core,
+                    return Verdict(status=Status.UNKNOWN, random_pass=summary, core_check=core,
                                    reason=f"pgsym's core and the proof formulas disagree ({core})",
                                    elapsed=time.perf_counter() - start, **base)
                 method = certificate.method
                 if claim.method_note:
                     method = f"rational parametrisation ({claim.method_note}), then {method}"
-                return Verdict(status="proved", method=method, certificate=certificate, conditions=conditions,
+                return Verdict(status=Status.PROVED, method=method, certificate=certificate, conditions=conditions,
                                random_pass=summary, core_check=core, elapsed=time.perf_counter() - start, **base)
-            if status == "degenerate":
+            if status == _Outcome.DEGENERATE:
                 reason = f"a construction is undefined for every value of the parameters: {data} fails identically"
-            elif status == "not-in-ideal":
+            elif status == _Outcome.NOT_IN_IDEAL:
                 reason = (f"{data[0]} has the nonzero remainder {data[1][:200]} modulo the hypotheses: it is not in "
                           "their ideal (it may still hold on a component, or after saturating by the conditions)")
-            elif status == "no-witness":
+            elif status == _Outcome.NO_WITNESS:
                 reason = f"no nonzero minor of {data} of the claimed size was found"
             else:
                 ce = _find_small_counterexample(claim, R, rng, _random_point(claim, rng, PRIME), deadline)
-                return Verdict(status="false", method="exact expansion, then exact recheck", counterexample=ce,
+                return Verdict(status=Status.FALSE, method="exact expansion, then exact recheck", counterexample=ce,
                                random_pass=summary, reason=f"{data[0]} expands to a nonzero polynomial",
                                elapsed=time.perf_counter() - start, **base)
-            return Verdict(status="unknown", random_pass=summary, reason=reason,
+            return Verdict(status=Status.UNKNOWN, random_pass=summary, reason=reason,
                            elapsed=time.perf_counter() - start, **base)
     except _Timeout as err:
-        return Verdict(status="unknown", random_pass=summary,
+        return Verdict(status=Status.UNKNOWN, random_pass=summary,
                        reason=f"timed out after {timeout} s while {err.args[0] if err.args else 'working'}",
                        elapsed=time.perf_counter() - start, **base)

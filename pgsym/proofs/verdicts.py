@@ -9,12 +9,32 @@ from __future__ import annotations
 
 import json
 from dataclasses import dataclass, field
+from enum import StrEnum
 from fractions import Fraction
 from typing import Any
 
-__all__ = ["Certificate", "Condition", "Counterexample", "Verdict"]
+__all__ = ["Certificate", "Condition", "Counterexample", "Status", "Verdict"]
 
-_STATUS_MARK = {"proved": "✔ proved", "false": "✘ false", "unknown": "? unknown"}
+
+class Status(StrEnum):
+    """The outcome of a proof; a member equals, prints and shows as its value.
+
+    >>> Status.PROVED == "proved", f"{Status.FALSE}", Status("unknown") is Status.UNKNOWN
+    (True, 'false', True)
+    >>> Status.PROVED
+    'proved'
+    """
+
+    PROVED = "proved"
+    FALSE = "false"
+    UNKNOWN = "unknown"
+
+    def __repr__(self) -> str:  # shown as the plain string it was before statuses were an enum
+        return repr(self.value)
+
+
+_STATUS_MARK = {Status.PROVED: "✔ proved", Status.FALSE: "✘ false", Status.UNKNOWN: "? unknown"}
+_STATUS_LATEX = {Status.PROVED: r"\text{proved}", Status.FALSE: r"\text{false}", Status.UNKNOWN: r"\text{unknown}"}
 
 
 def _short(text: str, limit: int = 90) -> str:
@@ -126,7 +146,7 @@ class Verdict:
 
     name: str
     title: str
-    status: str
+    status: Status
     method: str = ""
     statement: str = ""
     conclusion: list[str] = field(default_factory=list)
@@ -141,15 +161,18 @@ class Verdict:
     expected: bool = True
     elapsed: float = 0.0
 
+    def __post_init__(self) -> None:
+        self.status = Status(self.status)  # a plain string is accepted and checked
+
     @property
     def proved(self) -> bool:
         """True exactly when the status is ``"proved"``."""
-        return self.status == "proved"
+        return self.status is Status.PROVED
 
     @property
     def refuted(self) -> bool:
         """True exactly when the status is ``"false"`` (a counterexample is attached)."""
-        return self.status == "false"
+        return self.status is Status.FALSE
 
     @property
     def as_expected(self) -> bool:
@@ -169,7 +192,7 @@ class Verdict:
         out: dict[str, Any] = {
             "name": self.name,
             "title": self.title,
-            "status": self.status,
+            "status": str(self.status),
             "expected": "true" if self.expected else "false",
             "as_expected": self.as_expected,
             "statement": self.statement,
@@ -230,7 +253,7 @@ class Verdict:
 
     def latex(self) -> str:
         """A one-line LaTeX summary (status, statement and the number of conditions)."""
-        word = {"proved": r"\text{proved}", "false": r"\text{false}", "unknown": r"\text{unknown}"}[self.status]
+        word = _STATUS_LATEX[self.status]
         title = self.title.replace("_", r"\_")
         return rf"$\text{{{title}}}:\ {word}\ \ (\text{{{len(self.conditions)} non-degeneracy conditions}})$"
 

@@ -6,7 +6,7 @@ import math
 import random
 from fractions import Fraction
 
-from .._exact import det, matmul
+from ...ring import det, matmul
 from ..model import matrix_latex, tuple_latex, vector_latex
 
 __all__ = ["det", "equation_latex", "homog_latex", "invertible", "matrix_latex", "nz", "primitive_dir", "tuple_latex",
@@ -37,7 +37,7 @@ def invertible(rng: random.Random, n: int, bound: int = 1, diag: int = 2) -> lis
     perm = list(range(n))
     rng.shuffle(perm)
     P = [[Fraction(1 if perm[i] == j else 0) for j in range(n)] for i in range(n)]
-    M = matmul(matmul(L, U), P)
+    M = [list(row) for row in matmul(matmul(L, U), P)]
     assert det(M) != 0
     return M
 

@@ -6,7 +6,7 @@ import random
 from fractions import Fraction
 
 from ...projective_plane import Line, Point, incident
-from .._exact import canonical_ints, cross
+from ...ring import cross, primitive_integers
 from ..model import Answer, Exercise
 from ..template import Draft, Template, check
 from ._util import equation_latex, nz, primitive_dir, tuple_latex
@@ -50,7 +50,7 @@ class HomogeneousTemplate(Template):
                          {"given": list(given), "direction": "to_inhomogeneous"})
         x = Fraction(rng.randint(-12, 12), rng.randint(1, 6))
         y = Fraction(rng.randint(-12, 12), rng.randint(1, 6))
-        answer = canonical_ints([x, y, 1])
+        answer = primitive_integers([x, y, 1])
         statement = ("The point $\\mathbf{x}$ of the Euclidean plane has coordinates "
                      f"$(x, y) = {tuple_latex((x, y))}$.")
         prompt = "Give homogeneous coordinates of $\\mathbf{x}$ as primitive integers."
@@ -98,7 +98,7 @@ class JoinTemplate(Template):
             k = rng.choice([2, 3, -1, -2])
             p = [k * c for c in p]
         line = cross(p, q)
-        answer = canonical_ints(line)
+        answer = primitive_integers(line)
         statement = (f"Let $\\mathbf{{p}} = {tuple_latex(p)}$ and $\\mathbf{{q}} = {tuple_latex(q)}$ "
                      "(homogeneous coordinates).")
         if level == 3:
@@ -136,14 +136,14 @@ class MeetTemplate(Template):
         d2 = primitive_dir(rng, 3)
         while d1[0] * d2[1] - d1[1] * d2[0] == 0:
             d2 = primitive_dir(rng, 3)
-        l1 = list(canonical_ints(cross(x, [d1[0], d1[1], 0])))
-        l2 = list(canonical_ints(cross(x, [d2[0], d2[1], 0])))
+        l1 = list(primitive_integers(cross(x, [d1[0], d1[1], 0])))
+        l2 = list(primitive_integers(cross(x, [d2[0], d2[1], 0])))
         if level == 3:
             k1, k2 = rng.choice([2, -3]), rng.choice([-1, 2])
             l1 = [k1 * c for c in l1]
             l2 = [k2 * c for c in l2]
         raw = cross(l1, l2)
-        answer = canonical_ints(raw)
+        answer = primitive_integers(raw)
         statement = (f"Let $\\mathbf{{l}} = {tuple_latex(l1)}$ and $\\mathbf{{m}} = {tuple_latex(l2)}$ be two lines "
                      "(the line $(a, b, c)$ is $ax + by + c = 0$).")
         prompt = "Give their intersection point $\\mathbf{x}$ (homogeneous coordinates)."
@@ -178,7 +178,7 @@ class IdealPointTemplate(Template):
         l1 = [a, b, c1]
         k = 1 if level == 1 else rng.choice([2, 3, -2])
         l2 = [k * a, k * b, k * c2]
-        answer = canonical_ints([b, -a, 0])
+        answer = primitive_integers([b, -a, 0])
         statement = f"Let $\\mathbf{{l}} = {tuple_latex(l1)}$ be a line (that is, ${equation_latex(l1)}$)."
         if level == 3:
             # two integer points on a x + b y + c2 = 0: a particular one needs gcd(a, b) = 1, true here
@@ -188,7 +188,7 @@ class IdealPointTemplate(Template):
             q = [x0 + d[0] * r, y0 + d[1] * r]
             statement += (f" The line $\\mathbf{{m}}$ passes through ${tuple_latex(p)}$ and ${tuple_latex(q)}$; "
                           "it is parallel to $\\mathbf{l}$.")
-            l2 = canonical_ints(cross([*p, 1], [*q, 1]))
+            l2 = primitive_integers(cross([*p, 1], [*q, 1]))
         else:
             statement += f" Let $\\mathbf{{m}} = {tuple_latex(l2)}$ be a second line; the two are parallel."
         prompt = "Give the point $\\mathbf{x}$ where $\\mathbf{l}$ and $\\mathbf{m}$ meet (homogeneous coordinates)."
@@ -227,7 +227,7 @@ class IncidenceTemplate(Template):
     def build(self, rng: random.Random, level: int) -> Draft:
         x0, y0 = rng.randint(-4, 4), rng.randint(-4, 4)
         d = primitive_dir(rng, 3)
-        line = list(canonical_ints(cross([x0, y0, 1], [d[0], d[1], 0])))
+        line = list(primitive_integers(cross([x0, y0, 1], [d[0], d[1], 0])))
         a, b = line[0], line[1]
 
         def on(k: int) -> list[int]:

@@ -6,17 +6,13 @@ from __future__ import annotations
 import random
 from fractions import Fraction
 
+from ... import ring
 from ...plucker import Line3
+from ...ring import cross, primitive_integers
 from ...space import Plane, Point3, plane_through, point_on_planes
-from .._exact import canonical_ints, cross, det
 from ..model import Answer, Exercise
 from ..template import Draft, Template, check
 from ._util import nz, primitive_dir, tuple_latex
-
-
-def _cofactor4(rows: list[list[int]]) -> list[Fraction]:
-    """The vector orthogonal to three 4-vectors (signed 3×3 minors); zero iff they are dependent."""
-    return [Fraction((-1) ** j) * det([[r[k] for k in range(4) if k != j] for r in rows]) for j in range(4)]
 
 
 class PlaneThroughTemplate(Template):
@@ -51,10 +47,10 @@ class PlaneThroughTemplate(Template):
             if level >= 2:
                 k = rng.choice((2, -1, 3))
                 pts[0] = [k * c for c in pts[0]]
-            raw = _cofactor4(pts)
+            raw = ring.plane_through(*pts)  # signed 3×3 minors: zero iff the points are dependent
             if any(raw):
                 break
-        answer = canonical_ints(raw)
+        answer = primitive_integers(raw)
         statement = "Let " + ", ".join(f"$\\mathbf{{X}}_{i + 1} = {tuple_latex(p)}$" for i, p in enumerate(pts)) + \
             " be points of projective 3-space (homogeneous coordinates)."
         if level == 3:
@@ -99,11 +95,11 @@ class PointOnPlanesTemplate(Template):
                     w = X[3]
                     planes.append([w * x for x in n] + [-sum(a * b for a, b in zip(n, X[:3], strict=True))])
             if all(any(p[:3]) for p in planes):
-                raw = _cofactor4(planes)
+                raw = ring.plane_through(*planes)  # the same minors give the point of three planes
                 if any(raw):
                     break
-        answer = canonical_ints(raw)
-        assert answer == canonical_ints(X)
+        answer = primitive_integers(raw)
+        assert answer == primitive_integers(X)
         statement = "Let " + ", ".join(f"$\\boldsymbol{{\\pi}}_{i + 1} = {tuple_latex(p)}$"
                                        for i, p in enumerate(planes)) + \
             " be planes of projective 3-space ($(a, b, c, d)$ is the plane $ax + by + cz + d = 0$)."
@@ -141,7 +137,7 @@ class PluckerTemplate(Template):
             raw = [A[i] * B[j] - A[j] * B[i] for i, j in ((0, 1), (0, 2), (0, 3), (1, 2), (3, 1), (2, 3))]
             if any(raw):
                 break
-        answer = canonical_ints(raw)
+        answer = primitive_integers(raw)
         statement = (f"Let $\\mathbf{{A}} = {tuple_latex(A)}$ and $\\mathbf{{B}} = {tuple_latex(B)}$ be points "
                      "of projective 3-space. Use $l_{ij} = a_i b_j - a_j b_i$, the entries of $L = \\mathbf{A}"
                      "\\mathbf{B}^\\top - \\mathbf{B}\\mathbf{A}^\\top$.")

@@ -3,14 +3,19 @@ and the decomposition H = H_S H_A H_P."""
 
 from __future__ import annotations
 
+import functools
 import random
 from fractions import Fraction
 
 import sympy
 
 from ...conics import Conic
+from ...decomposition import decompose
+from ...errors import SingularTransformationError
+from ...hierarchy import AFFINE_2D, EUCLIDEAN_2D, ISOMETRY_2D, PROJECTIVE_2D, SIMILARITY_2D, classify
 from ...projective_plane import Line, Point, collinear, incident
-from .._exact import adjugate, canonical_ints, canonical_matrix, det, matmul, matvec, transpose
+from ...ring import adjugate, det, matmul, matvec, primitive_integer_matrix, primitive_integers, transpose
+from ..errors import TemplateError
 from ..model import Answer, Exercise
 from ..template import Draft, Template, check
 from ._util import invertible, matrix_latex, nz, primitive_dir, tuple_latex
@@ -60,7 +65,7 @@ class ApplyPointTemplate(Template):
         while all(c == 0 for c in image):  # impossible (H invertible, x nonzero): kept as a guard
             x[0] += 1
             image = matvec(H, x)
-        answer = canonical_ints(image)
+        answer = primitive_integers(image)
         statement = (f"The homography $H = {matrix_latex(H)}$ acts on points of the plane. "
                      f"Let $\\mathbf{{x}} = {tuple_latex(x)}$.")
         prompt = "Give the image $\\mathbf{x}' = H\\mathbf{x}$ (homogeneous coordinates)."
@@ -91,7 +96,7 @@ class ApplyLineTemplate(Template):
         l = list(primitive_dir(rng, 3, 3))
         adjT = transpose(adjugate(H))
         image = matvec(adjT, l)
-        answer = canonical_ints(image)
+        answer = primitive_integers(image)
         statement = (f"The homography $H = {matrix_latex(H)}$ maps points by $\\mathbf{{x}}' = H\\mathbf{{x}}$. "
                      f"Let $\\mathbf{{l}} = {tuple_latex(l)}$ be a line.")
         prompt = "Give the image line $\\mathbf{l}'$ (homogeneous coordinates)."
@@ -144,7 +149,7 @@ class ApplyConicTemplate(Template):
             what = f"the conic with matrix $C = {matrix_latex(C)}$ (non-degenerate: $\\det C = {det(C)}$)"
         A = adjugate(H)
         image = matmul(matmul(transpose(A), C), A)
-        answer = canonical_matrix(image)
+        answer = primitive_integer_matrix(image)
         statement = (f"The homography $H = {matrix_latex(H)}$ maps points by $\\mathbf{{x}}' = H\\mathbf{{x}}$. "
                      f"Consider {what}.")
         prompt = "Give the matrix $C'$ of the image conic (any nonzero multiple is accepted)."
@@ -168,7 +173,19 @@ class ApplyConicTemplate(Template):
 
 # --- the hierarchy ---------------------------------------------------------------------------------
 CLASSES = ("isometry", "similarity", "affinity", "projectivity")
-DOF = {"isometry": 3, "similarity": 4, "affinity": 6, "projectivity": 8}
+# the exercise's words for the classes of pgsym.hierarchy (an isometry may contain a reflection)
+HIERARCHY = {"isometry": ISOMETRY_2D, "similarity": SIMILARITY_2D, "affinity": AFFINE_2D, "projectivity": PROJECTIVE_2D}
+_WORD = {cls.key: word for word, cls in HIERARCHY.items()} | {EUCLIDEAN_2D.key: "isometry"}
+
+
+@functools.cache
+def dof(word: str) -> int:
+    """The degrees of freedom of a class of the exercise, as :mod:`pgsym.hierarchy` derives them.
+
+    >>> [dof(word) for word in CLASSES]
+    [3, 4, 6, 8]
+    """
+    return HIERARCHY[word].dof().dof
 TRIPLES = ((3, 4, 5), (5, 12, 13), (8, 15, 17), (4, 3, 5))
 
 
@@ -223,7 +240,7 @@ class ClassifyTemplate(Template):
         key = "ABCD"[CLASSES.index(cls)]
         statement = f"Consider the plane transformation with matrix $H = {matrix_latex(H)}$."
         parts = [("Which is the most specific class $H$ belongs to?", Answer.choice(key), choices),
-                 ("How many degrees of freedom does that class of transformations have?", Answer.integer(DOF[cls]),
+                 ("How many degrees of freedom does that class of transformations have?", Answer.integer(dof(cls)),
                   ())]
         last_row = H[2]
         steps = [f"The last row is ${tuple_latex(last_row)}$: "
@@ -239,25 +256,17 @@ class ClassifyTemplate(Template):
                             (": the identity, so $A$ is orthogonal: an isometry." if cls == "isometry" else
                              f": ${AtA[0][0]}\\,I$ with ${AtA[0][0]} \\neq 1$, so a similarity with scale "
                              f"$\\sqrt{{{AtA[0][0]}}}$.")))
-        steps.append(f"The class has {DOF[cls]} degrees of freedom.")
+        steps.append(f"The class has {dof(cls)} degrees of freedom.")
         return Draft(statement, parts, steps, {"H": H, "class": cls})
 
     def verify(self, exercise: Exercise) -> None:
-        H = _smatrix(exercise.params["H"])
-        check(H.det() != 0, "singular transformation")
+        try:  # exact classification; a singular matrix is no transformation at all
+            found = _WORD[classify(exercise.params["H"]).key]
+        except SingularTransformationError:
+            raise TemplateError("singular transformation") from None
         key = exercise.parts[0].answer.value
-        if H[2, 0] != 0 or H[2, 1] != 0:
-            found = "projectivity"
-        else:
-            A = H[:2, :2] / H[2, 2]
-            AtA = A.T * A
-            if AtA[0, 1] != 0 or AtA[0, 0] != AtA[1, 1]:
-                found = "affinity"
-            else:
-                found = "isometry" if AtA[0, 0] == 1 else "similarity"
         check(key == "ABCD"[CLASSES.index(found)], f"key {key} but the matrix is an {found}")
-        check(exercise.parts[1].answer.value == {"isometry": 3, "similarity": 4, "affinity": 6,
-                                                  "projectivity": 8}[found], "wrong DoF")
+        check(exercise.parts[1].answer.value == dof(found), "wrong DoF")
 
 
 # quantity -> the most general class of plane transformations that preserves it
@@ -339,13 +348,13 @@ class FourPointsTemplate(Template):
             dst = [matvec(H, x) for x in src]
             if all(d[2] != 0 for d in dst):
                 break
-        answer = canonical_matrix(H)
+        answer = primitive_integer_matrix(H)
         if level == 3:
             shown = [tuple_latex((d[0] / d[2], d[1] / d[2])) for d in dst]
             dst_params = [[str(d[0] / d[2]), str(d[1] / d[2]), "1"] for d in dst]
         else:
-            shown = [tuple_latex(canonical_ints(d)) for d in dst]
-            dst_params = [[str(x) for x in canonical_ints(d)] for d in dst]
+            shown = [tuple_latex(primitive_integers(d)) for d in dst]
+            dst_params = [[str(x) for x in primitive_integers(d)] for d in dst]
         pairs = ", ".join(f"${tuple_latex(s)} \\mapsto {t}$" for s, t in zip(src, shown, strict=True))
         statement = ("A homography $H$ of the plane maps four points (homogeneous coordinates; no three of "
                      f"them collinear) as follows: {pairs}.")
@@ -360,7 +369,7 @@ class FourPointsTemplate(Template):
 
         B1, B2 = basis(src), basis(dsts)
         solved = matmul(B2, adjugate(B1))
-        assert canonical_matrix(solved) == answer
+        assert primitive_integer_matrix(solved) == answer
         steps = ["Map the standard frame $\\mathbf{e}_1, \\mathbf{e}_2, \\mathbf{e}_3, (1,1,1)^\\top$ to each "
                  "quadruple: if $M = [\\mathbf{x}_1\\ \\mathbf{x}_2\\ \\mathbf{x}_3]$ and $\\boldsymbol{\\lambda} = "
                  "\\operatorname{adj}(M)\\,\\mathbf{x}_4$, then $B = M \\operatorname{diag}(\\boldsymbol{\\lambda})$.",
@@ -421,17 +430,10 @@ class DecomposeTemplate(Template):
         return Draft(statement, parts, steps, {"H": [[str(x) for x in row] for row in H]})
 
     def verify(self, exercise: Exercise) -> None:
-        H = _smatrix(exercise.params["H"])
+        # the library's decomposition is unique (s > 0, K upper triangular with K11 > 0, det K = 1)
+        d = decompose(_smatrix(exercise.params["H"]))
         s = sympy.Rational(str(exercise.parts[0].answer.value))
         R = _smatrix(exercise.parts[1].answer.value)
         K = _smatrix(exercise.parts[2].answer.value)
-        check(s > 0 and R.T * R == sympy.eye(2) and R.det() == 1, "R is no rotation or s <= 0")
-        check(K[1, 0] == 0 and K.det() == 1 and K[0, 0] > 0, "K is not upper triangular with det 1")
-        w = H[2, 2]
-        check(w != 0, "v = 0")
-        t = H[:2, 2] / w
-        v = H[2, :2]
-        HS = sympy.Matrix(sympy.BlockMatrix([[s * R, t], [sympy.zeros(1, 2), sympy.ones(1, 1)]]))
-        HA = sympy.diag(K, 1)
-        HP = sympy.Matrix(sympy.BlockMatrix([[sympy.eye(2), sympy.zeros(2, 1)], [v, sympy.Matrix([[w]])]]))
-        check(HS * HA * HP == H, "H_S H_A H_P differs from H")
+        check(d.s == s, f"the scale is {d.s}, not {s}")
+        check(d.R == R and d.K == K, "R or K differs from the decomposition of H")
