@@ -53,6 +53,7 @@ from typing import Any
 import sympy
 from sympy import Expr, ImmutableMatrix, Integer
 
+from . import ring
 from .errors import (
     CoincidentPointsError,
     CollinearPointsError,
@@ -94,7 +95,8 @@ _POSITIONS: tuple[tuple[int, int], ...] = ((0, 1), (0, 2), (0, 3), (1, 2), (3, 1
 
 def _wedge(u: Sequence[Expr], v: Sequence[Expr]) -> tuple[Expr, ...]:
     """The six entries ``u_i v_j − v_i u_j`` of ``u vᵀ − v uᵀ``, in the order (12, 13, 14, 23, 42, 34)."""
-    return tuple(sympy.expand(u[i] * v[j] - v[i] * u[j]) for i, j in _POSITIONS)
+    w = ring.wedge(u, v)
+    return tuple(sympy.expand(w[i][j]) for i, j in _POSITIONS)
 
 
 def _matrix(coords: Sequence[Expr]) -> ImmutableMatrix:

@@ -124,3 +124,39 @@ def test_numeric_and_vision_modules_load_without_sympy(package: str) -> None:
             "print(sorted(m for m in ('sympy', 'cv2', 'matplotlib') if m in sys.modules))\n")
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
     assert out.stdout.strip() == "[]"
+
+
+# -- one exact kit ----------------------------------------------------------------------------------------
+
+# Functions of the core with the name of a helper of pgsym.ring that are not thin wrappers over it, and why.
+NOT_A_COPY = {
+    ("pgsym/matrices.py", "adjugate"): "the adjugate of a SymPy matrix of any size, by SymPy's Bareiss method",
+    ("pgsym/space.py", "plane_through"): "the plane through three Point3 objects, by space.triple_cross (ring.det)",
+}
+
+
+def _kit_names() -> set[str]:
+    from pgsym import ring
+
+    return set(ring.__all__)
+
+
+def test_no_helper_of_the_exact_kit_is_written_twice() -> None:
+    # a module-level function named like a helper of pgsym.ring (``det``, ``_det3``, ``_cross``…) outside it
+    # must delegate to it; float kernels on arrays (numeric, vision) are a different thing
+    kit = _kit_names()
+    copies = []
+    for path in SOURCES:
+        rel = str(path.relative_to(ROOT.parent))
+        if path == ROOT / "ring.py" or {"numeric", "vision"} & set(path.parts):
+            continue
+        tree = ast.parse(path.read_text(encoding="utf-8"))
+        for node in tree.body:
+            if not isinstance(node, ast.FunctionDef):
+                continue
+            base = node.name.lstrip("_").rstrip("0123456789")
+            if base not in kit or (rel, node.name) in NOT_A_COPY:
+                continue
+            if "ring." not in ast.unparse(node):
+                copies.append(f"{rel}:{node.lineno} {node.name}")
+    assert not copies, f"helpers of pgsym.ring written again instead of used: {copies}"

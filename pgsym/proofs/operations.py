@@ -28,6 +28,7 @@ from sympy import Matrix
 from .. import conics, plucker, projective_line, projective_plane, space
 from .. import ring as alg
 from ..exact import is_zero
+from ..homogeneous import HomogeneousVector
 from ..kinds import object_classes
 
 __all__ = ["KINDS", "OPERATIONS", "CoreDegenerate", "Operation", "constructions", "flat", "operation"]
@@ -39,7 +40,8 @@ _MATRIX_FORM = ("line3",)
 #: kind of object -> number of homogeneous coordinates (None for matrices, scalars and ratios): the kinds of
 #: pgsym's classes, plus the kinds that exist only in proofs (matrix, scalar, ratio)
 KINDS: dict[str, int | None] = {
-    **{kind: (None if kind in _MATRIX_FORM else getattr(cls, "size", None)) for kind, cls in object_classes().items()},
+    # vectors (points, lines, planes, Plücker lines) have ``size`` coordinates; forms and maps are matrices
+    **{kind: (cls.size if issubclass(cls, HomogeneousVector) else None) for kind, cls in object_classes().items()},
     "matrix": None,
     "scalar": None,
     "ratio": None,
