@@ -190,14 +190,44 @@ def tuple_latex(values: Any) -> str:
 
 
 @dataclass(frozen=True)
+class Mistake:
+    """A common wrong answer of one part: a class ``code`` (see :data:`pgsym.exercises.mistakes.MISTAKE_CLASSES`,
+    or a template's own), the feedback ``message`` and the wrong ``answer``.
+
+    The kind of ``answer`` decides the comparison, as in grading: a ``projective`` (or ``matrix``)
+    candidate for an exact key stands for every nonzero multiple of it (an answer right only up to a
+    scale that is not allowed).
+
+    >>> m = Mistake("sign", "a sign lost in coordinate 2", Answer.projective([1, 2, 0]))
+    >>> Mistake.from_json(m.to_json()) == m
+    True
+    """
+
+    code: str
+    message: str
+    answer: Answer
+
+    def to_json(self) -> dict[str, Any]:
+        """A JSON-ready dict (stored in the manifest with the key)."""
+        return {"code": self.code, "message": self.message, **self.answer.to_json()}
+
+    @classmethod
+    def from_json(cls, data: dict[str, Any]) -> Mistake:
+        """Inverse of :meth:`to_json`."""
+        return cls(str(data["code"]), str(data["message"]), Answer.from_json(data))
+
+
+@dataclass(frozen=True)
 class Part:
     """One thing to answer: a label such as ``"3"`` or ``"3b"``, a prompt, the answer and, for a
-    multiple-choice part, the options (in order A, B, C, …)."""
+    multiple-choice part, the options (in order A, B, C, …); ``mistakes`` are the common wrong
+    answers that ``pgsym check`` recognises."""
 
     label: str
     prompt: str
     answer: Answer
     choices: tuple[str, ...] = ()
+    mistakes: tuple[Mistake, ...] = ()
 
 
 @dataclass(frozen=True)
@@ -222,7 +252,9 @@ class Exercise:
             "level": self.level,
             "seed": self.seed,
             "params": self.params,
-            "parts": [{"label": p.label, "choices": list(p.choices), **p.answer.to_json()} for p in self.parts],
+            "parts": [{"label": p.label, "choices": list(p.choices), **p.answer.to_json(),
+                       **({"mistakes": [m.to_json() for m in p.mistakes]} if p.mistakes else {})}
+                      for p in self.parts],
         }
 
 
