@@ -9,7 +9,7 @@ using the same equivalence as grading (:func:`recognise`), so it needs no templa
 >>> key = Answer.projective([1, -2, 0])  # an ideal point
 >>> found = admissible(key, default_mistakes(key))
 >>> [(m.code, m.answer.display()) for m in found]
-[('sign', '(1, 2, 0)'), ('ideal-as-finite', '(1, -2, 1)')]
+[('sign', '(1, 2, 0)'), ('ideal-as-finite', '(1, -2, 1)'), ('ideal-as-finite', '(1, -2, -1)')]
 >>> recognise(key, found, (Fraction(2), Fraction(-4), Fraction(2))).code
 'ideal-as-finite'
 >>> recognise(key, found, (Fraction(-1), Fraction(2), Fraction(0))) is None  # right: never a mistake
@@ -70,7 +70,9 @@ def default_mistakes(key: Answer) -> list[Mistake]:
                 flipped = [-w if j == i else w for j, w in enumerate(values)]
                 out.append(mistake("sign", make(flipped), f"a sign lost in coordinate {i + 1}"))
         if key.kind == "projective" and len(values) in (3, 4) and values[-1] == 0 and any(values[:-1]):
-            out.append(mistake("ideal-as-finite", Answer.projective([*values[:-1], 1])))
+            # the direction, of either sign, with a 1 appended: (v, 1) and (-v, 1) ~ (v, -1)
+            for last in (1, -1):
+                out.append(mistake("ideal-as-finite", Answer.projective([*values[:-1], last])))
         if key.kind == "vector" and len(values) >= 2 and any(values):
             # a projective candidate stands for every multiple; the key itself is graded right first
             out.append(mistake("scale", Answer.projective(values), "a multiple of the right vector; here the "
