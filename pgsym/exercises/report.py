@@ -128,7 +128,7 @@ def _figures(data: dict[str, Any]) -> tuple[str, str]:
     from matplotlib.figure import Figure  # no pyplot: no GUI backend, no global state
 
     with matplotlib.rc_context({"text.parse_math": False, "font.size": 9}):
-        hist = Figure(figsize=(6.4, 2.8))
+        hist = Figure(figsize=(5.2, 2.6))
         ax = hist.add_subplot()
         counts = data["histogram"]
         ax.bar(range(len(counts)), counts, color="#3465a4", width=0.8)
@@ -139,7 +139,7 @@ def _figures(data: dict[str, Any]) -> tuple[str, str]:
         ax.yaxis.get_major_locator().set_params(integer=True)
         ax.spines[["top", "right"]].set_visible(False)
         questions = data["questions"]
-        bars = Figure(figsize=(6.4, 2.8))
+        bars = Figure(figsize=(5.2, 2.6))
         bx = bars.add_subplot()
         bx.bar(range(len(questions)), [q["percent"] for q in questions], color="#4e9a06", width=0.8)
         bx.set_xticks(range(len(questions)), [one_line(q["question"])[:12] for q in questions],
@@ -194,12 +194,7 @@ def report_html(data: dict[str, Any], scores_svg: str, questions_svg: str, title
              f'<p id="summary">{s["students"]} students, {s["questions"]} questions; mean score '
              f'{s["mean_percent"]} %, median {s["median_percent"]} %; {s["wrong"]} wrong answers, '
              f'{s["recognised"]} of them a recognised mistake.</p>',
-             f'<div class="plots">{_inline(scores_svg)}{_inline(questions_svg)}</div>',
-             "<h2>Questions</h2>",
-             _table(["question", "topic", "students", "answered", "right", "% right"],
-                    [f'<tr><td>{_e(q["question"])}</td><td>{_e(q["topic"])}</td><td class="num">{q["students"]}</td>'
-                     f'<td class="num">{q["answered"]}</td><td class="num">{q["right"]}</td>'
-                     f'<td class="num">{q["percent"]}</td></tr>' for q in data["questions"]], "questions")]
+             f'<div class="plots">{_inline(scores_svg)}{_inline(questions_svg)}</div>']
     parts.append("<h2>Mistakes recognised</h2>")
     parts.append(_table(["mistake", "what it means", "count", "questions"],
                         [f'<tr><td class="mistake">{_e(m["mistake"])}</td><td>{_e(m["description"])}</td>'
@@ -212,6 +207,12 @@ def report_html(data: dict[str, Any], scores_svg: str, questions_svg: str, title
                          f'<td class="num">{w["count"]}</td><td class="mistake">{_e(w["mistake"])}</td>'
                          f'<td>{_e(w["feedback"])}</td></tr>' for w in data["frequent_wrong"]], "frequent")
                  if data["frequent_wrong"] else "<p>None.</p>")
+    parts.append("<h2>Questions</h2>")
+    parts.append(_table(["question", "topic", "students", "answered", "right", "% right"],
+                        [f'<tr><td>{_e(q["question"])}</td><td>{_e(q["topic"])}</td>'
+                         f'<td class="num">{q["students"]}</td><td class="num">{q["answered"]}</td>'
+                         f'<td class="num">{q["right"]}</td><td class="num">{q["percent"]}</td></tr>'
+                         for q in data["questions"]], "questions"))
     parts.append("<h2>Students</h2>")
     rows = []
     for st in data["students"]:
