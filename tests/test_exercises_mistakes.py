@@ -18,6 +18,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from pgsym.exercises.answers import grade, matches, read_as
+from pgsym.exercises.errors import ManifestError
 from pgsym.exercises.grading import grade_rows
 from pgsym.exercises.mistakes import admissible, default_mistakes, mistake, recognise
 from pgsym.exercises.model import Answer, Exercise
@@ -277,3 +278,26 @@ def test_the_manifest_stores_the_mistakes_and_an_old_one_still_grades(tmp_path):
     data = load_manifest_data(tmp_path / "old.json")
     report = grade_rows(data.keys, [("s1", "1", finite), ("s1", "2", data.keys["s1"]["2"].display())], data.mistakes)
     assert [(r.correct, r.mistake) for r in report["s1"]] == [(False, ""), (True, "")]
+
+
+def test_a_damaged_or_hostile_mistake_list_costs_only_its_feedback(tmp_path):
+    topics = parse_topics(["meet", "homography4"])
+    sheets = build_sheets(topics, [("s1", "")], 2)
+    data = json.loads(manifest_json(sheets, topics))
+    point, matrix = (ex["parts"][0] for ex in data["students"][0]["exercises"])
+    hostile = "<b>\x1b[31m" + "x" * 1000
+    point["mistakes"] = [{"code": "dual", "message": hostile, "kind": "projective", "value": ["1", "0"]},  # 2 ≠ 3
+                         {"code": "x", "message": "m", "kind": "scalar", "value": "1"},  # wrong kind
+                         {"code": "sign", "message": hostile, "kind": "projective", "value": ["0", "0", "1"]}]
+    matrix["mistakes"] = [{"code": "ragged", "message": "m", "kind": "matrix", "value": [["1"], ["1", "2"], []]}]
+    (tmp_path / "m.json").write_text(json.dumps(data))
+    loaded = load_manifest_data(tmp_path / "m.json")
+    report = grade_rows(loaded.keys, [("s1", "1", "(0, 0, 5)"), ("s1", "2", "[[1, 0, 0], [0, 1, 0], [0, 0, 1]]")],
+                        loaded.mistakes)
+    first, second = report["s1"]
+    assert (first.mistake, len(first.feedback)) == ("sign", 300) and "\x1b" not in first.feedback
+    assert not second.correct and second.mistake == ""
+    (tmp_path / "bad.json").write_text(json.dumps(data).replace('"kind": "scalar", "value": "1"',
+                                                                 '"kind": "scalar", "value": "1/0"'))
+    with pytest.raises(ManifestError, match="damaged"):
+        load_manifest_data(tmp_path / "bad.json")

@@ -97,7 +97,8 @@ def _shape(answer: Answer) -> tuple[int, ...]:
     if answer.kind in ("projective", "vector"):
         return (len(answer.value),)
     if answer.kind in ("matrix", "matrix_exact"):
-        return (len(answer.value), len(answer.value[0]))
+        # every row counts: a ragged matrix (from a damaged manifest) fits no key
+        return (len(answer.value), *sorted({len(row) for row in answer.value}))
     return ()
 
 
