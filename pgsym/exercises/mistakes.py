@@ -63,7 +63,7 @@ def default_mistakes(key: Answer) -> list[Mistake]:
     """
     out: list[Mistake] = []
     if key.kind in ("projective", "vector"):
-        values = [Fraction(v) for v in key.value]
+        values = list(key.value)  # integers for a projective key: canonical forms take the fast path
         make = Answer.projective if key.kind == "projective" else Answer.vector
         for i, v in enumerate(values):
             if v != 0:
