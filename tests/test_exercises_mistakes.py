@@ -301,3 +301,36 @@ def test_a_damaged_or_hostile_mistake_list_costs_only_its_feedback(tmp_path):
                                                                  '"kind": "scalar", "value": "1/0"'))
     with pytest.raises(ManifestError, match="damaged"):
         load_manifest_data(tmp_path / "bad.json")
+
+
+def test_an_instructor_template_adds_its_own_mistake_class(tmp_path):
+    from pgsym.exercises.template import load_template_folder
+
+    (tmp_path / "t").mkdir()
+    (tmp_path / "t" / "midsum.py").write_text(
+        "from fractions import Fraction\n"
+        "from pgsym.exercises.mistakes import mistake\n"
+        "from pgsym.exercises.model import Answer\n"
+        "from pgsym.exercises.template import Draft, Template\n\n\n"
+        "class MidSum(Template):\n"
+        "    name = 'midsum-test'\n"
+        "    levels = (1,)\n\n"
+        "    def mistakes(self, exercise, index):\n"
+        "        p, q = exercise.params['p'], exercise.params['q']\n"
+        "        return [*super().mistakes(exercise, index),\n"
+        "                mistake('no-half', Answer.vector([p[0] + q[0], p[1] + q[1]]), 'p + q, not halved')]\n\n"
+        "    def build(self, rng, level):\n"
+        "        p, q = [rng.randint(1, 5), 2], [rng.randint(1, 5), 4]\n"
+        "        m = [Fraction(p[0] + q[0], 2), Fraction(3)]\n"
+        "        return Draft('p, q', [('midpoint?', Answer.vector(m), ())], [], {'p': p, 'q': q})\n\n"
+        "    def verify(self, exercise):\n"
+        "        pass\n")
+    assert load_template_folder(tmp_path / "t") == ["midsum-test"]
+    sheets = build_sheets(["midsum-test"], [("s1", "")], 4)
+    (tmp_path / "m.json").write_text(manifest_json(sheets, [("midsum-test", 1)]))
+    data = load_manifest_data(tmp_path / "m.json")  # no template needed from here on
+    p, q = sheets[0].exercises[0].params["p"], sheets[0].exercises[0].params["q"]
+    report = grade_rows(data.keys, [("s1", "1", typed([p[0] + q[0], 6]))], data.mistakes)
+    assert (report["s1"][0].mistake, report["s1"][0].feedback) == ("no-half", "p + q, not halved")
+    # p + q = 2 · (p + q)/2 is also a multiple of the answer: the concrete candidate is preferred
+    assert [m.code for m in data.mistakes["s1"]["1"]][-2:] == ["scale", "no-half"]

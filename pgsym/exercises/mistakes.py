@@ -142,10 +142,12 @@ def admissible(key: Answer, candidates: Iterable[Mistake]) -> list[Mistake]:
 
 def recognise(key: Answer, candidates: Sequence[Mistake], value: Any) -> Mistake | None:
     """The first candidate a value (already read as the key's kind) matches, or None; a right answer
-    is never a mistake. Candidates that do not fit the key (a damaged manifest) are skipped."""
+    is never a mistake. A concrete wrong answer is preferred to one standing for every multiple of the
+    key (it says more); candidates that do not fit the key (a damaged manifest) are skipped."""
     if matches(key, value):
         return None
-    for m in candidates:
+    concrete = [m for m in candidates if m.answer.kind == key.kind]
+    for m in [*concrete, *(m for m in candidates if m.answer.kind != key.kind)]:
         if m.answer.kind not in _COMPATIBLE.get(key.kind, ()) or _shape(m.answer) != _shape(key):
             continue
         try:
