@@ -202,3 +202,13 @@ def test_templates_list_and_help():
     assert result.returncode == 0 and "Examples:" in result.stdout and "--roster" in result.stdout
     assert "Examples:" in run_here("check", "--help").output
     assert "sheet" in run_here("--help").output
+
+
+def test_check_outputs_that_cannot_be_written_are_named_errors(made, tmp_path):
+    (tmp_path / "blocker").write_text("")
+    (tmp_path / "a.csv").write_text("id,1\ns1,1\n")
+    base = ["check", "--manifest", str(made / "out" / "manifest.json"), "--answers", str(tmp_path / "a.csv")]
+    for option in ("--out", "--canvas", "--report"):
+        result = run_here(*base, option, str(tmp_path / "blocker" / "x"))
+        assert result.exit_code == 1 and "OutputError: cannot write" in result.output, (option, result.output)
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["a.csv", "blocker"]  # nothing half-written
