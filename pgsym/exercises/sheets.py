@@ -21,6 +21,7 @@ from ..errors import PgsymError
 from ..limits import MAX_NAME_CHARS
 from ._text import one_line
 from .errors import ManifestError, RosterError, UnknownTopicError
+from .mistakes import MAX_MISTAKES
 from .model import Answer, Mistake, Sheet
 from .reading import csv_rows, load_json, read_user_text
 from .seeds import form_id, slot_keys, variant_seed
@@ -189,10 +190,13 @@ class ManifestData:
     topics: dict[str, str] = field(default_factory=dict)
 
 
-def _read_mistake(data: Any) -> Mistake:
+def _read_mistake(data: Any, lines: dict[str, str]) -> Mistake:
     m = Mistake.from_json(data)
-    # the message is shown to instructors in every output: one line, bounded
-    return Mistake(one_line(m.code)[:40], one_line(m.message)[:MAX_MESSAGE_CHARS], m.answer)
+    # the message is shown to instructors in every output: one line, bounded (cleaned once per distinct text)
+    for text in (m.code, m.message):
+        if text not in lines:
+            lines[text] = one_line(text)[:MAX_MESSAGE_CHARS]
+    return Mistake(lines[m.code][:40], lines[m.message], m.answer)
 
 
 def load_manifest_data(path: str | Path) -> ManifestData:
@@ -202,12 +206,14 @@ def load_manifest_data(path: str | Path) -> ManifestData:
     if not isinstance(data, dict) or data.get("format") != "pgsym-exercises":
         raise ManifestError(f"{str(p)!r} is not a pgsym exercise manifest (written by 'pgsym sheet')")
     out = ManifestData()
+    lines: dict[str, str] = {}
     try:
         for student in data["students"]:
             sid = str(student["id"])
             out.keys[sid] = {str(part["label"]): Answer.from_json(part)
                              for ex in student["exercises"] for part in ex["parts"]}
-            out.mistakes[sid] = {str(part["label"]): tuple(_read_mistake(m) for m in part.get("mistakes", ())[:50])
+            out.mistakes[sid] = {str(part["label"]): tuple(_read_mistake(m, lines)
+                                                           for m in part.get("mistakes", ())[:MAX_MISTAKES])
                                  for ex in student["exercises"] for part in ex["parts"]}
             out.names[sid] = one_line(str(student.get("name", "")))[:MAX_NAME_CHARS]
             for ex in student["exercises"]:
