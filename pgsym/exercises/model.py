@@ -34,6 +34,14 @@ KIND_HINTS = {
 }
 
 
+def _int(value: Any) -> int:
+    """An integer entry of a manifest: plain ``int`` for the usual digits (fast), else through Fraction."""
+    try:
+        return int(value)
+    except (ValueError, TypeError):
+        return int(Fraction(value))
+
+
 def _fraction_text(value: Fraction) -> str:
     return str(value.numerator) if value.denominator == 1 else f"{value.numerator}/{value.denominator}"
 
@@ -147,7 +155,7 @@ class Answer:
         if kind not in KINDS:
             raise ValueError(f"unknown answer kind {kind!r}; expected one of {', '.join(KINDS)}")
         if kind == "projective":
-            return cls(kind, tuple(int(Fraction(v)) for v in value))
+            return cls(kind, tuple(_int(v) for v in value))
         if kind == "vector":
             return cls(kind, tuple(Fraction(v) for v in value))
         if kind == "scalar":
@@ -155,7 +163,7 @@ class Answer:
         if kind == "integer":
             return cls(kind, int(Fraction(value)))
         if kind == "matrix":
-            return cls(kind, tuple(tuple(int(Fraction(v)) for v in row) for row in value))
+            return cls(kind, tuple(tuple(_int(v) for v in row) for row in value))
         if kind == "matrix_exact":
             return cls(kind, tuple(tuple(Fraction(v) for v in row) for row in value))
         return cls(kind, str(value))
