@@ -221,7 +221,9 @@ def report_html(data: dict[str, Any], scores_svg: str, questions_svg: str, title
             f'<li>[{_e(a["question"])}] {_code(a["answer"])} <span class="wrong">{_e(a["reason"])}</span>'
             + (f' — <span class="mistake">{_e(a["feedback"])}</span>' if a["feedback"] else "") + "</li>"
             for a in wrong)
-        detail = (f"<details><summary>{len(wrong)} not right</summary><ul>{items}</ul></details>" if wrong else "")
+        codes = ", ".join(dict.fromkeys(a["mistake"] for a in wrong if a["mistake"]))
+        head = f"{len(wrong)} not right" + (f' — <span class="mistake">{_e(codes)}</span>' if codes else "")
+        detail = f"<details><summary>{head}</summary><ul>{items}</ul></details>" if wrong else ""
         rows.append(f'<tr><td>{_e(st["id"])}</td><td>{_e(st["name"])}</td><td class="num">{st["right"]}</td>'
                     f'<td class="num">{st["questions"]}</td><td class="num">{st["percent"]}</td><td>{detail}</td></tr>')
     parts.append(_table(["id", "name", "right", "questions", "%", "feedback"], rows, "students"))
