@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import csv
+import io
 import json
 import os
 import shutil
@@ -72,7 +74,26 @@ def test_check_grades_right_scaled_wrong_and_hostile(made):
     assert "cannot read the answer: unexpected character '_'" in result.stderr
     assert "division by zero" in result.stderr and "more than 40 digits" in result.stderr
     assert not (made / "HACKED").exists()
-    assert (made / "grades.csv").read_text().startswith("student,question,answer,correct,reason")
+    assert (made / "grades.csv").read_text().startswith("student,question,answer,correct,reason,mistake,feedback")
+
+
+def test_check_names_the_mistake_per_student(made, tmp_path):
+    manifest = json.loads((made / "out" / "manifest.json").read_text())
+    s2 = {p["label"]: p for e in manifest["students"][1]["exercises"] for p in e["parts"]}
+    direction = [int(v) for v in s2["2"]["value"]]  # question 2 (ideal:2) asks for an ideal point (a, b, 0)
+    assert direction[2] == 0
+    finite = f"({direction[0]}, {direction[1]}, 1)"  # the direction read as a finite point
+    (tmp_path / "a.csv").write_text(f'id,question,answer\ns2,2,"{finite}"\ns2,4b,9\n')
+    result = run("check", "--manifest", str(made / "out" / "manifest.json"), "--answers", str(tmp_path / "a.csv"),
+                 "--out", str(tmp_path / "g.csv"), "--canvas", str(tmp_path / "canvas.csv"), "--details")
+    assert result.returncode == 0, result.stderr
+    graded = {(r["student"], r["question"]): r for r in csv.DictReader(io.StringIO((tmp_path / "g.csv").read_text()))}
+    assert graded[("s2", "2")]["mistake"] == "ideal-as-finite"
+    assert "ideal point given as a finite one" in graded[("s2", "2")]["feedback"]
+    assert "s2 [2]: wrong (an ideal point given as a finite one" in result.stderr
+    assert graded[("s2", "4b")]["correct"] == "0" and graded[("s2", "4b")]["mistake"] == ""  # wrong, no known mistake
+    assert (tmp_path / "canvas.csv").read_text().splitlines()[:2] == [
+        "Student,ID,SIS User ID,SIS Login ID,Section,pgsym exercises", "Points Possible,,,,,5"]
 
 
 def test_same_seed_same_bytes_other_seed_differs(tmp_path):
@@ -181,3 +202,13 @@ def test_templates_list_and_help():
     assert result.returncode == 0 and "Examples:" in result.stdout and "--roster" in result.stdout
     assert "Examples:" in run_here("check", "--help").output
     assert "sheet" in run_here("--help").output
+
+
+def test_check_outputs_that_cannot_be_written_are_named_errors(made, tmp_path):
+    (tmp_path / "blocker").write_text("")
+    (tmp_path / "a.csv").write_text("id,1\ns1,1\n")
+    base = ["check", "--manifest", str(made / "out" / "manifest.json"), "--answers", str(tmp_path / "a.csv")]
+    for option in ("--out", "--canvas", "--report"):
+        result = run_here(*base, option, str(tmp_path / "blocker" / "x"))
+        assert result.exit_code == 1 and "OutputError: cannot write" in result.output, (option, result.output)
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["a.csv", "blocker"]  # nothing half-written

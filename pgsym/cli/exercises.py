@@ -39,6 +39,8 @@ _EPILOG_CHECK = f"""\b
 Examples:
   pgsym check --manifest week4/manifest.json --answers answers.csv
   pgsym check --manifest week4/manifest.json --answers answers.csv --out grades.csv
+  pgsym check --manifest week4/manifest.json --answers answers.csv --report week4-report \\
+              --canvas canvas.csv --canvas-title "Week 4" --canvas-id 1234
 
 \b
 answers.csv is either wide (header: id,1,2,3a,3b,...; one row per student) or long
@@ -48,8 +50,14 @@ The file may hold at most {MAX_FILE_BYTES // 1_000_000} MB, one answer at most {
 An answer that cannot be read (too long, not a number, vector or matrix) or a question
 answered twice costs only that answer: it counts as wrong, is listed on stderr and in
 --out, and all others are graded.
-Cells of --out (and of the summary) that a spreadsheet would run as a formula (starting
-with = + - @, tab or carriage return) get a leading ' as OWASP recommends.
+A wrong answer that is a common mistake (a sign lost, the dual object, a matrix transposed
+or inverted, H applied to a line, an ideal point given as finite, a wrong scale, ...) is
+named in --out, --report and with --details; the manifest holds the candidates.
+--report writes index.html (no script, no network), report.json and SVG plots into a new
+folder; --canvas writes Canvas's gradebook import CSV (Student, ID, SIS User ID, SIS Login
+ID, Section, "Title (id)") with the number of right answers as the score.
+Cells of --out, --canvas (and of the summary) that a spreadsheet would run as a formula
+(starting with = + - @, tab or carriage return) get a leading ' as OWASP recommends.
 
 \b
 Exit status:
@@ -140,20 +148,29 @@ def sheet_command(topics: str, count: int, seed: int, roster: str | None, format
 @click.option("--manifest", required=True, type=click.Path(dir_okay=False),
               help="manifest.json written by 'pgsym sheet'.")
 @click.option("--answers", required=True, type=click.Path(dir_okay=False), help="CSV of typed answers.")
-@click.option("--out", type=click.Path(dir_okay=False), help="Also write every graded answer to this CSV.")
+@click.option("--out", type=click.Path(dir_okay=False),
+              help="Also write every graded answer, with the mistake recognised and its feedback, to this CSV.")
+@click.option("--report", "report_dir", type=click.Path(file_okay=False),
+              help="Write a grade report (index.html, report.json, SVG plots) into this new or empty folder.")
+@click.option("--canvas", type=click.Path(dir_okay=False), help="Write a Canvas gradebook CSV to import.")
+@click.option("--canvas-title", default="pgsym exercises", show_default=True,
+              help="Assignment title of the Canvas column.")
+@click.option("--canvas-id", type=click.IntRange(1), help="Canvas id of an existing assignment (column 'Title (id)').")
 @click.option("--details", is_flag=True, help="Print every wrong or unreadable answer.")
 @click.pass_context
-def check_command(ctx: click.Context, manifest: str, answers: str, out: str | None, details: bool) -> None:
-    """Grade the answers of every student against the manifest."""
+def check_command(ctx: click.Context, manifest: str, answers: str, out: str | None, report_dir: str | None,
+                  canvas: str | None, canvas_title: str, canvas_id: int | None, details: bool) -> None:
+    """Grade the answers of every student against the manifest, naming the common mistakes."""
+    from ..atomic import Terminated, write_new_folder
     from ..csv_cells import csv_text
     from ..exercises._text import clean
     from ..exercises.grading import grade_rows, read_answer_file, results_csv, summary
-    from ..exercises.sheets import load_manifest
+    from ..exercises.sheets import load_manifest_data
 
     try:
-        keys = load_manifest(manifest)
+        data = load_manifest_data(manifest)
         rows, problems = read_answer_file(answers)
-        report = grade_rows(keys, rows)
+        report = grade_rows(data.keys, rows, data.mistakes)
     except PgsymError as err:
         raise fail(err) from None
     click.echo(csv_text([["student", "right", "questions"], *summary(report)]), nl=False)
@@ -161,41 +178,48 @@ def check_command(ctx: click.Context, manifest: str, answers: str, out: str | No
     for rs in report.values():
         for r in rs:
             if r.reason and (details or r.unreadable or "manifest" in r.reason):
-                click.echo(clean(f"  {r.student} [{r.label}]: {r.reason}")[:1000], err=True)
+                text = f"  {r.student} [{r.label}]: {r.reason}" + (f" ({r.feedback})" if r.feedback else "")
+                click.echo(clean(text)[:1000], err=True)
     for message in problems:
         click.echo(clean(f"  {message}")[:1000], err=True)
     if unreadable or problems:
         click.echo(f"{len(unreadable)} answer(s) could not be read or were given twice, and {len(problems)} line(s) "
                    "of the answers file were skipped (see above); every other answer was graded.", err=True)
-    if out:
-        _write_file_atomically(Path(out), results_csv(report, problems))
+    try:
+        if report_dir:
+            from ..exercises.report import report_data, write_report
+
+            numbers = report_data(report, data.names, data.topics, problems)
+            title = f"Grade report: {Path(manifest).resolve().parent.name or 'exercises'}"
+            write_new_folder(report_dir, lambda tmp: write_report(tmp, numbers, title))
+        if canvas:
+            from ..exercises.canvas import canvas_csv
+
+            _write_text(Path(canvas), canvas_csv(report, data.names, canvas_title, canvas_id))
+        if out:
+            _write_text(Path(out), results_csv(report, problems))
+    except PgsymError as err:
+        raise fail(err) from None
+    except Terminated:
+        click.echo("stopped by SIGTERM; the file being written was left out", err=True)
+        sys.exit(143)
     if unreadable or problems:
         ctx.exit(EXIT_UNREADABLE)
 
 
-def _write_file_atomically(path: Path, text: str) -> None:
-    """Write ``path`` through a temporary file in its folder, so it is either complete or unchanged."""
+def _write_text(path: Path, text: str) -> None:
+    """Write ``path`` complete or not at all (:func:`pgsym.atomic.replace_file`), readable as the umask allows."""
     import os
-    import tempfile
 
-    try:
-        fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".partial", dir=path.parent if str(path.parent)
-                                   else ".")
-    except OSError as err:
-        raise click.ClickException(f"cannot write {str(path)!r}: {err.strerror or err}") from None
-    try:
-        with os.fdopen(fd, "w", encoding="utf-8", newline="") as stream:
-            stream.write(text)
+    from ..atomic import replace_file
+
+    def fill(tmp: Path) -> None:
+        tmp.write_text(text, encoding="utf-8", newline="")
         mask = os.umask(0)
         os.umask(mask)
-        os.chmod(tmp, 0o666 & ~mask)  # mkstemp makes the file private; the result should not be
-        os.replace(tmp, path)
-    except OSError as err:
-        Path(tmp).unlink(missing_ok=True)
-        raise click.ClickException(f"cannot write {str(path)!r}: {err.strerror or err}") from None
-    except BaseException:
-        Path(tmp).unlink(missing_ok=True)
-        raise
+        tmp.chmod(0o666 & ~mask)  # the temporary file is private; the result should not be
+
+    replace_file(path, fill)
 
 
 @click.group("templates")

@@ -27,7 +27,7 @@ from fractions import Fraction
 from typing import Any
 
 from ..limits import MAX_ANSWER_CHARS, MAX_DIGITS
-from ..ring import primitive_integers as canonical_ints
+from ..ring import primitive_integers
 from .errors import UnparsableAnswerError
 from .model import Answer
 
@@ -247,8 +247,8 @@ def matches(expected: Answer, value: Any) -> bool:
         flat = [x for row in value for x in row] if expected.kind == "matrix" else list(value)
         if all(x == 0 for x in flat):
             return False
-        key = expected.flat()
-        return canonical_ints(flat) == tuple(int(k) for k in key)
+        key = expected.value if expected.kind == "projective" else tuple(k for row in expected.value for k in row)
+        return primitive_integers(flat) == key  # the key is stored in canonical form
     if expected.kind in ("vector", "matrix_exact"):
         flat = [x for row in value for x in row] if expected.kind == "matrix_exact" else list(value)
         return flat == expected.flat()

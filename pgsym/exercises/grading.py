@@ -11,20 +11,29 @@ wrong and are reported with the reason.
 >>> report = grade_rows(keys, [("s1", "1", "(-2, 4, 0)"), ("s1", "2", "1.5")])
 >>> [(r.label, r.correct) for r in report["s1"]]
 [('1', True), ('2', False)]
+
+With the mistakes stored in the manifest, a wrong answer that is a known mistake says which:
+
+>>> from pgsym.exercises.mistakes import admissible, default_mistakes
+>>> mistakes = {"s1": {"1": admissible(keys["s1"]["1"], default_mistakes(keys["s1"]["1"]))}}
+>>> r = grade_rows(keys, [("s1", "1", "(1, -2, 1)")], mistakes)["s1"][0]
+>>> r.correct, r.mistake, r.feedback
+(False, 'ideal-as-finite', 'an ideal point given as a finite one (last coordinate 1 instead of 0)')
 """
 
 from __future__ import annotations
 
 import io
-from collections.abc import Iterable
+from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
 from ..csv_cells import write_csv
 from ..limits import MAX_ANSWER_CHARS, MAX_FILE_BYTES
-from .answers import grade
+from .answers import matches, read_as
 from .errors import AnswersFileError, UnparsableAnswerError
-from .model import Answer
+from .mistakes import recognise
+from .model import Answer, Mistake
 from .reading import csv_rows, read_user_text
 
 MAX_CSV_BYTES = MAX_FILE_BYTES
@@ -40,6 +49,8 @@ class Result:
 
     ``unreadable`` marks answers that were not graded as written: text that cannot be read as an
     answer (too long, not a number, vector or matrix) and questions answered more than once.
+    ``mistake`` is the class of a recognised wrong answer (see :mod:`pgsym.exercises.mistakes`) and
+    ``feedback`` says it in words; both are empty otherwise.
     """
 
     student: str
@@ -48,6 +59,8 @@ class Result:
     correct: bool
     reason: str
     unreadable: bool = False
+    mistake: str = ""
+    feedback: str = ""
 
 
 def read_answer_file(path: str | Path) -> tuple[list[tuple[str, str, str]], list[str]]:
@@ -95,8 +108,12 @@ def _shown(text: str) -> str:
     return text if len(text) <= _SHOWN else text[:_SHOWN] + "…"
 
 
-def grade_rows(keys: dict[str, dict[str, Answer]], rows: Iterable[tuple[str, str, str]]) -> dict[str, list[Result]]:
+def grade_rows(keys: dict[str, dict[str, Answer]], rows: Iterable[tuple[str, str, str]],
+               mistakes: Mapping[str, Mapping[str, Sequence[Mistake]]] | None = None) -> dict[str, list[Result]]:
     """Grade (student, label, text) triples against the keys; students without a row get 'no answer'.
+
+    ``mistakes`` (student → label → candidates, as stored in the manifest) names the class of a
+    wrong answer that is a known mistake; a right answer is never one.
 
     Every answer is graded on its own: an answer that cannot be read (or is longer than
     :data:`pgsym.limits.MAX_ANSWER_CHARS`) is marked ``unreadable`` and the others are still graded;
@@ -128,8 +145,13 @@ def grade_rows(keys: dict[str, dict[str, Answer]], rows: Iterable[tuple[str, str
                                       f"at most {MAX_ANSWER_CHARS} are read", unreadable=True))
             else:
                 try:
-                    ok = grade(expected, texts[0])
-                    results.append(Result(student, label, texts[0], ok, "" if ok else "wrong"))
+                    value = read_as(expected, texts[0])
+                    ok = matches(expected, value)
+                    found = None if ok or not mistakes else recognise(
+                        expected, mistakes.get(student, {}).get(label, ()), value)
+                    results.append(Result(student, label, texts[0], ok, "" if ok else "wrong",
+                                          mistake=found.code if found else "",
+                                          feedback=found.message if found else ""))
                 except UnparsableAnswerError as err:
                     results.append(Result(student, label, texts[0], False, str(err), unreadable=True))
         for label in sorted(set(typed) - set(answers)):
@@ -152,18 +174,20 @@ def summary(report: dict[str, list[Result]]) -> list[tuple[str, int, int]]:
 
 
 def results_csv(report: dict[str, list[Result]], problems: Iterable[str] = ()) -> str:
-    """Every graded answer as CSV: student, question, answer, correct, reason (then one row per line of
-    the answers file that could not be read). Cells a spreadsheet would run as a formula are
-    neutralised (:func:`pgsym.csv_cells.safe_cell`).
+    """Every graded answer as CSV: student, question, answer, correct, reason, mistake (its class) and
+    feedback (then one row per line of the answers file that could not be read). Cells a spreadsheet
+    would run as a formula are neutralised (:func:`pgsym.csv_cells.safe_cell`).
 
-    >>> print(results_csv({"=1+1": [Result("=1+1", "1", "-2+3", False, "wrong")]}), end="")
-    student,question,answer,correct,reason
-    '=1+1,1,'-2+3,0,wrong
+    >>> print(results_csv({"=1+1": [Result("=1+1", "1", "-2+3", False, "wrong", False, "sign", "the sign is wrong")]}),
+    ...       end="")
+    student,question,answer,correct,reason,mistake,feedback
+    '=1+1,1,'-2+3,0,wrong,sign,the sign is wrong
     """
-    rows: list[list[object]] = [["student", "question", "answer", "correct", "reason"]]
+    rows: list[list[object]] = [["student", "question", "answer", "correct", "reason", "mistake", "feedback"]]
     for results in report.values():
-        rows += [[r.student, r.label, _shown(r.given), int(r.correct), r.reason] for r in results]
-    rows += [["", "", "", 0, message] for message in problems]
+        rows += [[r.student, r.label, _shown(r.given), int(r.correct), r.reason, r.mistake, r.feedback]
+                 for r in results]
+    rows += [["", "", "", 0, message, "", ""] for message in problems]
     buf = io.StringIO()
     write_csv(buf, rows)
     return buf.getvalue()

@@ -17,8 +17,7 @@ from dataclasses import dataclass, field
 from fractions import Fraction
 from typing import Any
 
-from ..ring import primitive_integer_matrix as canonical_matrix
-from ..ring import primitive_integers as canonical_ints
+from ..ring import primitive_integer_matrix, primitive_integers
 
 #: Answer kinds. ``projective`` and ``matrix`` compare up to a nonzero scale; the others exactly.
 KINDS = ("projective", "vector", "scalar", "integer", "matrix", "matrix_exact", "choice")
@@ -33,6 +32,14 @@ KIND_HINTS = {
     "matrix_exact": "a matrix such as [[1, 1/2], [0, 1]]",
     "choice": "one letter",
 }
+
+
+def _int(value: Any) -> int:
+    """An integer entry of a manifest: plain ``int`` for the usual digits (fast), else through Fraction."""
+    try:
+        return int(value)
+    except (ValueError, TypeError):
+        return int(Fraction(value))
 
 
 def _fraction_text(value: Fraction) -> str:
@@ -64,7 +71,7 @@ class Answer:
     @classmethod
     def projective(cls, values: Any) -> Answer:
         """A homogeneous vector, compared up to a nonzero scale."""
-        return cls("projective", canonical_ints(values))
+        return cls("projective", primitive_integers(values))
 
     @classmethod
     def vector(cls, values: Any) -> Answer:
@@ -84,7 +91,7 @@ class Answer:
     @classmethod
     def matrix(cls, rows: Any) -> Answer:
         """A matrix compared up to a nonzero scale."""
-        return cls("matrix", canonical_matrix(rows))
+        return cls("matrix", primitive_integer_matrix(rows))
 
     @classmethod
     def matrix_exact(cls, rows: Any) -> Answer:
@@ -148,7 +155,7 @@ class Answer:
         if kind not in KINDS:
             raise ValueError(f"unknown answer kind {kind!r}; expected one of {', '.join(KINDS)}")
         if kind == "projective":
-            return cls(kind, tuple(int(Fraction(v)) for v in value))
+            return cls(kind, tuple(_int(v) for v in value))
         if kind == "vector":
             return cls(kind, tuple(Fraction(v) for v in value))
         if kind == "scalar":
@@ -156,7 +163,7 @@ class Answer:
         if kind == "integer":
             return cls(kind, int(Fraction(value)))
         if kind == "matrix":
-            return cls(kind, tuple(tuple(int(Fraction(v)) for v in row) for row in value))
+            return cls(kind, tuple(tuple(_int(v) for v in row) for row in value))
         if kind == "matrix_exact":
             return cls(kind, tuple(tuple(Fraction(v) for v in row) for row in value))
         return cls(kind, str(value))
@@ -191,14 +198,44 @@ def tuple_latex(values: Any) -> str:
 
 
 @dataclass(frozen=True)
+class Mistake:
+    """A common wrong answer of one part: a class ``code`` (see :data:`pgsym.exercises.mistakes.MISTAKE_CLASSES`,
+    or a template's own), the feedback ``message`` and the wrong ``answer``.
+
+    The kind of ``answer`` decides the comparison, as in grading: a ``projective`` (or ``matrix``)
+    candidate for an exact key stands for every nonzero multiple of it (an answer right only up to a
+    scale that is not allowed).
+
+    >>> m = Mistake("sign", "a sign lost in coordinate 2", Answer.projective([1, 2, 0]))
+    >>> Mistake.from_json(m.to_json()) == m
+    True
+    """
+
+    code: str
+    message: str
+    answer: Answer
+
+    def to_json(self) -> dict[str, Any]:
+        """A JSON-ready dict (stored in the manifest with the key)."""
+        return {"code": self.code, "message": self.message, **self.answer.to_json()}
+
+    @classmethod
+    def from_json(cls, data: dict[str, Any]) -> Mistake:
+        """Inverse of :meth:`to_json`."""
+        return cls(str(data["code"]), str(data["message"]), Answer.from_json(data))
+
+
+@dataclass(frozen=True)
 class Part:
     """One thing to answer: a label such as ``"3"`` or ``"3b"``, a prompt, the answer and, for a
-    multiple-choice part, the options (in order A, B, C, …)."""
+    multiple-choice part, the options (in order A, B, C, …); ``mistakes`` are the common wrong
+    answers that ``pgsym check`` recognises."""
 
     label: str
     prompt: str
     answer: Answer
     choices: tuple[str, ...] = ()
+    mistakes: tuple[Mistake, ...] = ()
 
 
 @dataclass(frozen=True)
@@ -223,7 +260,9 @@ class Exercise:
             "level": self.level,
             "seed": self.seed,
             "params": self.params,
-            "parts": [{"label": p.label, "choices": list(p.choices), **p.answer.to_json()} for p in self.parts],
+            "parts": [{"label": p.label, "choices": list(p.choices), **p.answer.to_json(),
+                       **({"mistakes": [m.to_json() for m in p.mistakes]} if p.mistakes else {})}
+                      for p in self.parts],
         }
 
 

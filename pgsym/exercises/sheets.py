@@ -13,6 +13,7 @@ from __future__ import annotations
 import json
 import unicodedata
 from collections.abc import Callable, Iterable, Sequence
+from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
@@ -20,14 +21,16 @@ from ..errors import PgsymError
 from ..limits import MAX_NAME_CHARS
 from ._text import one_line
 from .errors import ManifestError, RosterError, UnknownTopicError
-from .model import Answer, Sheet
+from .mistakes import MAX_MISTAKES
+from .model import Answer, Mistake, Sheet
 from .reading import csv_rows, load_json, read_user_text
 from .seeds import form_id, slot_keys, variant_seed
 from .template import TemplateError, get_template
 
 MANIFEST_VERSION = 1
 
-
+#: Characters of a mistake's feedback kept from a manifest.
+MAX_MESSAGE_CHARS = 300
 
 
 def parse_topics(spec: str | Sequence[str], default_level: int = 1) -> list[tuple[str, int]]:
@@ -176,17 +179,51 @@ def manifest_json(sheets: Sequence[Sheet], topics: Sequence[tuple[str, int]]) ->
     return json.dumps(manifest(sheets, topics), indent=1, sort_keys=True, ensure_ascii=False) + "\n"
 
 
-def load_manifest(path: str | Path) -> dict[str, dict[str, Answer]]:
-    """Read a manifest: student id → {question label → expected answer}."""
+@dataclass
+class ManifestData:
+    """What ``pgsym check`` needs from a manifest: the keys, the recognised mistakes (empty for a
+    manifest written before they were stored), the students' names and each question's topic."""
+
+    keys: dict[str, dict[str, Answer]] = field(default_factory=dict)
+    mistakes: dict[str, dict[str, tuple[Mistake, ...]]] = field(default_factory=dict)
+    names: dict[str, str] = field(default_factory=dict)
+    topics: dict[str, str] = field(default_factory=dict)
+
+
+def _read_mistake(data: Any, lines: dict[str, str]) -> Mistake:
+    m = Mistake.from_json(data)
+    # the message is shown to instructors in every output: one line, bounded (cleaned once per distinct text)
+    for text in (m.code, m.message):
+        if text not in lines:
+            lines[text] = one_line(text)[:MAX_MESSAGE_CHARS]
+    return Mistake(lines[m.code][:40], lines[m.message], m.answer)
+
+
+def load_manifest_data(path: str | Path) -> ManifestData:
+    """Read a manifest with everything ``pgsym check`` reports (see :class:`ManifestData`)."""
     p = Path(path)
     data = load_json(p, "manifest", ManifestError)
     if not isinstance(data, dict) or data.get("format") != "pgsym-exercises":
         raise ManifestError(f"{str(p)!r} is not a pgsym exercise manifest (written by 'pgsym sheet')")
-    keys: dict[str, dict[str, Answer]] = {}
+    out = ManifestData()
+    lines: dict[str, str] = {}
     try:
         for student in data["students"]:
-            keys[str(student["id"])] = {str(part["label"]): Answer.from_json(part)
-                                        for ex in student["exercises"] for part in ex["parts"]}
-    except (KeyError, TypeError, ValueError, ArithmeticError) as err:
+            sid = str(student["id"])
+            out.keys[sid] = {str(part["label"]): Answer.from_json(part)
+                             for ex in student["exercises"] for part in ex["parts"]}
+            out.mistakes[sid] = {str(part["label"]): tuple(_read_mistake(m, lines)
+                                                           for m in part.get("mistakes", ())[:MAX_MISTAKES])
+                                 for ex in student["exercises"] for part in ex["parts"]}
+            out.names[sid] = one_line(str(student.get("name", "")))[:MAX_NAME_CHARS]
+            for ex in student["exercises"]:
+                for part in ex["parts"]:
+                    out.topics.setdefault(str(part["label"]), one_line(str(ex.get("topic", ""))))
+    except (KeyError, TypeError, ValueError, ArithmeticError, AttributeError, IndexError) as err:
         raise ManifestError(f"the manifest {str(p)!r} is damaged: {type(err).__name__}: {err}") from None
-    return keys
+    return out
+
+
+def load_manifest(path: str | Path) -> dict[str, dict[str, Answer]]:
+    """Read a manifest: student id → {question label → expected answer}."""
+    return load_manifest_data(path).keys

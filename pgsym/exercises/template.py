@@ -17,13 +17,13 @@ import random
 import string
 import sys
 import types
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any
 
 from ._text import one_line
 from .errors import TemplateError, UnknownTopicError
-from .model import Answer, Exercise, Part
+from .model import Answer, Exercise, Mistake, Part
 from .reading import read_user_text
 
 
@@ -62,6 +62,19 @@ class Template:
         """Re-check the instance from its ``params`` and answers; raise :class:`TemplateError` if wrong."""
         raise NotImplementedError
 
+    def mistakes(self, exercise: Exercise, index: int) -> list[Mistake]:
+        """The common wrong answers of part ``index`` that ``pgsym check`` should recognise.
+
+        The default is :func:`pgsym.exercises.mistakes.default_mistakes` of the part's answer (a sign
+        lost, an ideal point given as finite, a matrix transposed or inverted, a multiple where the
+        exact value is asked). Override it to add a template's own, e.g.
+        ``return [*super().mistakes(exercise, index), mistake("dual", Answer.projective(p))]``;
+        candidates equivalent to the right answer are dropped before they are stored.
+        """
+        from .mistakes import default_mistakes
+
+        return default_mistakes(exercise.parts[index].answer)
+
     def generate(self, seed: int, level: int, slot: int) -> Exercise:
         """The instance of this template for a variant seed, at a level, numbered ``slot`` on the sheet."""
         if level not in self.levels:
@@ -72,8 +85,17 @@ class Template:
             Part(f"{slot}{string.ascii_lowercase[i]}" if many else str(slot), prompt, answer, tuple(choices))
             for i, (prompt, answer, choices) in enumerate(draft.parts)
         )
-        return Exercise(self.name, self.title, level, slot, seed, draft.statement, parts, tuple(draft.solution),
-                        draft.params)
+        exercise = Exercise(self.name, self.title, level, slot, seed, draft.statement, parts,
+                            tuple(draft.solution), draft.params)
+        return self.with_mistakes(exercise)
+
+    def with_mistakes(self, exercise: Exercise) -> Exercise:
+        """``exercise`` with the admissible :meth:`mistakes` of every part attached (for the manifest)."""
+        from .mistakes import admissible
+
+        parts = tuple(replace(p, mistakes=tuple(admissible(p.answer, self.mistakes(exercise, i))))
+                      for i, p in enumerate(exercise.parts))
+        return replace(exercise, parts=parts)
 
 
 def check(condition: bool, message: str) -> None:

@@ -6,7 +6,8 @@ import random
 from fractions import Fraction
 
 from ...projective_line import Point1, cross_ratio
-from ..model import Answer, Exercise
+from ..mistakes import mistake
+from ..model import Answer, Exercise, Mistake
 from ..template import Draft, Template, check
 from ._util import primitive_dir, tuple_latex
 
@@ -21,6 +22,14 @@ class CrossRatioTemplate(Template):
     name = "cross-ratio"
     title = "The cross-ratio of four points"
     max_entry = 1000
+
+    def mistakes(self, exercise: Exercise, index: int) -> list[Mistake]:
+        lam = exercise.parts[0].answer.value  # neither 0 nor 1 for four distinct points
+        others = [("(A, B; D, C)", 1 / lam), ("(A, C; B, D)", 1 - lam), ("(A, C; D, B)", 1 / (1 - lam)),
+                  ("(A, D; B, C)", (lam - 1) / lam), ("(A, D; C, B)", lam / (lam - 1))]
+        order = [mistake("order", Answer.scalar(v), f"the cross-ratio {name}: the points taken in another order")
+                 for name, v in others]
+        return [*super().mistakes(exercise, index), *order]
 
     def build(self, rng: random.Random, level: int) -> Draft:
         values = rng.sample(range(-6, 7), 4)

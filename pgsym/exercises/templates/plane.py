@@ -7,7 +7,8 @@ from fractions import Fraction
 
 from ...projective_plane import Line, Point, incident
 from ...ring import cross, primitive_integers
-from ..model import Answer, Exercise
+from ..mistakes import mistake
+from ..model import Answer, Exercise, Mistake
 from ..template import Draft, Template, check
 from ._util import equation_latex, nz, primitive_dir, tuple_latex
 
@@ -26,6 +27,15 @@ class HomogeneousTemplate(Template):
     name = "homogeneous"
     title = "Homogeneous and inhomogeneous coordinates"
     max_entry = 1000
+
+    def mistakes(self, exercise: Exercise, index: int) -> list[Mistake]:
+        extra = []
+        p = exercise.params
+        if p["direction"] == "to_inhomogeneous" and p["given"][2] != 1:
+            # x1 and x2 copied without dividing by x3 (a multiple of the answer, stated concretely first)
+            extra.append(mistake("scale", Answer.vector(p["given"][:2]), "the first two homogeneous coordinates, "
+                                 "not divided by the last one"))
+        return [*extra, *super().mistakes(exercise, index)]
 
     def build(self, rng: random.Random, level: int) -> Draft:
         if level in (1, 2):
@@ -84,6 +94,13 @@ class JoinTemplate(Template):
     title = "The line through two points"
     max_entry = 1000
 
+    def mistakes(self, exercise: Exercise, index: int) -> list[Mistake]:
+        # the answer is a line: "ideal point given as finite" does not apply to it
+        generic = [m for m in super().mistakes(exercise, index) if m.code != "ideal-as-finite"]
+        given = [mistake("dual", Answer.projective(exercise.params[k]), "a given point, not the line through "
+                         "both points") for k in ("p", "q")]
+        return [*generic, *given]
+
     def build(self, rng: random.Random, level: int) -> Draft:
         x0, y0 = rng.randint(-5, 5), rng.randint(-5, 5)
         d = primitive_dir(rng, 3)
@@ -129,6 +146,11 @@ class MeetTemplate(Template):
     title = "The intersection of two lines"
     max_entry = 1000
 
+    def mistakes(self, exercise: Exercise, index: int) -> list[Mistake]:
+        given = [mistake("dual", Answer.projective(exercise.params[k]), "a given line, not the point on both "
+                         "lines") for k in ("l", "m")]
+        return [*super().mistakes(exercise, index), *given]
+
     def build(self, rng: random.Random, level: int) -> Draft:
         w = 1 if level == 1 else rng.randint(2, 4)
         x = [rng.randint(-6, 6), rng.randint(-6, 6), w]
@@ -170,6 +192,13 @@ class IdealPointTemplate(Template):
     name = "ideal"
     title = "The ideal point of two parallel lines"
     max_entry = 100
+
+    def mistakes(self, exercise: Exercise, index: int) -> list[Mistake]:
+        a, b = exercise.params["l"][:2]
+        # (a, b) is the normal of the lines; their common point at infinity is the direction (b, -a)
+        normal = mistake("dual", Answer.projective([a, b, 0]), "the normal (a, b) of the lines, read from their "
+                         "coefficients, instead of their direction")
+        return [*super().mistakes(exercise, index), normal]
 
     def build(self, rng: random.Random, level: int) -> Draft:
         d = primitive_dir(rng, 4)

@@ -10,7 +10,8 @@ from ... import ring
 from ...plucker import Line3
 from ...ring import cross, primitive_integers
 from ...space import Plane, Point3, plane_through, point_on_planes
-from ..model import Answer, Exercise
+from ..mistakes import mistake
+from ..model import Answer, Exercise, Mistake
 from ..template import Draft, Template, check
 from ._util import nz, primitive_dir, tuple_latex
 
@@ -25,6 +26,13 @@ class PlaneThroughTemplate(Template):
     name = "plane3"
     title = "The plane through three points"
     max_entry = 1000
+
+    def mistakes(self, exercise: Exercise, index: int) -> list[Mistake]:
+        # the answer is a plane: "ideal point given as finite" does not apply to it
+        generic = [m for m in super().mistakes(exercise, index) if m.code != "ideal-as-finite"]
+        given = [mistake("dual", Answer.projective(p), "a given point, not the plane through the three points")
+                 for p in exercise.params["points"]]
+        return [*generic, *given]
 
     def build(self, rng: random.Random, level: int) -> Draft:
         while True:
@@ -79,6 +87,11 @@ class PointOnPlanesTemplate(Template):
     title = "The point on three planes"
     max_entry = 1000
 
+    def mistakes(self, exercise: Exercise, index: int) -> list[Mistake]:
+        given = [mistake("dual", Answer.projective(p), "a given plane, not the point on the three planes")
+                 for p in exercise.params["planes"]]
+        return [*super().mistakes(exercise, index), *given]
+
     def build(self, rng: random.Random, level: int) -> Draft:
         if level == 3:
             X = [*primitive_dir(rng, 2, 3), 0]
@@ -126,6 +139,12 @@ class PluckerTemplate(Template):
     name = "plucker"
     title = "Plücker coordinates of a line"
     max_entry = 1000
+
+    def mistakes(self, exercise: Exercise, index: int) -> list[Mistake]:
+        l12, l13, l14, l23, l42, l34 = exercise.parts[0].answer.value
+        dual = mistake("dual", Answer.projective([l34, l42, l23, l14, l13, l12]),
+                       "the dual Plücker coordinates (l34, l42, l23, l14, l13, l12) of the same line")
+        return [*super().mistakes(exercise, index), dual]
 
     def build(self, rng: random.Random, level: int) -> Draft:
         while True:

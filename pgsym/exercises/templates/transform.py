@@ -16,7 +16,8 @@ from ...hierarchy import AFFINE_2D, EUCLIDEAN_2D, ISOMETRY_2D, PROJECTIVE_2D, SI
 from ...projective_plane import Line, Point, collinear, incident
 from ...ring import adjugate, det, matmul, matvec, primitive_integer_matrix, primitive_integers, transpose
 from ..errors import TemplateError
-from ..model import Answer, Exercise
+from ..mistakes import mistake
+from ..model import Answer, Exercise, Mistake
 from ..template import Draft, Template, check
 from ._util import invertible, matrix_latex, nz, primitive_dir, tuple_latex
 
@@ -55,6 +56,12 @@ class ApplyPointTemplate(Template):
     title = "A homography applied to a point"
     max_entry = 10_000
 
+    def mistakes(self, exercise: Exercise, index: int) -> list[Mistake]:
+        H, x = exercise.params["H"], exercise.params["x"]
+        wrong = [mistake("transposed", Answer.projective(matvec(transpose(H), x)), "Hᵀx: H transposed"),
+                 mistake("inverted", Answer.projective(matvec(adjugate(H), x)), "H⁻¹x: the map taken backwards")]
+        return [*super().mistakes(exercise, index), *wrong]
+
     def build(self, rng: random.Random, level: int) -> Draft:
         H = _homography(rng, level)
         x = [rng.randint(-3, 3), rng.randint(-3, 3), 1]
@@ -90,6 +97,18 @@ class ApplyLineTemplate(Template):
     name = "apply-line"
     title = "A homography applied to a line"
     max_entry = 10_000
+
+    def mistakes(self, exercise: Exercise, index: int) -> list[Mistake]:
+        H, l = exercise.params["H"], exercise.params["l"]
+        # the answer is a line: "ideal point given as finite" does not apply to it
+        generic = [m for m in super().mistakes(exercise, index) if m.code != "ideal-as-finite"]
+        wrong = [mistake("line-as-point", Answer.projective(matvec(H, l)), "Hl: H applied to the line as to a "
+                         "point; lines map by H⁻ᵀl"),
+                 mistake("transposed", Answer.projective(matvec(adjugate(H), l)), "H⁻¹l: the transpose of "
+                         "H⁻ᵀ is missing"),
+                 mistake("inverted", Answer.projective(matvec(transpose(H), l)), "Hᵀl: the inverse of H⁻ᵀ "
+                         "is missing")]
+        return [*generic, *wrong]
 
     def build(self, rng: random.Random, level: int) -> Draft:
         H = _homography(rng, level)
@@ -135,6 +154,18 @@ class ApplyConicTemplate(Template):
     name = "apply-conic"
     title = "A homography applied to a conic"
     max_entry = 100_000
+
+    def mistakes(self, exercise: Exercise, index: int) -> list[Mistake]:
+        H, C = exercise.params["H"], exercise.params["C"]
+        A = adjugate(H)
+        generic = [m if m.code != "inverted" else mistake("dual", m.answer, "C'⁻¹: the dual conic (its tangent "
+                                                            "lines), not the conic of points")
+                   for m in super().mistakes(exercise, index)]
+        wrong = [mistake("inverted", Answer.matrix(matmul(matmul(transpose(H), C), H)), "HᵀCH: the map taken in "
+                         "the wrong direction (H instead of H⁻¹)"),
+                 mistake("transposed", Answer.matrix(matmul(matmul(A, C), transpose(A))), "H⁻¹CH⁻ᵀ: the "
+                         "transposes on the wrong side")]
+        return [*wrong, *generic]
 
     def build(self, rng: random.Random, level: int) -> Draft:
         H = _homography(rng, min(level, 2))
@@ -207,6 +238,12 @@ class ClassifyTemplate(Template):
     name = "classify"
     title = "Classify a transformation"
     max_entry = 1000
+
+    def mistakes(self, exercise: Exercise, index: int) -> list[Mistake]:
+        if index == 1 and exercise.params["class"] == "projectivity":
+            return [mistake("scale", Answer.integer(9), "9 entries counted; H is defined only up to scale, so a "
+                            "projectivity has 8 degrees of freedom")]
+        return super().mistakes(exercise, index)
 
     def build(self, rng: random.Random, level: int) -> Draft:
         cls = rng.choice(CLASSES)
@@ -399,6 +436,16 @@ class DecomposeTemplate(Template):
     name = "decompose"
     title = "Decompose a homography"
     max_entry = 1000
+
+    def mistakes(self, exercise: Exercise, index: int) -> list[Mistake]:
+        generic = super().mistakes(exercise, index)
+        if index == 0:
+            s = exercise.parts[0].answer.value
+            return [*generic, mistake("scale", Answer.scalar(s * s), "s² = det(sRK): the square root is missing")]
+        if index == 1:  # Rᵀ = R⁻¹: one candidate, the rotation the other way
+            return [mistake(m.code, m.answer, "Rᵀ = R⁻¹: the rotation in the other direction")
+                    if m.code == "transposed" else m for m in generic]
+        return generic
 
     def build(self, rng: random.Random, level: int) -> Draft:
         a, b, c = _rotation(rng, level)
