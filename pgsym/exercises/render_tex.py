@@ -1,4 +1,8 @@
-"""LaTeX renderer (one document with every sheet, one sheet per page group) and PDF through pdflatex.
+"""LaTeX renderer (one document with every sheet, one sheet per page group) and PDF through LuaLaTeX.
+
+LuaLaTeX with the Noto fonts typesets every name as it is (Latin, Greek, Cyrillic, Chinese, Japanese,
+Korean, Arabic, Hebrew, Devanagari, Thai, …): luaotfload falls back to the font of each script, and
+right-to-left runs are set right to left, so ``pdftotext`` gives every name back exactly.
 
 User text never reaches TeX as code: names, ids and titles go through
 :func:`~pgsym.exercises._text.tex_escape`, exercise text through :func:`~pgsym.exercises._text.to_tex`
@@ -28,10 +32,20 @@ from ._text import one_line, tex_escape, to_tex
 from .errors import TeXFailedError, TeXMissingError
 from .model import KIND_HINTS, Exercise, Sheet
 
+#: Fonts of the sheets (Debian: fonts-noto-core, fonts-noto-cjk): the main font covers Latin, Greek and
+#: Cyrillic; luaotfload falls back, glyph by glyph, to the font of the script for everything else.
+MAIN_FONT = "Noto Serif"
+FALLBACK_FONTS = ("Noto Serif CJK SC:mode=harf;", "Noto Naskh Arabic:mode=harf;script=arab;",
+                  "Noto Serif Hebrew:mode=harf;script=hebr;", "Noto Serif Devanagari:mode=harf;script=dev2;",
+                  "Noto Serif Thai:mode=harf;", "Noto Serif Armenian:mode=harf;", "Noto Serif Georgian:mode=harf;")
+
 PREAMBLE = r"""\documentclass[11pt,a4paper]{article}
-\usepackage[utf8]{inputenc}
-\usepackage[T1]{fontenc}
-\usepackage{lmodern}
+% LuaLaTeX: every Unicode name prints (fonts and fallbacks below); right-to-left runs use \textdir TRT
+\usepackage{fontspec}
+\directlua{luaotfload.add_fallback("pgsym", {""" + ", ".join(f'"{f}"' for f in FALLBACK_FONTS) + r"""})}
+\setmainfont{""" + MAIN_FONT + r"""}[RawFeature={fallback=pgsym}]
+% no creation date, producer or PTEX keys in the PDF: the same sheets give the same bytes
+\pdfvariable suppressoptionalinfo 1023
 \usepackage{amsmath,amssymb}
 \usepackage[margin=2.2cm]{geometry}
 \usepackage{enumitem}
@@ -57,15 +71,23 @@ def tex_time_limit(sheets: int) -> float:
     return TEX_BASE_SECONDS + TEX_SECONDS_PER_SHEET * max(1, sheets)
 
 
+def _t(text: str) -> str:
+    return tex_escape(text, unicode=True)
+
+
+def _tx(text: str) -> str:
+    return to_tex(text, unicode=True)
+
+
 def _exercise(ex: Exercise) -> list[str]:
-    lines = [rf"\exercisetitle{{Exercise {ex.slot}: {tex_escape(ex.title)}}}", to_tex(ex.statement), ""]
+    lines = [rf"\exercisetitle{{Exercise {ex.slot}: {_t(ex.title)}}}", _tx(ex.statement), ""]
     for part in ex.parts:
         label = f"({part.label})" if len(ex.parts) > 1 else f"[{part.label}]"
-        lines.append(rf"\textbf{{{tex_escape(label)}}} {to_tex(part.prompt)} \emph{{Answer format: "
-                     rf"{tex_escape(KIND_HINTS[part.answer.kind])}.}}")
+        lines.append(rf"\textbf{{{_t(label)}}} {_tx(part.prompt)} \emph{{Answer format: "
+                     rf"{_t(KIND_HINTS[part.answer.kind])}.}}")
         if part.choices:
             lines.append(r"\begin{enumerate}[label=\textbf{\Alph*.},itemsep=0pt]")
-            lines += [rf"\item {to_tex(c)}" for c in part.choices]
+            lines += [rf"\item {_tx(c)}" for c in part.choices]
             lines.append(r"\end{enumerate}")
         lines.append("")
     return lines
@@ -73,20 +95,19 @@ def _exercise(ex: Exercise) -> list[str]:
 
 def _solution(ex: Exercise) -> list[str]:
     lines = [r"\ifsolutions", r"\par\textbf{Solution.}", r"\begin{enumerate}[itemsep=0pt]"]
-    lines += [rf"\item {to_tex(step)}" for step in ex.solution]
+    lines += [rf"\item {_tx(step)}" for step in ex.solution]
     lines.append(r"\end{enumerate}")
-    lines += [rf"\textbf{{Answer {tex_escape('[' + p.label + ']')}:}} {to_tex('$' + p.answer.latex() + '$')}\par"
+    lines += [rf"\textbf{{Answer {_t('[' + p.label + ']')}:}} {_tx('$' + p.answer.latex() + '$')}\par"
               for p in ex.parts]
     lines.append(r"\fi")
     return lines
 
 
-def render_sheet_body(sheet: Sheet, solutions: bool) -> str:
+def render_sheet_body(sheet: Sheet, solutions: bool, heading: str = "Exercise sheet") -> str:
     """The LaTeX of one sheet (no preamble)."""
-    who = tex_escape(sheet.student_name or sheet.student_id)
-    lines = [r"\clearpage", rf"\sheettitle{{Exercise sheet: {who}}}",
-             rf"Student id: \texttt{{{tex_escape(sheet.student_id)}}} \hfill "
-             rf"Form id: \texttt{{{tex_escape(sheet.form_id)}}}", "",
+    who = _t(sheet.student_name or sheet.student_id)
+    lines = [r"\clearpage", rf"\sheettitle{{{_t(heading)}: {who}}}",
+             rf"Student id: {_t(sheet.student_id)} \hfill Form id: \texttt{{{_t(sheet.form_id)}}}", "",
              "Give exact answers; homogeneous coordinates are accepted up to a nonzero scale.", ""]
     for ex in sheet.exercises:
         lines += _exercise(ex)
@@ -95,18 +116,23 @@ def render_sheet_body(sheet: Sheet, solutions: bool) -> str:
     return "\n".join(lines) + "\n"
 
 
-def render_document(sheets: Sequence[Sheet], solutions: bool = False) -> str:
+def render_document(sheets: Sequence[Sheet], solutions: bool = False, heading: str = "Exercise sheet") -> str:
     """A complete LaTeX document with every sheet; with solutions, ``\\solutionstrue`` switches them on
-    (set ``\\solutionsfalse`` to hide them again)."""
+    (set ``\\solutionsfalse`` to hide them again). The answer key is ``render_document(sheets, True,
+    "Answer key")``."""
     parts = [PREAMBLE, r"\solutionstrue" if solutions else r"\solutionsfalse", r"\begin{document}"]
-    parts += [render_sheet_body(s, solutions) for s in sheets]
+    parts += [render_sheet_body(s, solutions, heading) for s in sheets]
     parts.append(r"\end{document}")
     return "\n".join(parts) + "\n"
 
 
+#: The TeX engine of the PDF sheets (Debian: texlive-luatex).
+ENGINE = "lualatex"
+
+
 def tex_available() -> bool:
-    """True when pdflatex is on the PATH."""
-    return shutil.which("pdflatex") is not None
+    """True when LuaLaTeX is on the PATH."""
+    return shutil.which(ENGINE) is not None
 
 
 def _tex_environment() -> dict[str, str]:
@@ -141,43 +167,43 @@ def _kill_group(proc: subprocess.Popen[bytes]) -> None:
 
 
 def compile_pdf(tex_source: str, timeout: float | None = None) -> bytes:
-    """Compile LaTeX source with pdflatex in a temporary folder, confined as the module says; the PDF bytes.
+    """Compile LaTeX source with LuaLaTeX in a temporary folder, confined as the module says; the PDF bytes.
 
     ``timeout`` defaults to :func:`tex_time_limit` of one sheet. Raises :class:`TeXMissingError` if TeX
     is not installed and :class:`TeXFailedError` if it fails or runs out of time.
     """
     if not tex_available():
-        raise TeXMissingError("pdflatex is not installed, so no PDF can be made. On Debian/Ubuntu run: "
-                              "sudo apt-get install texlive-latex-extra texlive-fonts-recommended lmodern latexmk "
+        raise TeXMissingError("LuaLaTeX is not installed, so no PDF can be made. On Debian/Ubuntu run: "
+                              "sudo apt-get install texlive-luatex texlive-latex-extra fonts-noto-core fonts-noto-cjk "
                               "(or 'make system-deps'); the other formats do not need TeX.")
     limit = tex_time_limit(1) if timeout is None else timeout
     with tempfile.TemporaryDirectory(prefix="pgsym-tex-") as tmp:
         src = Path(tmp) / "sheets.tex"
         src.write_text(tex_source, encoding="utf-8")
         # one run: the sheets have no cross-references; -no-shell-escape whatever texmf.cnf says
-        cmd = ["pdflatex", "-no-shell-escape", "-interaction=nonstopmode", "-halt-on-error", "sheets.tex"]
+        cmd = [ENGINE, "-no-shell-escape", "-interaction=nonstopmode", "-halt-on-error", "sheets.tex"]
         started = time.monotonic()
         try:
             code, output = _run_confined(cmd, tmp, limit)
         except subprocess.TimeoutExpired:
-            raise TeXFailedError(f"pdflatex took longer than {limit:.0f} s (the limit) and was stopped") from None
+            raise TeXFailedError(f"LuaLaTeX took longer than {limit:.0f} s (the limit) and was stopped") from None
         if code != 0 or not (Path(tmp) / "sheets.pdf").is_file():
             log = Path(tmp) / "sheets.log"
             text = log.read_text(errors="replace") if log.exists() else output
             start = text.find("\n! ")  # TeX's first error message, with the lines that locate it
             excerpt = text[start + 1:start + 800] if start >= 0 else text[-800:]
-            raise TeXFailedError(f"pdflatex failed (exit {code}, {time.monotonic() - started:.1f} s):\n{excerpt}")
+            raise TeXFailedError(f"LuaLaTeX failed (exit {code}, {time.monotonic() - started:.1f} s):\n{excerpt}")
         return (Path(tmp) / "sheets.pdf").read_bytes()
 
 
-def compile_sheets(sheets: Sequence[Sheet], solutions: bool = False) -> bytes:
-    """The PDF of every sheet (one pdflatex run, limited to :func:`tex_time_limit` of the number of sheets).
+def compile_sheets(sheets: Sequence[Sheet], solutions: bool = False, heading: str = "Exercise sheet") -> bytes:
+    """The PDF of every sheet (one LuaLaTeX run, limited to :func:`tex_time_limit` of the number of sheets).
 
     If TeX fails, the sheets are compiled again in halves, each under its own proportional limit,
     until the failing sheet is found: the :class:`TeXFailedError` then names its student.
     """
     try:
-        return compile_pdf(render_document(sheets, solutions), tex_time_limit(len(sheets)))
+        return compile_pdf(render_document(sheets, solutions, heading), tex_time_limit(len(sheets)))
     except TeXFailedError as err:
         if len(sheets) > 1:
             culprit = _failing_sheet(list(sheets), solutions)
