@@ -43,7 +43,8 @@ PREAMBLE = r"""\documentclass[11pt,a4paper]{article}
 % LuaLaTeX: every Unicode name prints (fonts and fallbacks below); right-to-left runs use \textdir TRT
 \usepackage{fontspec}
 \directlua{luaotfload.add_fallback("pgsym", {""" + ", ".join(f'"{f}"' for f in FALLBACK_FONTS) + r"""})}
-\setmainfont{""" + MAIN_FONT + r"""}[RawFeature={fallback=pgsym}]
+\setmainfont{""" + MAIN_FONT + r"""}[Ligatures=TeXOff, RawFeature={fallback=pgsym}]
+% (no TeX ligatures: a name's -- << ,, `` prints as typed)
 % no creation date, producer or PTEX keys in the PDF: the same sheets give the same bytes
 \pdfvariable suppressoptionalinfo 1023
 \usepackage{amsmath,amssymb}
