@@ -17,7 +17,7 @@ from pgsym.exercises.sheets import build_sheets, parse_topics
 
 SCHEMA = Path(__file__).parent / "data" / "qti" / "domainProfile_4" / "ims_qtiasiv1p2.xsd"
 NS = {"q": render_qti.QTI_NAMESPACE}
-TOPICS = "join,meet:2,classify:2,cross-ratio:3,decompose:3"
+TOPICS = "join,incidence:2,classify:2,cross-ratio:3,decompose:3"
 HOSTILE_ID = '</mattext><script>alert(1)</script> & "x"'
 STUDENTS = [("s1", "Ada"), ("s2", "李雷"), (HOSTILE_ID, "Mallory")]
 
@@ -108,7 +108,7 @@ def test_answers_are_canonical(package):
                 accepted = {labels[v] for v in values}
                 for p in parts:
                     assert (p.answer.value if p.answer.kind == "choice" else p.answer.display()) in accepted
-    assert {"multiple_choice_question", "fill_in_multiple_blanks_question"} <= seen
+    assert {"multiple_choice_question", "fill_in_multiple_blanks_question", "short_answer_question"} <= seen
 
 
 def test_projective_answer_is_asked_in_canonical_form():
@@ -119,6 +119,12 @@ def test_projective_answer_is_asked_in_canonical_form():
     bank = zipfile.ZipFile(io.BytesIO(data)).read("banks/bank-01-join.xml")
     qtype, values = _answers(etree.fromstring(bank))
     assert qtype == "short_answer_question" and values == ["(1, -2, 3)", "(1,-2,3)"]
+    # an integer answer is a numerical question; a fraction stays text in lowest terms (-6/4 -> -3/2)
+    for answer, expected in ((Answer.integer(-7), ("numerical_question", ["-7"])),
+                             (Answer.scalar(Fraction(-6, 4)), ("short_answer_question", ["-3/2"]))):
+        one = Sheet("s1", "", "F-1", 0, (Exercise("t", "T", 1, 1, 0, "S", (Part("1", "P", answer),), ("s",), {}),))
+        bank = zipfile.ZipFile(io.BytesIO(render_qti.render_package([one], [("t", 1)]))).read("banks/bank-01-t.xml")
+        assert _answers(etree.fromstring(bank)) == expected
 
 
 def test_hostile_names_stay_text_and_the_zip_is_reproducible(package):
