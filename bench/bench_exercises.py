@@ -2,8 +2,9 @@
 
 Prints one JSON line per case:
 
-* ``sheets``: 200 students × 8 exercises with solutions, built and rendered to Markdown, LaTeX and
-  Moodle XML (budget 10 s);
+* ``sheets``: 200 students × 8 exercises in one ``pgsym sheet`` run with every format: student sheets,
+  answer key and key table as Markdown, HTML (MathML), notebooks, LaTeX and PDF (three LuaLaTeX
+  documents, side by side), plus Moodle XML and the Canvas QTI package (budget 20 s for everything);
 * ``stress``: ``pgsym templates check join`` over 10⁴ seeds (one instance per seed, the levels in
   turn; budget 30 s);
 * ``grading``: grading 200 × 8 typed answers with the hand-written parser and canonical forms
@@ -33,7 +34,7 @@ def _sheets_once() -> tuple[float, int]:
     pairs = parse_topics(TOPICS)
     sheets = build_sheets(pairs, anonymous_students(200), master_seed=2026)
     with tempfile.TemporaryDirectory() as tmp:
-        files = render_all(sheets, pairs, ["md", "tex", "moodle"], Path(tmp), solutions=True)
+        files = render_all(sheets, pairs, ["md", "tex", "pdf", "html", "ipynb", "moodle", "qti"], Path(tmp))
     return time.perf_counter() - t0, len(files)
 
 
@@ -96,7 +97,8 @@ def _grade_naive(items: list) -> tuple[float, int]:
 def main() -> None:
     # the rendering and the stress check have no naive counterpart: they are reported against the budgets
     cold, seconds, files = _sheets()
-    report("exercises_200_students_x8_md_tex_moodle", seconds, "budget 10 s", 10.0, cold_s=round(cold, 3), files=files)
+    report("exercises_200_students_x8_all_formats_sheets_key_table_pdf_qti", seconds, "budget 20 s", 20.0,
+           cold_s=round(cold, 3), files=files)
     seconds, instances, ok = _stress()
     report("exercises_stress_join_10000_seeds", seconds, "budget 30 s", 30.0, instances=instances, all_ok=ok)
     items = _answers()

@@ -112,3 +112,15 @@ def test_deprecated_flags_still_work_with_a_message(tmp_path):
     assert new.exit_code == 0 and "warning" not in new.output
     assert "Solution" in (tmp_path / "new" / "md" / "sheet-form-001.md").read_text()
     assert not (tmp_path / "new" / "key").exists() and not (tmp_path / "new" / "key-table.md").exists()
+
+
+def test_clean_replaces_exactly_the_unsafe_code_points():
+    # clean() is a single regular expression; compare it with the definition, code point by code point
+    from pgsym.exercises._text import REPLACEMENT, clean
+
+    def unsafe(o: int) -> bool:
+        return ((o < 32 and chr(o) not in "\n\t") or 0x7F <= o < 0xA0 or 0x202A <= o <= 0x202E
+                or 0x2066 <= o <= 0x2069 or 0xD800 <= o < 0xE000 or o in (0xFFFE, 0xFFFF))
+
+    every = "".join(chr(o) for o in range(0x110000))
+    assert clean(every) == "".join(REPLACEMENT if unsafe(ord(c)) else c for c in every)

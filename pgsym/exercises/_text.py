@@ -64,6 +64,8 @@ _ENV = re.compile(r"\\(?:begin|end)\s*\{([A-Za-z*]*)\}")
 # bidirectional embeddings, overrides and isolates reorder what a reader sees: never pass them on
 _BIDI = frozenset("\u202a\u202b\u202c\u202d\u202e\u2066\u2067\u2068\u2069")
 REPLACEMENT = "\ufffd"
+# C0 controls but tab and newline, DEL and C1, the bidi controls above, surrogates, U+FFFE and U+FFFF
+_UNSAFE = re.compile("[\x00-\x08\x0b-\x1f\x7f-\x9f\u202a-\u202e\u2066-\u2069\ud800-\udfff\ufffe\uffff]")
 
 
 def clean(text: str) -> str:
@@ -73,12 +75,7 @@ def clean(text: str) -> str:
     >>> clean("a\\x00b\\u202ec\\n")
     'a\\ufffdb\\ufffdc\\n'
     """
-    def bad(c: str) -> bool:
-        o = ord(c)
-        return ((o < 32 and c not in "\n\t") or 0x7F <= o < 0xA0 or c in _BIDI or 0xD800 <= o < 0xE000
-                or o in (0xFFFE, 0xFFFF))
-
-    return "".join(REPLACEMENT if bad(c) else c for c in str(text))
+    return _UNSAFE.sub(REPLACEMENT, str(text))
 
 
 def one_line(text: str) -> str:

@@ -24,7 +24,7 @@ from __future__ import annotations
 
 import os
 from collections.abc import Callable, Sequence
-from concurrent.futures import ThreadPoolExecutor
+from concurrent.futures import Future, ThreadPoolExecutor
 from pathlib import Path
 
 from . import key_table, render_html, render_ipynb, render_md, render_moodle, render_qti, render_tex
@@ -73,48 +73,51 @@ def render_all(sheets: Sequence[Sheet], topics: Sequence[tuple[str, int]], forma
             path.write_text(text, encoding="utf-8", newline="\n")
         written.append(path)
 
-    write("manifest.json", manifest_json(sheets, topics))
-    per_sheet = [(f, r) for f, r in (("md", render_md), ("html", render_html), ("ipynb", render_ipynb))
-                 if f in formats]
-    for sheet in sheets:
-        for fmt, renderer in per_sheet:
-            write(f"{fmt}/{sheet.file_stem}.{fmt}", renderer.render_sheet(sheet, solutions))
-            if key:
-                keyed = (render_html.render_sheet(sheet, True, KEY_HEADING) if fmt == "html"
-                         else renderer.render_sheet(sheet, True))
-                write(f"key/{fmt}/{sheet.file_stem}.{fmt}", keyed)
-        if progress is not None:
-            progress(1)
-    if key:
-        for fmt, renderer in (("md", key_table.render_md), ("html", key_table.render_html),
-                              ("ipynb", key_table.render_ipynb)):
-            if fmt in formats:
-                write(f"key-table.{fmt}", renderer(sheets))
-    if "tex" in formats or "pdf" in formats:
-        documents = {"sheets": render_tex.render_document(sheets, solutions)}
+    # TeX runs in separate processes: start it first, so it works while Python renders the other formats
+    pool = ThreadPoolExecutor(max_workers=max(1, min(3, os.cpu_count() or 1)))
+    pdfs = _start_pdfs(pool, sheets, solutions, key) if "pdf" in formats else {}
+    try:
+        write("manifest.json", manifest_json(sheets, topics))
+        per_sheet = [(f, r) for f, r in (("md", render_md), ("html", render_html), ("ipynb", render_ipynb))
+                     if f in formats]
+        for sheet in sheets:
+            for fmt, renderer in per_sheet:
+                write(f"{fmt}/{sheet.file_stem}.{fmt}", renderer.render_sheet(sheet, solutions))
+                if key:
+                    keyed = (render_html.render_sheet(sheet, True, KEY_HEADING) if fmt == "html"
+                             else renderer.render_sheet(sheet, True))
+                    write(f"key/{fmt}/{sheet.file_stem}.{fmt}", keyed)
+            if progress is not None:
+                progress(1)
         if key:
-            documents["key"] = render_tex.render_document(sheets, True, KEY_HEADING)
-            documents["key-table"] = key_table.render_tex(sheets, render_tex.PREAMBLE)
+            for fmt, renderer in (("md", key_table.render_md), ("html", key_table.render_html),
+                                  ("ipynb", key_table.render_ipynb)):
+                if fmt in formats:
+                    write(f"key-table.{fmt}", renderer(sheets))
         if "tex" in formats:
-            for name, tex in documents.items():
-                write(f"{name}.tex", tex)
-        if "pdf" in formats:
-            for name, pdf in _compile_all(sheets, solutions, key).items():
-                write(f"{name}.pdf", pdf)
-    if "moodle" in formats:
-        write("moodle.xml", render_moodle.render_quiz(sheets, solutions))
-    if "qti" in formats:
-        write("qti.zip", render_qti.render_package(sheets, topics))
+            write("sheets.tex", render_tex.render_document(sheets, solutions))
+            if key:
+                write("key.tex", render_tex.render_document(sheets, True, KEY_HEADING))
+                write("key-table.tex", key_table.render_tex(sheets, render_tex.PREAMBLE))
+        if "moodle" in formats:
+            write("moodle.xml", render_moodle.render_quiz(sheets, solutions))
+        if "qti" in formats:
+            write("qti.zip", render_qti.render_package(sheets, topics))
+        for name, future in pdfs.items():
+            write(f"{name}.pdf", future.result())
+    finally:
+        for future in pdfs.values():
+            future.cancel()  # after an error: TeX runs not yet started never start
+        pool.shutdown(wait=True)
     return written
 
 
-def _compile_all(sheets: Sequence[Sheet], solutions: bool, key: bool) -> dict[str, bytes]:
-    """The PDFs, TeX runs side by side (one per core, at most three): each run is a separate process."""
+def _start_pdfs(pool: ThreadPoolExecutor, sheets: Sequence[Sheet], solutions: bool,
+                key: bool) -> dict[str, Future[bytes]]:
+    """Submit the TeX runs (each a separate LuaLaTeX process, at most one per core at a time)."""
     jobs: dict[str, Callable[[], bytes]] = {"sheets": lambda: render_tex.compile_sheets(sheets, solutions)}
     if key:
         jobs["key"] = lambda: render_tex.compile_sheets(sheets, True, KEY_HEADING)
         jobs["key-table"] = lambda: render_tex.compile_pdf(key_table.render_tex(sheets, render_tex.PREAMBLE),
                                                            render_tex.tex_time_limit(len(sheets)))
-    with ThreadPoolExecutor(max_workers=max(1, min(len(jobs), os.cpu_count() or 1))) as pool:
-        futures = {name: pool.submit(job) for name, job in jobs.items()}
-        return {name: future.result() for name, future in futures.items()}
+    return {name: pool.submit(job) for name, job in jobs.items()}

@@ -19,6 +19,7 @@ from __future__ import annotations
 import html
 import os
 import shutil
+from functools import lru_cache
 from pathlib import Path
 
 from ._text import html_escape, one_line, to_html
@@ -33,6 +34,7 @@ STYLE = """body{font-family:system-ui,sans-serif;max-width:48em;margin:2em auto;
 ol.choices{list-style-type:upper-alpha}math[display=block]{margin:.5em 0}"""
 
 
+@lru_cache(maxsize=16384)  # the answer key repeats every text of the sheets
 def _html(text: str) -> str:
     return to_html(text, mathml)
 
