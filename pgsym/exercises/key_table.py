@@ -18,7 +18,7 @@ from __future__ import annotations
 
 import html
 import json
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 
 from ._text import html_escape, md_escape, tex_escape
 from .model import Sheet
@@ -73,8 +73,9 @@ def render_html(sheets: Sequence[Sheet]) -> str:
     return "\n".join(out) + "\n"
 
 
-def render_tex(sheets: Sequence[Sheet], preamble: str) -> str:
-    """The key table as a LaTeX document (``preamble`` of :mod:`~pgsym.exercises.render_tex`), landscape."""
+def render_tex(sheets: Sequence[Sheet], preamble: Callable[[str], str]) -> str:
+    """The key table as a LaTeX document, landscape; ``preamble(body)`` gives the preamble for the
+    characters of the body (:func:`pgsym.exercises.render_tex.preamble`)."""
     labels, rows = key_rows(sheets)
     t = lambda s: tex_escape(s, unicode=True)  # noqa: E731
     # landscape A4 less margins is 27.3 cm: name and id take 5.4 cm, each column 0.42 cm of separation
@@ -82,14 +83,14 @@ def render_tex(sheets: Sequence[Sheet], preamble: str) -> str:
     cell = r">{\raggedright\arraybackslash\footnotesize}p{" + width + "}"
     spec = r"@{}p{3.2cm}p{2.2cm}*{" + str(len(labels)) + "}{" + cell + "}@{}"
     head = "Name & Id & " + " & ".join(t(lb) for lb in labels) + r" \\ \hline"
-    lines = [preamble, r"\usepackage{longtable,array}", r"\geometry{landscape,margin=1.2cm}",
-             r"\begin{document}", rf"\sheettitle{{{t(TITLE)}}}", r"{\small", rf"\begin{{longtable}}{{{spec}}}",
-             head, r"\endhead"]
+    lines = [rf"\sheettitle{{{t(TITLE)}}}", r"{\small", rf"\begin{{longtable}}{{{spec}}}", head, r"\endhead"]
     for name, sid, answers in rows:
         lines.append(" & ".join([t(name), t(sid)] + [r"\texttt{" + t(answers.get(lb, "")) + "}" for lb in labels])
                      + r" \\ \hline")
     lines += [r"\end{longtable}}", r"\end{document}"]
-    return "\n".join(lines) + "\n"
+    body = "\n".join(lines) + "\n"
+    return (preamble(body) + "\\usepackage{longtable,array}\n\\geometry{landscape,margin=1.2cm}\n\\begin{document}\n"
+            + body)
 
 
 def render_ipynb(sheets: Sequence[Sheet]) -> str:

@@ -98,7 +98,7 @@ def render_all(sheets: Sequence[Sheet], topics: Sequence[tuple[str, int]], forma
             write("sheets.tex", render_tex.render_document(sheets, solutions))
             if key:
                 write("key.tex", render_tex.render_document(sheets, True, KEY_HEADING))
-                write("key-table.tex", key_table.render_tex(sheets, render_tex.PREAMBLE))
+                write("key-table.tex", key_table.render_tex(sheets, render_tex.preamble))
         if "moodle" in formats:
             write("moodle.xml", render_moodle.render_quiz(sheets, solutions))
         if "qti" in formats:
@@ -118,6 +118,6 @@ def _start_pdfs(pool: ThreadPoolExecutor, sheets: Sequence[Sheet], solutions: bo
     jobs: dict[str, Callable[[], bytes]] = {"sheets": lambda: render_tex.compile_sheets(sheets, solutions)}
     if key:
         jobs["key"] = lambda: render_tex.compile_sheets(sheets, True, KEY_HEADING)
-        jobs["key-table"] = lambda: render_tex.compile_pdf(key_table.render_tex(sheets, render_tex.PREAMBLE),
+        jobs["key-table"] = lambda: render_tex.compile_pdf(key_table.render_tex(sheets, render_tex.preamble),
                                                            render_tex.tex_time_limit(len(sheets)))
     return {name: pool.submit(job) for name, job in jobs.items()}

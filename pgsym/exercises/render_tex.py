@@ -35,16 +35,22 @@ from .model import KIND_HINTS, Exercise, Sheet
 #: Fonts of the sheets (Debian: fonts-noto-core, fonts-noto-cjk): the main font covers Latin, Greek and
 #: Cyrillic; luaotfload falls back, glyph by glyph, to the font of the script for everything else.
 MAIN_FONT = "Noto Serif"
-FALLBACK_FONTS = ("Noto Serif CJK SC:mode=harf;", "Noto Naskh Arabic:mode=harf;script=arab;",
-                  "Noto Serif Hebrew:mode=harf;script=hebr;", "Noto Serif Devanagari:mode=harf;script=dev2;",
-                  "Noto Serif Thai:mode=harf;", "Noto Serif Armenian:mode=harf;", "Noto Serif Georgian:mode=harf;")
 
-PREAMBLE = r"""\documentclass[11pt,a4paper]{article}
-% LuaLaTeX: every Unicode name prints (fonts and fallbacks below); right-to-left runs use \textdir TRT
-\usepackage{fontspec}
-\directlua{luaotfload.add_fallback("pgsym", {""" + ", ".join(f'"{f}"' for f in FALLBACK_FONTS) + r"""})}
-\setmainfont{""" + MAIN_FONT + r"""}[Ligatures=TeXOff, RawFeature={fallback=pgsym}]
-% (no TeX ligatures: a name's -- << ,, `` prints as typed)
+#: (first, last code point) ranges of a script → its fallback font (luaotfload's name:features syntax).
+FALLBACKS: tuple[tuple[tuple[tuple[int, int], ...], str], ...] = (
+    (((0x1100, 0x11FF), (0x2E80, 0x9FFF), (0xA960, 0xA97F), (0xAC00, 0xD7FF), (0xF900, 0xFAFF), (0xFE30, 0xFE4F),
+      (0xFF00, 0xFFEF), (0x20000, 0x3FFFF)), "Noto Serif CJK SC:mode=harf;"),
+    (((0x0600, 0x06FF), (0x0750, 0x077F), (0x08A0, 0x08FF), (0xFB50, 0xFDFF), (0xFE70, 0xFEFF)),
+     "Noto Naskh Arabic:mode=harf;script=arab;"),
+    (((0x0590, 0x05FF), (0xFB1D, 0xFB4F)), "Noto Serif Hebrew:mode=harf;script=hebr;"),
+    (((0x0900, 0x097F), (0xA8E0, 0xA8FF)), "Noto Serif Devanagari:mode=harf;script=dev2;"),
+    (((0x0E00, 0x0E7F),), "Noto Serif Thai:mode=harf;"),
+    (((0x0530, 0x058F), (0xFB13, 0xFB17)), "Noto Serif Armenian:mode=harf;"),
+    (((0x10A0, 0x10FF), (0x1C90, 0x1CBF), (0x2D00, 0x2D2F)), "Noto Serif Georgian:mode=harf;"),
+)
+FALLBACK_FONTS = tuple(font for _, font in FALLBACKS)
+
+_PREAMBLE_REST = r"""% (no TeX ligatures: a name's -- << ,, `` prints as typed)
 % no creation date, producer or PTEX keys in the PDF: the same sheets give the same bytes
 \pdfvariable suppressoptionalinfo 1023
 \usepackage{amsmath,amssymb}
@@ -57,6 +63,37 @@ PREAMBLE = r"""\documentclass[11pt,a4paper]{article}
 \newcommand{\sheettitle}[1]{\par{\raggedright\Large\bfseries #1\par}\nopagebreak\medskip}
 \newcommand{\exercisetitle}[1]{\par\bigskip{\raggedright\large\bfseries #1\par}\nopagebreak\smallskip}
 """
+
+
+def fallback_fonts(text: str | None = None) -> list[str]:
+    """The fallback fonts ``text`` needs (all of them for ``None``): loading a font costs TeX time,
+    so a document loads only the scripts it uses.
+
+    >>> fallback_fonts("Ada"), [f.split(":")[0] for f in fallback_fonts("李雷 and محمد")]
+    ([], ['Noto Serif CJK SC', 'Noto Naskh Arabic'])
+    """
+    if text is None:
+        return list(FALLBACK_FONTS)
+    points = {ord(c) for c in text if ord(c) >= 0x0530}
+    return [font for ranges, font in FALLBACKS if any(lo <= p <= hi for p in points for lo, hi in ranges)]
+
+
+def preamble(text: str | None = None) -> str:
+    """The LaTeX preamble, with the fallback fonts for the characters of ``text`` (all for ``None``)."""
+    fonts = fallback_fonts(text)
+    lines = [r"\documentclass[11pt,a4paper]{article}",
+             r"% LuaLaTeX: every Unicode name prints (fonts and fallbacks below); right-to-left runs use \textdir TRT",
+             r"\usepackage{fontspec}"]
+    if fonts:
+        lines.append(r'\directlua{luaotfload.add_fallback("pgsym", {' + ", ".join(f'"{f}"' for f in fonts) + "})}")
+        lines.append(rf"\setmainfont{{{MAIN_FONT}}}[Ligatures=TeXOff, RawFeature={{fallback=pgsym}}]")
+    else:
+        lines.append(rf"\setmainfont{{{MAIN_FONT}}}[Ligatures=TeXOff]")
+    return "\n".join(lines) + "\n" + _PREAMBLE_REST
+
+
+#: The preamble with every fallback font.
+PREAMBLE = preamble()
 
 #: Seconds TeX may take for a document: ``TEX_BASE_SECONDS + TEX_SECONDS_PER_SHEET × sheets``.
 TEX_BASE_SECONDS = 30.0
@@ -121,8 +158,9 @@ def render_document(sheets: Sequence[Sheet], solutions: bool = False, heading: s
     """A complete LaTeX document with every sheet; with solutions, ``\\solutionstrue`` switches them on
     (set ``\\solutionsfalse`` to hide them again). The answer key is ``render_document(sheets, True,
     "Answer key")``."""
-    parts = [PREAMBLE, r"\solutionstrue" if solutions else r"\solutionsfalse", r"\begin{document}"]
-    parts += [render_sheet_body(s, solutions, heading) for s in sheets]
+    body = [render_sheet_body(s, solutions, heading) for s in sheets]
+    parts = [preamble("".join(body)), r"\solutionstrue" if solutions else r"\solutionsfalse", r"\begin{document}",
+             *body]
     parts.append(r"\end{document}")
     return "\n".join(parts) + "\n"
 
