@@ -173,6 +173,7 @@ _TEX_LINE = 500  # characters of escaped text per source line (TeX reads lines i
 # right-to-left scripts: Hebrew, Arabic, Syriac, Thaana, N'Ko, Samaritan, Mandaic and their presentation forms
 _RTL = "\u0590-\u08ff\ufb1d-\ufdff\ufe70-\ufefe"
 _RTL_CHAR = re.compile(f"[{_RTL}]")
+_BIDI_MARKS = frozenset("\u200e\u200f\u061c")  # LRM, RLM, ALM: the direction of a run is set by \textdir
 _RTL_RUN = re.compile(f"[{_RTL}]+(?:[ ]+[{_RTL}]+)*")  # words and the spaces between them, not the ends
 
 
@@ -205,7 +206,10 @@ def tex_escape(text: str, unicode: bool = False) -> str:
     out: list[str] = []
     width = 0
     for i, c in enumerate(text):
-        piece = (_TEX_SPECIAL.get(c) or _TEX_UNICODE.get(c) or c) if unicode else _tex_char(c)
+        if unicode:
+            piece = "" if c in _BIDI_MARKS else (_TEX_SPECIAL.get(c) or _TEX_UNICODE.get(c) or c)
+        else:
+            piece = _tex_char(c)
         if c in _TEX_LIGATURES and i + 1 < len(text) and text[i + 1] == _TEX_LIGATURES[c]:
             piece += "{}"
         out.append(piece)

@@ -87,8 +87,8 @@ def preamble(text: str | None = None) -> str:
     if fonts:
         lines.append(r'\directlua{luaotfload.add_fallback("pgsym", {' + ", ".join(f'"{f}"' for f in fonts) + "})}")
         lines.append(rf"\setmainfont{{{MAIN_FONT}}}[Ligatures=TeXOff, RawFeature={{fallback=pgsym}}]")
-    else:
-        lines.append(rf"\setmainfont{{{MAIN_FONT}}}[Ligatures=TeXOff]")
+    else:  # no fallback needed: TeX's own ligatures and kerning (base mode) take half the time of node mode
+        lines.append(rf"\setmainfont{{{MAIN_FONT}}}[Ligatures=TeXOff, Renderer=Basic]")
     return "\n".join(lines) + "\n" + _PREAMBLE_REST
 
 
