@@ -204,3 +204,36 @@ def test_unicode_ids_get_distinct_file_names(tmp_path):
     assert len(stems) == 3 and all("/" not in s and "." not in s for s in stems)
     render_all(sheets, [("join", 1)], ["md"], tmp_path)
     assert len(list((tmp_path / "md").iterdir())) == 3
+
+
+def test_stop_running_kills_tex_started_from_another_thread():
+    # the PDFs of one run compile in worker threads; an error or Ctrl-C in the main thread stops them
+    import threading
+    import time
+
+    require("lualatex")
+    looping = "\\documentclass{article}\\begin{document}\\def\\x{\\x}\\x\\end{document}"
+    errors: list[Exception] = []
+
+    def compile_forever() -> None:
+        try:
+            compile_pdf(looping, timeout=600)
+        except render_tex.TeXFailedError as err:
+            errors.append(err)
+
+    worker = threading.Thread(target=compile_forever)
+    worker.start()
+    deadline = time.monotonic() + 30
+    while not render_tex._RUNNING and time.monotonic() < deadline:
+        time.sleep(0.05)  # until TeX has started
+    assert render_tex._RUNNING
+    started = time.monotonic()
+    render_tex.stop_running()
+    try:
+        worker.join(timeout=30)
+        assert not worker.is_alive() and time.monotonic() - started < 30
+        assert errors and "failed" in str(errors[0]) and not render_tex._RUNNING
+        with pytest.raises(render_tex.TeXFailedError, match="stopped before TeX started"):
+            compile_pdf(looping, timeout=600)
+    finally:
+        render_tex.allow_running()

@@ -105,10 +105,15 @@ def render_all(sheets: Sequence[Sheet], topics: Sequence[tuple[str, int]], forma
             write("qti.zip", render_qti.render_package(sheets, topics))
         for name, future in pdfs.items():
             write(f"{name}.pdf", future.result())
+    except BaseException:
+        if pdfs:  # an error, Ctrl-C or SIGTERM: stop the TeX runs instead of waiting for them
+            for future in pdfs.values():
+                future.cancel()
+            render_tex.stop_running()
+        raise
     finally:
-        for future in pdfs.values():
-            future.cancel()  # after an error: TeX runs not yet started never start
         pool.shutdown(wait=True)
+        render_tex.allow_running()
     return written
 
 

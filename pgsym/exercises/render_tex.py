@@ -24,6 +24,7 @@ import shutil
 import signal
 import subprocess
 import tempfile
+import threading
 import time
 from collections.abc import Sequence
 from pathlib import Path
@@ -184,25 +185,52 @@ def _tex_environment() -> dict[str, str]:
     return env
 
 
+# TeX runs started from worker threads (several documents at once): an error, Ctrl-C or SIGTERM in the
+# main thread stops them all through stop_running(), and no new run starts until allow_running()
+_RUNNING: set[subprocess.Popen[bytes]] = set()
+_RUNNING_LOCK = threading.Lock()
+_STOPPED = threading.Event()
+
+
+def stop_running() -> None:
+    """Kill every TeX run in progress (each with its process group) and refuse new ones."""
+    with _RUNNING_LOCK:
+        _STOPPED.set()
+        for proc in list(_RUNNING):
+            _kill_group(proc, wait=False)
+
+
+def allow_running() -> None:
+    """Allow TeX runs again (after :func:`stop_running`)."""
+    _STOPPED.clear()
+
+
 def _run_confined(cmd: list[str], cwd: str, timeout: float) -> tuple[int, str]:
     """Run ``cmd`` in its own process group; kill the whole group after ``timeout`` s (or on any error)."""
     with tempfile.TemporaryFile() as out:
-        proc = subprocess.Popen(cmd, cwd=cwd, stdin=subprocess.DEVNULL, stdout=out, stderr=subprocess.STDOUT,
-                                env=_tex_environment(), start_new_session=True)
+        with _RUNNING_LOCK:
+            if _STOPPED.is_set():
+                raise TeXFailedError("stopped before TeX started (another part of the output failed)")
+            proc = subprocess.Popen(cmd, cwd=cwd, stdin=subprocess.DEVNULL, stdout=out, stderr=subprocess.STDOUT,
+                                    env=_tex_environment(), start_new_session=True)
+            _RUNNING.add(proc)
         try:
             code = proc.wait(timeout=timeout)
         finally:
             _kill_group(proc)  # on time-out, on interruption and after a normal end: nothing TeX started survives
+            with _RUNNING_LOCK:
+                _RUNNING.discard(proc)
         out.seek(0)
         return code, out.read()[-4000:].decode("utf-8", "replace")
 
 
-def _kill_group(proc: subprocess.Popen[bytes]) -> None:
+def _kill_group(proc: subprocess.Popen[bytes], wait: bool = True) -> None:
     try:
         os.killpg(proc.pid, signal.SIGKILL)
     except (ProcessLookupError, PermissionError):
         pass
-    proc.wait()
+    if wait:
+        proc.wait()
 
 
 def compile_pdf(tex_source: str, timeout: float | None = None) -> bytes:
