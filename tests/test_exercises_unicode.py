@@ -124,3 +124,13 @@ def test_clean_replaces_exactly_the_unsafe_code_points():
 
     every = "".join(chr(o) for o in range(0x110000))
     assert clean(every) == "".join(REPLACEMENT if unsafe(ord(c)) else c for c in every)
+
+
+def test_a_pdf_with_fallback_fonts_is_byte_reproducible():
+    from pgsym.exercises import render_tex
+    from pgsym.exercises.sheets import build_sheets
+
+    assert shutil.which("lualatex"), "LuaLaTeX is missing: run `make system-deps`"
+    tex = render_tex.render_document(build_sheets(["join"], ROSTER[:3] + ROSTER[8:10], 2), solutions=True)
+    assert "fallback=pgsym" in tex and "Noto Naskh Arabic" in tex  # this document takes the fallback path
+    assert render_tex.compile_pdf(tex) == render_tex.compile_pdf(tex)
