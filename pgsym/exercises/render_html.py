@@ -39,8 +39,11 @@ def _html(text: str) -> str:
     return to_html(text, mathml)
 
 
-def render_sheet(sheet: Sheet, solutions: bool = False, heading: str = "Exercise sheet") -> str:
-    """The HTML page of one sheet (with ``solutions``: the worked solutions in ``<details>``)."""
+def render_sheet(sheet: Sheet, solutions: bool = False, heading: str = "Exercise sheet", *,
+                 mathjax: str | None = None) -> str:
+    """The HTML page of one sheet (with ``solutions``: the worked solutions in ``<details>``, open on
+    the pages of the answer key). ``mathjax`` is accepted for old callers and ignored: the page needs none."""
+    del mathjax
     who = html_escape(sheet.student_name or sheet.student_id)
     title = html.escape(one_line(sheet.student_name or sheet.student_id))  # <title> shows text only, never math
     out = ["<!DOCTYPE html>", '<html lang="en">', "<head>", '<meta charset="utf-8">',
