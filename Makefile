@@ -60,11 +60,17 @@ $(LIVE_BUILT): $(NODE_MODULES) $(INSTALLED) $(LIVE_SOURCES) $(PGSYM_SOURCES) pyp
 live: $(LIVE_BUILT)  ## build the live cells' assets (Pyodide, wheels, editor bundle)
 
 # Debian packages: chromium for the browser test, TeX for the PDF exercise sheets, pdftotext to read them back.
-APT_PACKAGES := chromium texlive-latex-extra texlive-fonts-recommended tex-gyre latexmk lmodern poppler-utils
+# The sheets are typeset by LuaLaTeX with the Noto fonts, so every script prints (Latin, Greek, Cyrillic,
+# CJK, Arabic, Hebrew, Devanagari, Thai, ...): texlive-luatex, fonts-noto-core and fonts-noto-cjk.
+APT_PACKAGES := chromium texlive-latex-extra texlive-fonts-recommended tex-gyre latexmk lmodern poppler-utils \
+                texlive-luatex fonts-noto-core fonts-noto-cjk
 system-deps:  ## install Debian's chromium and TeX (when root), or say how
 	@missing=""; \
 	command -v chromium >/dev/null || missing="$$missing chromium"; \
 	command -v pdflatex >/dev/null && command -v latexmk >/dev/null || missing="$$missing tex"; \
+	command -v lualatex >/dev/null && kpsewhich luaotfload.sty >/dev/null || missing="$$missing texlive-luatex"; \
+	fc-list | grep -q 'Noto Serif CJK SC' || missing="$$missing fonts-noto-cjk"; \
+	fc-list | grep -q 'Noto Naskh Arabic' || missing="$$missing fonts-noto-core"; \
 	command -v pdftotext >/dev/null || missing="$$missing poppler-utils"; \
 	if [ -n "$$missing" ]; then \
 	  if [ "$$(id -u)" = 0 ] && command -v apt-get >/dev/null; then \

@@ -101,7 +101,8 @@ def test_same_seed_same_bytes_other_seed_differs(tmp_path):
     assert run(*args, "--out", str(tmp_path / "a")).returncode == 0
     assert run(*args, "--out", str(tmp_path / "b")).returncode == 0
     files = sorted(p.relative_to(tmp_path / "a") for p in (tmp_path / "a").rglob("*") if p.is_file())
-    assert len(files) == 7
+    # manifest, 2 md, 2 ipynb, sheets.tex, moodle.xml; the key: 2 md, 2 ipynb, key.tex; the key table: md, ipynb, tex
+    assert len(files) == 15
     for f in files:
         assert (tmp_path / "a" / f).read_bytes() == (tmp_path / "b" / f).read_bytes()
 
@@ -145,10 +146,10 @@ def test_unwritable_or_nonempty_output_folder(tmp_path):
 
 
 def test_pdf_without_tex_fails_cleanly(tmp_path):
-    env = {**os.environ, "PATH": str(Path(sys.executable).parent)}  # no pdflatex on this PATH
+    env = {**os.environ, "PATH": str(Path(sys.executable).parent)}  # no TeX on this PATH
     result = run("sheet", "--topics", "join", "--format", "md,pdf", "--out", str(tmp_path / "o"), env=env)
     assert result.returncode == 1
-    assert "pdflatex is not installed" in result.stderr and "apt-get install" in result.stderr
+    assert "LuaLaTeX is not installed" in result.stderr and "apt-get install" in result.stderr
     assert list(tmp_path.iterdir()) == []
 
 

@@ -48,9 +48,12 @@ def test_latex_document(sheets):
     assert r"\textbf{Solution.}" not in render_tex.render_document(sheets, solutions=False)
 
 
-def test_html_page_uses_local_mathjax(sheets):
+def test_html_page_carries_mathml_and_no_script(sheets):
     page = render_html.render_sheet(sheets[1], solutions=True)
-    assert 'src="mathjax/tex-chtml.js"' in page and "http" not in page
+    assert "<script" not in page and "src=" not in page and "href=" not in page
+    # the only address is the MathML namespace, which no browser fetches
+    assert set(re.findall(r"https?://[^\"]*", page)) == {"http://www.w3.org/1998/Math/MathML"}
+    assert page.count("<math ") >= len(TOPICS) and "<mtable>" in page  # matrices too
     assert "Alan_Turing &amp; Co" in page and "<details>" in page
     assert page.count("<h2>") == len(TOPICS)
 
@@ -105,7 +108,7 @@ def require(tool: str) -> None:
 
 
 def test_pdf_contains_the_questions(tmp_path, sheets):
-    require("pdflatex")
+    require("lualatex")
     require("pdftotext")
     pdf = compile_pdf(render_tex.render_document(sheets, solutions=False))
     assert pdf.startswith(b"%PDF")
@@ -122,7 +125,7 @@ def test_pdf_contains_the_questions(tmp_path, sheets):
 
 
 def test_pdf_is_reproducible(sheets):
-    require("pdflatex")
+    require("lualatex")
     tex = render_tex.render_document(sheets[:1])
     assert compile_pdf(tex) == compile_pdf(tex)
 
@@ -151,11 +154,48 @@ def test_atomic_output_leaves_nothing_on_error(tmp_path, sheets, monkeypatch):
         write_new_folder(blocker / "out", lambda d: None)
 
 
-def test_html_output_copies_mathjax(tmp_path, sheets):
-    render_all(sheets, [("join", 1)], ["html"], tmp_path)
-    assert (tmp_path / "html" / "mathjax" / "tex-chtml.js").is_file()
+def test_html_output_needs_no_mathjax(tmp_path, sheets):
+    render_all(sheets, [("join", 1)], ["html"], tmp_path, mathjax=tmp_path / "ignored")
+    assert not (tmp_path / "html" / "mathjax").exists()
+    assert sorted(p.name for p in (tmp_path / "html").iterdir()) == ["sheet-s001.html", "sheet-s002.html"]
     with pytest.raises(render_html.MathJaxMissingError):
         render_html.find_mathjax(tmp_path / "nowhere")
+
+
+def test_one_run_writes_sheets_key_and_key_table(tmp_path, sheets):
+    formats = ["md", "tex", "html", "ipynb", "moodle", "qti"]
+    render_all(sheets, [(t.split(":")[0], 1) for t in TOPICS], formats, tmp_path)
+    names = {str(p.relative_to(tmp_path)) for p in tmp_path.rglob("*") if p.is_file()}
+    for fmt in ("md", "html", "ipynb"):
+        for s in sheets:
+            assert f"{fmt}/{s.file_stem}.{fmt}" in names and f"key/{fmt}/{s.file_stem}.{fmt}" in names
+        assert f"key-table.{fmt}" in names
+    assert {"sheets.tex", "key.tex", "key-table.tex", "moodle.xml", "qti.zip", "manifest.json"} <= names
+    # the sheets hide the solutions, the key shows every student's
+    first = sheets[0].exercises[0].parts[0].answer
+    for fmt in ("md", "html"):
+        sheet = (tmp_path / fmt / f"{sheets[0].file_stem}.{fmt}").read_text()
+        key = (tmp_path / "key" / fmt / f"{sheets[0].file_stem}.{fmt}").read_text()
+        assert "Solution" not in sheet and key.count("Solution") >= len(TOPICS)
+    assert r"\solutionsfalse" in (tmp_path / "sheets.tex").read_text()
+    assert r"\solutionstrue" in (tmp_path / "key.tex").read_text()
+    # the key table: one row per student with the canonical answer of every question
+    table = (tmp_path / "key-table.md").read_text().splitlines()
+    assert table[2].startswith("| Name | Id | 1 | 2 | 3 |")
+    row = next(line for line in table if "| s001 |" in line)
+    assert f"`{first.display()}`" in row
+    assert all(f"`{p.answer.display()}`" in row for ex in sheets[0].exercises for p in ex.parts)
+    nb = json.loads((tmp_path / "key-table.ipynb").read_text())
+    assert "".join(nb["cells"][0]["source"]) == (tmp_path / "key-table.md").read_text()
+    html_table = (tmp_path / "key-table.html").read_text()
+    assert html_table.count("<tr>") == 1 + len(sheets) and "Alan_Turing &amp; Co" in html_table
+
+
+def test_practice_sheets_and_no_key(tmp_path, sheets):
+    render_all(sheets, [("join", 1)], ["md"], tmp_path, solutions=True, key=False)
+    assert sorted(str(p.relative_to(tmp_path)) for p in tmp_path.rglob("*") if p.is_file()) == [
+        "manifest.json", "md/sheet-s001.md", "md/sheet-s002.md"]
+    assert "Solution" in (tmp_path / "md" / "sheet-s001.md").read_text()
 
 
 def test_unicode_ids_get_distinct_file_names(tmp_path):
@@ -164,3 +204,36 @@ def test_unicode_ids_get_distinct_file_names(tmp_path):
     assert len(stems) == 3 and all("/" not in s and "." not in s for s in stems)
     render_all(sheets, [("join", 1)], ["md"], tmp_path)
     assert len(list((tmp_path / "md").iterdir())) == 3
+
+
+def test_stop_running_kills_tex_started_from_another_thread():
+    # the PDFs of one run compile in worker threads; an error or Ctrl-C in the main thread stops them
+    import threading
+    import time
+
+    require("lualatex")
+    looping = "\\documentclass{article}\\begin{document}\\def\\x{\\x}\\x\\end{document}"
+    errors: list[Exception] = []
+
+    def compile_forever() -> None:
+        try:
+            compile_pdf(looping, timeout=600)
+        except render_tex.TeXFailedError as err:
+            errors.append(err)
+
+    worker = threading.Thread(target=compile_forever)
+    worker.start()
+    deadline = time.monotonic() + 30
+    while not render_tex._RUNNING and time.monotonic() < deadline:
+        time.sleep(0.05)  # until TeX has started
+    assert render_tex._RUNNING
+    started = time.monotonic()
+    render_tex.stop_running()
+    try:
+        worker.join(timeout=30)
+        assert not worker.is_alive() and time.monotonic() - started < 30
+        assert errors and "failed" in str(errors[0]) and not render_tex._RUNNING
+        with pytest.raises(render_tex.TeXFailedError, match="stopped before TeX started"):
+            compile_pdf(looping, timeout=600)
+    finally:
+        render_tex.allow_running()

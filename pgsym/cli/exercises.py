@@ -20,20 +20,29 @@ _EPILOG_SHEET = """\b
 Examples:
   pgsym sheet --topics join,meet:2,cross-ratio --count 30 --seed 2026 --format md,pdf --out week4
   pgsym sheet --topics homography4:2,decompose --roster students.csv --seed 7 \\
-              --format html,ipynb,moodle --solutions --out quiz
-  pgsym sheet --templates my_templates --topics midpoint --count 5 --seed 1 --out demo
+              --format pdf,html,ipynb,qti,moodle --out quiz
+  pgsym sheet --templates my_templates --topics midpoint --count 5 --seed 1 --solutions-in-sheets --out demo
 
 \b
 Topics are template names, optionally with a level (topic:level); 'pgsym templates list' shows them.
 A variant is fixed by (seed, student id, topic and its occurrence), so reordering or adding topics
-keeps the other exercises. The output folder must be new or empty; it holds manifest.json (the
-answer key, used by 'pgsym check') and md/, html/, ipynb/, sheets.tex, sheets.pdf, moodle.xml;
-on any error (or Ctrl-C) nothing is left behind.
+keeps the other exercises. The output folder must be new or empty; on any error (or Ctrl-C) nothing
+is left behind. One run writes, for each format, the student sheets, the answer key (every
+student's worked solutions) and the key table (student x question -> canonical answer):
+  manifest.json                     the answer key read by 'pgsym check'
+  md/ html/ ipynb/                  student sheets (no solutions unless --solutions-in-sheets)
+  key/md/ key/html/ key/ipynb/      the answer key, one file per student
+  key-table.md .html .ipynb         the key table of the class
+  sheets.tex/.pdf key.tex/.pdf key-table.tex/.pdf
+  moodle.xml                        Moodle XML (one category per topic)
+  qti.zip                           Canvas QTI 1.2 (a question bank per topic, a quiz of question groups)
+HTML pages carry their math as MathML: no script, no network, nothing to install.
 
 \b
-Names, ids and titles are printed as text in every format, never run as LaTeX, Markdown, HTML
-or Cloze. pdflatex runs without shell escape, with openin_any=p and openout_any=p, in a
-temporary folder, for at most 30 s + 2 s per sheet; a sheet that fails names its student."""
+Names, ids and titles are printed as text in every format, never run as LaTeX, Markdown, HTML,
+XML or Cloze; PDFs print every script (LuaLaTeX with the Noto fonts: 'make system-deps').
+LuaLaTeX runs without shell escape, with openin_any=p and openout_any=p, in a temporary
+folder, for at most 30 s + 2 s per sheet; a sheet that fails names its student."""
 
 _EPILOG_CHECK = f"""\b
 Examples:
@@ -105,23 +114,36 @@ class _NoBar:
 @click.option("--seed", type=int, default=0, show_default=True, help="Master seed of the whole set.")
 @click.option("--roster", type=click.Path(dir_okay=False), help="CSV with an 'id' column (and optionally 'name').")
 @click.option("--format", "formats", default="md", show_default=True,
-              help="Comma-separated: md,tex,pdf,html,ipynb,moodle.")
+              help="Comma-separated: md,tex,pdf,html,ipynb,moodle,qti.")
 @click.option("--level", type=click.IntRange(1, 9), default=1, show_default=True,
               help="Level of topics given without one.")
-@click.option("--solutions", is_flag=True, help="Include worked solutions and answers.")
+@click.option("--solutions-in-sheets", "solutions_in_sheets", is_flag=True,
+              help="Put the worked solutions into the student sheets too (practice sheets).")
+@click.option("--solutions", "old_solutions", is_flag=True, hidden=True,
+              help="Deprecated spelling of --solutions-in-sheets.")
+@click.option("--key/--no-key", default=True, show_default=True,
+              help="Also write the answer key and the key table.")
 @click.option("--out", "out", required=True, type=click.Path(file_okay=False), help="New (or empty) output folder.")
 @click.option("--templates", "template_dirs", multiple=True, type=click.Path(file_okay=False),
               help="Folder of instructor templates (*.py); may be repeated.")
-@click.option("--mathjax", type=click.Path(file_okay=False),
-              help="MathJax 3 es5 folder for HTML (copied next to the pages).")
+@click.option("--mathjax", type=click.Path(file_okay=False), hidden=True,
+              help="Deprecated and ignored: the HTML pages carry MathML and need no MathJax.")
 @click.option("--progress/--no-progress", default=None, help="Show a progress bar (default: for 50 sheets or more).")
-def sheet_command(topics: str, count: int, seed: int, roster: str | None, formats: str, level: int, solutions: bool,
-                  out: str, template_dirs: tuple[str, ...], mathjax: str | None, progress: bool | None) -> None:
-    """Generate per-student exercise sheets, their answer key and renderings."""
+def sheet_command(topics: str, count: int, seed: int, roster: str | None, formats: str, level: int,
+                  solutions_in_sheets: bool, old_solutions: bool, key: bool, out: str, template_dirs: tuple[str, ...],
+                  mathjax: str | None, progress: bool | None) -> None:
+    """Generate per-student exercise sheets, their answer key and key table, in every requested format."""
     from ..atomic import Terminated, write_new_folder
     from ..exercises.output import parse_formats, render_all
     from ..exercises.sheets import anonymous_students, build_sheets, parse_topics, read_roster
 
+    if old_solutions:
+        click.echo("warning: --solutions is deprecated; use --solutions-in-sheets (the answer key is written "
+                   "in any case, under key/)", err=True)
+    if mathjax:
+        click.echo("warning: --mathjax is deprecated and ignored; the HTML sheets carry their math as MathML "
+                   "and need no MathJax", err=True)
+    solutions = solutions_in_sheets or old_solutions
     _load_folders(template_dirs)
     try:
         fmt = parse_formats(formats)
@@ -134,14 +156,16 @@ def sheet_command(topics: str, count: int, seed: int, roster: str | None, format
         with _progress(len(students), "building sheets", show) as bar:
             sheets = build_sheets(pairs, students, seed, progress=bar.update)
         with _progress(len(students), "rendering", show) as bar:
-            target = write_new_folder(out, lambda tmp: render_all(sheets, pairs, fmt, tmp, solutions, mathjax,
-                                                                  progress=bar.update))
+            target = write_new_folder(out, lambda tmp: render_all(sheets, pairs, fmt, tmp, solutions,
+                                                                  progress=bar.update, key=key))
     except PgsymError as err:
         raise fail(err) from None
     except Terminated:
         click.echo("stopped by SIGTERM; nothing was written", err=True)
         sys.exit(143)
-    click.echo(f"{len(sheets)} sheet(s) × {len(pairs)} exercise(s) → {target} ({', '.join(fmt)}; manifest.json)")
+    what = "sheets, answer key and key table" if key else "sheets"
+    click.echo(f"{len(sheets)} sheet(s) × {len(pairs)} exercise(s) → {target} ({what} as {', '.join(fmt)}; "
+               "manifest.json)")
 
 
 @click.command("check", epilog=_EPILOG_CHECK)

@@ -13,6 +13,7 @@ LaTeX      :func:`tex_escape`   :func:`to_tex`
 Markdown   :func:`md_escape`    :func:`to_md` (MyST pages and notebook cells)
 HTML       :func:`html_escape`  :func:`to_html`
 Moodle     :func:`cloze_escape` :func:`to_moodle` (HTML inside CDATA, Cloze characters as entities)
+QTI (XML)  :func:`xml_escape`   :func:`to_html`, then :func:`xml_escape` (HTML carried as text)
 =========  ===================  =========================
 
 Math is kept as math only when :func:`math_is_safe` accepts it: ASCII, balanced braces, and only
@@ -33,6 +34,7 @@ from __future__ import annotations
 
 import html
 import re
+from collections.abc import Callable
 
 _MATH = re.compile(r"\$\$(.+?)\$\$|\$(.+?)\$", re.S)
 _BOLD = re.compile(r"\*\*(.+?)\*\*")
@@ -62,6 +64,8 @@ _ENV = re.compile(r"\\(?:begin|end)\s*\{([A-Za-z*]*)\}")
 # bidirectional embeddings, overrides and isolates reorder what a reader sees: never pass them on
 _BIDI = frozenset("\u202a\u202b\u202c\u202d\u202e\u2066\u2067\u2068\u2069")
 REPLACEMENT = "\ufffd"
+# C0 controls but tab and newline, DEL and C1, the bidi controls above, surrogates, U+FFFE and U+FFFF
+_UNSAFE = re.compile("[\x00-\x08\x0b-\x1f\x7f-\x9f\u202a-\u202e\u2066-\u2069\ud800-\udfff\ufffe\uffff]")
 
 
 def clean(text: str) -> str:
@@ -71,12 +75,7 @@ def clean(text: str) -> str:
     >>> clean("a\\x00b\\u202ec\\n")
     'a\\ufffdb\\ufffdc\\n'
     """
-    def bad(c: str) -> bool:
-        o = ord(c)
-        return ((o < 32 and c not in "\n\t") or 0x7F <= o < 0xA0 or c in _BIDI or 0xD800 <= o < 0xE000
-                or o in (0xFFFE, 0xFFFF))
-
-    return "".join(REPLACEMENT if bad(c) else c for c in str(text))
+    return _UNSAFE.sub(REPLACEMENT, str(text))
 
 
 def one_line(text: str) -> str:
@@ -171,6 +170,11 @@ _TEX_UNICODE = {"⊂": r"$\subset$", "↔": r"$\leftrightarrow$", "×": r"$\time
                 "−": "-", "…": r"\dots{}", "’": "'"}
 _TEX_LIGATURES = {"-": "-", "<": "<", ">": ">", ",": ",", "'": "'", "`": "`", "!": "`", "?": "`"}
 _TEX_LINE = 500  # characters of escaped text per source line (TeX reads lines into a fixed buffer)
+# right-to-left scripts: Hebrew, Arabic, Syriac, Thaana, N'Ko, Samaritan, Mandaic and their presentation forms
+_RTL = "\u0590-\u08ff\ufb1d-\ufdff\ufe70-\ufefe"
+_RTL_CHAR = re.compile(f"[{_RTL}]")
+_BIDI_MARKS = frozenset("\u200e\u200f\u061c")  # LRM, RLM, ALM: the direction of a run is set by \textdir
+_RTL_RUN = re.compile(f"[{_RTL}]+(?:[ ]+[{_RTL}]+)*")  # words and the spaces between them, not the ends
 
 
 def _tex_char(c: str) -> str:
@@ -182,36 +186,50 @@ def _tex_char(c: str) -> str:
     return c if (" " <= c <= "~") or ("\u00a0" <= c <= "\u00ff" and c != "\u00ad") else "?"
 
 
-def tex_escape(text: str) -> str:
+def tex_escape(text: str, unicode: bool = False) -> str:
     """Plain text as LaTeX that typesets exactly these characters: every special character escaped,
     ligatures (``--``, ``<<``, ``,,``, ``!```) broken with ``{}``, line breaks as spaces, characters
     outside Latin-1 as ``?``; long text is cut into source lines with ``%`` (TeX's line buffer is finite).
 
+    With ``unicode=True`` (for LuaLaTeX with the fonts of :mod:`pgsym.exercises.render_tex`) every
+    character is kept, and a run of right-to-left letters (Arabic, Hebrew, …) is set right to left
+    in ``{\\textdir TRT ...}``, so a PDF reader extracts it in its logical order.
+
     >>> print(tex_escape(r"$\\def\\x{\\x}$ 100% #1 a--b"))
     \\$\\textbackslash{}def\\textbackslash{}x\\{\\textbackslash{}x\\}\\$ 100\\% \\#1 a-{}-b
+    >>> tex_escape("李雷 & José"), tex_escape("李雷 & José", unicode=True)
+    ('?? \\\\& José', '李雷 \\\\& José')
+    >>> print(tex_escape("Ali علي حسن", unicode=True))
+    Ali {\\textdir TRT علي حسن}
     """
     text = clean(text)
     out: list[str] = []
     width = 0
     for i, c in enumerate(text):
-        piece = _tex_char(c)
+        if unicode:
+            piece = "" if c in _BIDI_MARKS else (_TEX_SPECIAL.get(c) or _TEX_UNICODE.get(c) or c)
+        else:
+            piece = _tex_char(c)
         if c in _TEX_LIGATURES and i + 1 < len(text) and text[i + 1] == _TEX_LIGATURES[c]:
             piece += "{}"
         out.append(piece)
         width += len(piece)
         # '%' + newline joins two source lines without a space; never before a space (TeX would drop it)
-        if width >= _TEX_LINE and i + 1 < len(text) and text[i + 1] not in " \t\n":
+        if width >= _TEX_LINE and i + 1 < len(text) and text[i + 1] not in " \t\n" and not (
+                unicode and _RTL_CHAR.match(c)):
             out.append("%\n")
             width = 0
-    return "".join(out)
+    escaped = "".join(out)
+    return _RTL_RUN.sub(lambda m: "{\\textdir TRT " + m.group(0) + "}", escaped) if unicode else escaped
 
 
-def to_tex(text: str) -> str:
-    """LaTeX source of a text in the small format: prose escaped, safe math kept, ``**bold**`` as ``\\textbf``."""
+def to_tex(text: str, unicode: bool = False) -> str:
+    """LaTeX source of a text in the small format: prose escaped, safe math kept, ``**bold**`` as ``\\textbf``
+    (``unicode`` as in :func:`tex_escape`)."""
     parts = []
     for kind, content in segments(text):
         if kind == "text":
-            parts.append("".join(r"\textbf{" + tex_escape(p) + "}" if bold else tex_escape(p)
+            parts.append("".join(r"\textbf{" + tex_escape(p, unicode) + "}" if bold else tex_escape(p, unicode)
                                  for bold, p in _bold_pieces(content)))
         elif kind == "math":
             parts.append(f"${content}$")
@@ -313,8 +331,9 @@ def html_escape(text: str) -> str:
     return _html_prose(one_line(text))
 
 
-def to_html(text: str) -> str:
-    """HTML of a text in the small format: prose escaped, safe math as ``\\(...\\)`` and ``\\[...\\]`` for MathJax.
+def to_html(text: str, math: Callable[[str, bool], str] | None = None) -> str:
+    """HTML of a text in the small format: prose escaped, safe math as ``\\(...\\)`` and ``\\[...\\]`` for MathJax,
+    or, given ``math``, as ``math(tex, display)`` (e.g. MathML made at generation time).
 
     >>> to_html("a < b, $x<y$")
     'a &lt; b, \\\\(x&lt;y\\\\)'
@@ -324,6 +343,8 @@ def to_html(text: str) -> str:
         if kind == "text":
             parts.append("".join(f"<b>{_html_prose(p)}</b>" if bold else _html_prose(p)
                                  for bold, p in _bold_pieces(content)))
+        elif math is not None:
+            parts.append(math(content, kind == "display"))
         elif kind == "math":
             parts.append(r"\(" + html.escape(content, quote=False) + r"\)")
         else:
@@ -375,6 +396,18 @@ def moodle_escape(text: str) -> str:
     '&#93;&#93;&gt; &#123;&#35;1&#125;'
     """
     return _html_prose(one_line(text), cloze=True)
+
+
+# ---------------------------------------------------------------- XML (QTI)
+
+def xml_escape(text: str) -> str:
+    """Text (plain, or HTML to be carried *as text*) for an XML element or a quoted attribute: after
+    :func:`clean` (XML 1.0 forbids most control characters), ``& < > " '`` become entities.
+
+    >>> xml_escape('<b a="1">Tom & Jerry\x07</b>')
+    '&lt;b a=&quot;1&quot;&gt;Tom &amp; Jerry\ufffd&lt;/b&gt;'
+    """
+    return html.escape(clean(text), quote=True).replace("&#x27;", "&apos;")
 
 
 def to_plain(text: str) -> str:

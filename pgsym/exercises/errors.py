@@ -53,11 +53,11 @@ class TemplateError(PgsymError, ValueError):
 
 
 class TeXMissingError(PgsymError, RuntimeError):
-    """pdflatex (or latexmk) is not installed, so no PDF can be made."""
+    """LuaLaTeX is not installed, so no PDF can be made."""
 
 
 class TeXFailedError(PgsymError, RuntimeError):
-    """pdflatex ran but failed; the message holds the end of its log."""
+    """LuaLaTeX ran but failed; the message holds the end of its log."""
 
 
 class UnparsableAnswerError(PgsymError, ValueError):

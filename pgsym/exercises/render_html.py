@@ -1,16 +1,16 @@
-"""HTML renderer: one self-contained page per sheet, math typeset by a local copy of MathJax.
+"""HTML renderer: one self-contained page per sheet, math as MathML made at generation time.
 
 Names, ids and titles go through :func:`~pgsym.exercises._text.html_escape` and exercise text through
-:func:`~pgsym.exercises._text.to_html`: no user text becomes a tag, an entity or math (text with a
-backslash or dollar sits in a span MathJax is told to ignore).
+:func:`~pgsym.exercises._text.to_html` with :func:`~pgsym.exercises.html_math.mathml`: no user text
+becomes a tag or an entity, and the pages hold no script at all, so they open offline right after
+``pip install pgsym`` (browsers render MathML themselves).
 
-The page loads ``mathjax/tex-chtml.js`` relative to itself; :func:`copy_mathjax` copies MathJax's
-``es5`` folder there (from ``--mathjax DIR``, the ``PGSYM_MATHJAX`` variable, or a ``node_modules``/
-``_mathjax`` folder of the project). No CDN is used.
+:func:`copy_mathjax` and :func:`find_mathjax` remain for callers that still copy MathJax (the
+``--mathjax`` option of ``pgsym sheet`` is deprecated and ignored); the pages do not need it.
 
 >>> from pgsym.exercises.sheets import build_sheet
 >>> page = render_sheet(build_sheet(["ideal"], "s1", "", 1), solutions=True)
->>> 'src="mathjax/tex-chtml.js"' in page and "<details>" in page
+>>> "<math " in page and "<script" not in page and "<details>" in page
 True
 """
 
@@ -19,48 +19,54 @@ from __future__ import annotations
 import html
 import os
 import shutil
+from functools import lru_cache
 from pathlib import Path
 
-from ._text import NO_MATH_CLASS, html_escape, one_line, to_html
+from ._text import html_escape, one_line, to_html
 from .errors import MathJaxMissingError
+from .html_math import mathml
 from .model import KIND_HINTS, Sheet
 
 MATHJAX_DIR = "mathjax"
 
-
-
 STYLE = """body{font-family:system-ui,sans-serif;max-width:48em;margin:2em auto;padding:0 1em;line-height:1.5}
 .form{color:#555}.part{margin:.6em 0}details{background:#f4f6f8;padding:.4em .8em;border-radius:4px}
-ol.choices{list-style-type:upper-alpha}"""
+ol.choices{list-style-type:upper-alpha}math[display=block]{margin:.5em 0}"""
 
 
-def render_sheet(sheet: Sheet, solutions: bool = False, mathjax: str = f"{MATHJAX_DIR}/tex-chtml.js") -> str:
-    """The HTML page of one sheet; ``mathjax`` is the (relative) address of ``tex-chtml.js``."""
+@lru_cache(maxsize=16384)  # the answer key repeats every text of the sheets
+def _html(text: str) -> str:
+    return to_html(text, mathml)
+
+
+def render_sheet(sheet: Sheet, solutions: bool = False, heading: str = "Exercise sheet", *,
+                 mathjax: str | None = None) -> str:
+    """The HTML page of one sheet (with ``solutions``: the worked solutions in ``<details>``, open on
+    the pages of the answer key). ``mathjax`` is accepted for old callers and ignored: the page needs none."""
+    del mathjax
     who = html_escape(sheet.student_name or sheet.student_id)
     title = html.escape(one_line(sheet.student_name or sheet.student_id))  # <title> shows text only, never math
     out = ["<!DOCTYPE html>", '<html lang="en">', "<head>", '<meta charset="utf-8">',
-           f"<title>Exercise sheet: {title}</title>", f"<style>{STYLE}</style>",
-           "<script>window.MathJax = {tex: {inlineMath: [['\\\\(', '\\\\)']], displayMath: [['\\\\[', '\\\\]']]}, "
-           f"options: {{ignoreHtmlClass: '{NO_MATH_CLASS}'}}}};</script>",
-           f'<script id="MathJax-script" async src="{html.escape(mathjax)}"></script>', "</head>",
-           "<body>", f"<h1>Exercise sheet: {who}</h1>",
+           f"<title>{html.escape(heading)}: {title}</title>", f"<style>{STYLE}</style>", "</head>",
+           "<body>", f"<h1>{html.escape(heading)}: {who}</h1>",
            f'<p class="form">Student id: <code>{html_escape(sheet.student_id)}</code> · Form id: '
            f"<code>{html_escape(sheet.form_id)}</code></p>",
            "<p>Give exact answers; homogeneous coordinates are accepted up to a nonzero scale.</p>"]
     for ex in sheet.exercises:
         out.append(f"<h2>Exercise {ex.slot}: {html_escape(ex.title)}</h2>")
-        out.append(f"<p>{to_html(ex.statement)}</p>")
+        out.append(f"<p>{_html(ex.statement)}</p>")
         for part in ex.parts:
-            out.append(f'<div class="part"><b>[{part.label}]</b> {to_html(part.prompt)} '
+            out.append(f'<div class="part"><b>[{part.label}]</b> {_html(part.prompt)} '
                        f"<i>Answer format: {html.escape(KIND_HINTS[part.answer.kind])}.</i>")
             if part.choices:
-                out.append('<ol class="choices">' + "".join(f"<li>{to_html(c)}</li>" for c in part.choices) + "</ol>")
+                out.append('<ol class="choices">' + "".join(f"<li>{_html(c)}</li>" for c in part.choices) + "</ol>")
             out.append("</div>")
         if solutions:
-            out.append("<details><summary>Solution</summary><ol>")
-            out += [f"<li>{to_html(step)}</li>" for step in ex.solution]
+            out.append("<details open><summary>Solution</summary><ol>" if heading != "Exercise sheet"
+                       else "<details><summary>Solution</summary><ol>")
+            out += [f"<li>{_html(step)}</li>" for step in ex.solution]
             out.append("</ol>")
-            out += [f"<p><b>Answer [{p.label}]:</b> {to_html('$' + p.answer.latex() + '$')}</p>"
+            out += [f"<p><b>Answer [{p.label}]:</b> {_html('$' + p.answer.latex() + '$')}</p>"
                     for p in ex.parts]
             out.append("</details>")
     out += ["</body>", "</html>"]

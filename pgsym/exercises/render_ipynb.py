@@ -17,9 +17,10 @@ from __future__ import annotations
 import json
 from typing import Any
 
-from ._text import md_escape, to_md
+from ._text import md_escape
 from .answers import answer_digest
 from .model import KIND_HINTS, Sheet
+from .render_md import to_md  # the cached conversion
 
 
 def _md(text: str) -> dict[str, Any]:

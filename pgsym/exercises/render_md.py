@@ -11,8 +11,14 @@ True
 
 from __future__ import annotations
 
-from ._text import md_escape, to_md
+from functools import lru_cache
+
+from ._text import md_escape
+from ._text import to_md as _to_md
 from .model import KIND_HINTS, Exercise, Sheet
+
+# the answer key repeats every text of the sheets: convert each text once
+to_md = lru_cache(maxsize=16384)(_to_md)
 
 
 def _exercise(ex: Exercise, solutions: bool) -> list[str]:

@@ -1,4 +1,8 @@
-"""LaTeX renderer (one document with every sheet, one sheet per page group) and PDF through pdflatex.
+"""LaTeX renderer (one document with every sheet, one sheet per page group) and PDF through LuaLaTeX.
+
+LuaLaTeX with the Noto fonts typesets every name as it is (Latin, Greek, Cyrillic, Chinese, Japanese,
+Korean, Arabic, Hebrew, Devanagari, Thai, …): luaotfload falls back to the font of each script, and
+right-to-left runs are set right to left, so ``pdftotext`` gives every name back exactly.
 
 User text never reaches TeX as code: names, ids and titles go through
 :func:`~pgsym.exercises._text.tex_escape`, exercise text through :func:`~pgsym.exercises._text.to_tex`
@@ -20,6 +24,7 @@ import shutil
 import signal
 import subprocess
 import tempfile
+import threading
 import time
 from collections.abc import Sequence
 from pathlib import Path
@@ -28,10 +33,27 @@ from ._text import one_line, tex_escape, to_tex
 from .errors import TeXFailedError, TeXMissingError
 from .model import KIND_HINTS, Exercise, Sheet
 
-PREAMBLE = r"""\documentclass[11pt,a4paper]{article}
-\usepackage[utf8]{inputenc}
-\usepackage[T1]{fontenc}
-\usepackage{lmodern}
+#: Fonts of the sheets (Debian: fonts-noto-core, fonts-noto-cjk): the main font covers Latin, Greek and
+#: Cyrillic; luaotfload falls back, glyph by glyph, to the font of the script for everything else.
+MAIN_FONT = "Noto Serif"
+
+#: (first, last code point) ranges of a script → its fallback font (luaotfload's name:features syntax).
+FALLBACKS: tuple[tuple[tuple[tuple[int, int], ...], str], ...] = (
+    (((0x1100, 0x11FF), (0x2E80, 0x9FFF), (0xA960, 0xA97F), (0xAC00, 0xD7FF), (0xF900, 0xFAFF), (0xFE30, 0xFE4F),
+      (0xFF00, 0xFFEF), (0x20000, 0x3FFFF)), "Noto Serif CJK SC:mode=harf;"),
+    (((0x0600, 0x06FF), (0x0750, 0x077F), (0x08A0, 0x08FF), (0xFB50, 0xFDFF), (0xFE70, 0xFEFF)),
+     "Noto Naskh Arabic:mode=harf;script=arab;"),
+    (((0x0590, 0x05FF), (0xFB1D, 0xFB4F)), "Noto Serif Hebrew:mode=harf;script=hebr;"),
+    (((0x0900, 0x097F), (0xA8E0, 0xA8FF)), "Noto Serif Devanagari:mode=harf;script=dev2;"),
+    (((0x0E00, 0x0E7F),), "Noto Serif Thai:mode=harf;"),
+    (((0x0530, 0x058F), (0xFB13, 0xFB17)), "Noto Serif Armenian:mode=harf;"),
+    (((0x10A0, 0x10FF), (0x1C90, 0x1CBF), (0x2D00, 0x2D2F)), "Noto Serif Georgian:mode=harf;"),
+)
+FALLBACK_FONTS = tuple(font for _, font in FALLBACKS)
+
+_PREAMBLE_REST = r"""% (no TeX ligatures: a name's -- << ,, `` prints as typed)
+% no creation date, producer or PTEX keys in the PDF: the same sheets give the same bytes
+\pdfvariable suppressoptionalinfo 1023
 \usepackage{amsmath,amssymb}
 \usepackage[margin=2.2cm]{geometry}
 \usepackage{enumitem}
@@ -42,6 +64,37 @@ PREAMBLE = r"""\documentclass[11pt,a4paper]{article}
 \newcommand{\sheettitle}[1]{\par{\raggedright\Large\bfseries #1\par}\nopagebreak\medskip}
 \newcommand{\exercisetitle}[1]{\par\bigskip{\raggedright\large\bfseries #1\par}\nopagebreak\smallskip}
 """
+
+
+def fallback_fonts(text: str | None = None) -> list[str]:
+    """The fallback fonts ``text`` needs (all of them for ``None``): loading a font costs TeX time,
+    so a document loads only the scripts it uses.
+
+    >>> fallback_fonts("Ada"), [f.split(":")[0] for f in fallback_fonts("李雷 and محمد")]
+    ([], ['Noto Serif CJK SC', 'Noto Naskh Arabic'])
+    """
+    if text is None:
+        return list(FALLBACK_FONTS)
+    points = {ord(c) for c in text if ord(c) >= 0x0530}
+    return [font for ranges, font in FALLBACKS if any(lo <= p <= hi for p in points for lo, hi in ranges)]
+
+
+def preamble(text: str | None = None) -> str:
+    """The LaTeX preamble, with the fallback fonts for the characters of ``text`` (all for ``None``)."""
+    fonts = fallback_fonts(text)
+    lines = [r"\documentclass[11pt,a4paper]{article}",
+             r"% LuaLaTeX: every Unicode name prints (fonts and fallbacks below); right-to-left runs use \textdir TRT",
+             r"\usepackage{fontspec}"]
+    if fonts:
+        lines.append(r'\directlua{luaotfload.add_fallback("pgsym", {' + ", ".join(f'"{f}"' for f in fonts) + "})}")
+        lines.append(rf"\setmainfont{{{MAIN_FONT}}}[Ligatures=TeXOff, RawFeature={{fallback=pgsym}}]")
+    else:  # no fallback needed: TeX's own ligatures and kerning (base mode) take half the time of node mode
+        lines.append(rf"\setmainfont{{{MAIN_FONT}}}[Ligatures=TeXOff, Renderer=Basic]")
+    return "\n".join(lines) + "\n" + _PREAMBLE_REST
+
+
+#: The preamble with every fallback font.
+PREAMBLE = preamble()
 
 #: Seconds TeX may take for a document: ``TEX_BASE_SECONDS + TEX_SECONDS_PER_SHEET × sheets``.
 TEX_BASE_SECONDS = 30.0
@@ -57,15 +110,23 @@ def tex_time_limit(sheets: int) -> float:
     return TEX_BASE_SECONDS + TEX_SECONDS_PER_SHEET * max(1, sheets)
 
 
+def _t(text: str) -> str:
+    return tex_escape(text, unicode=True)
+
+
+def _tx(text: str) -> str:
+    return to_tex(text, unicode=True)
+
+
 def _exercise(ex: Exercise) -> list[str]:
-    lines = [rf"\exercisetitle{{Exercise {ex.slot}: {tex_escape(ex.title)}}}", to_tex(ex.statement), ""]
+    lines = [rf"\exercisetitle{{Exercise {ex.slot}: {_t(ex.title)}}}", _tx(ex.statement), ""]
     for part in ex.parts:
         label = f"({part.label})" if len(ex.parts) > 1 else f"[{part.label}]"
-        lines.append(rf"\textbf{{{tex_escape(label)}}} {to_tex(part.prompt)} \emph{{Answer format: "
-                     rf"{tex_escape(KIND_HINTS[part.answer.kind])}.}}")
+        lines.append(rf"\textbf{{{_t(label)}}} {_tx(part.prompt)} \emph{{Answer format: "
+                     rf"{_t(KIND_HINTS[part.answer.kind])}.}}")
         if part.choices:
             lines.append(r"\begin{enumerate}[label=\textbf{\Alph*.},itemsep=0pt]")
-            lines += [rf"\item {to_tex(c)}" for c in part.choices]
+            lines += [rf"\item {_tx(c)}" for c in part.choices]
             lines.append(r"\end{enumerate}")
         lines.append("")
     return lines
@@ -73,20 +134,19 @@ def _exercise(ex: Exercise) -> list[str]:
 
 def _solution(ex: Exercise) -> list[str]:
     lines = [r"\ifsolutions", r"\par\textbf{Solution.}", r"\begin{enumerate}[itemsep=0pt]"]
-    lines += [rf"\item {to_tex(step)}" for step in ex.solution]
+    lines += [rf"\item {_tx(step)}" for step in ex.solution]
     lines.append(r"\end{enumerate}")
-    lines += [rf"\textbf{{Answer {tex_escape('[' + p.label + ']')}:}} {to_tex('$' + p.answer.latex() + '$')}\par"
+    lines += [rf"\textbf{{Answer {_t('[' + p.label + ']')}:}} {_tx('$' + p.answer.latex() + '$')}\par"
               for p in ex.parts]
     lines.append(r"\fi")
     return lines
 
 
-def render_sheet_body(sheet: Sheet, solutions: bool) -> str:
+def render_sheet_body(sheet: Sheet, solutions: bool, heading: str = "Exercise sheet") -> str:
     """The LaTeX of one sheet (no preamble)."""
-    who = tex_escape(sheet.student_name or sheet.student_id)
-    lines = [r"\clearpage", rf"\sheettitle{{Exercise sheet: {who}}}",
-             rf"Student id: \texttt{{{tex_escape(sheet.student_id)}}} \hfill "
-             rf"Form id: \texttt{{{tex_escape(sheet.form_id)}}}", "",
+    who = _t(sheet.student_name or sheet.student_id)
+    lines = [r"\clearpage", rf"\sheettitle{{{_t(heading)}: {who}}}",
+             rf"Student id: {_t(sheet.student_id)} \hfill Form id: \texttt{{{_t(sheet.form_id)}}}", "",
              "Give exact answers; homogeneous coordinates are accepted up to a nonzero scale.", ""]
     for ex in sheet.exercises:
         lines += _exercise(ex)
@@ -95,18 +155,24 @@ def render_sheet_body(sheet: Sheet, solutions: bool) -> str:
     return "\n".join(lines) + "\n"
 
 
-def render_document(sheets: Sequence[Sheet], solutions: bool = False) -> str:
+def render_document(sheets: Sequence[Sheet], solutions: bool = False, heading: str = "Exercise sheet") -> str:
     """A complete LaTeX document with every sheet; with solutions, ``\\solutionstrue`` switches them on
-    (set ``\\solutionsfalse`` to hide them again)."""
-    parts = [PREAMBLE, r"\solutionstrue" if solutions else r"\solutionsfalse", r"\begin{document}"]
-    parts += [render_sheet_body(s, solutions) for s in sheets]
+    (set ``\\solutionsfalse`` to hide them again). The answer key is ``render_document(sheets, True,
+    "Answer key")``."""
+    body = [render_sheet_body(s, solutions, heading) for s in sheets]
+    parts = [preamble("".join(body)), r"\solutionstrue" if solutions else r"\solutionsfalse", r"\begin{document}",
+             *body]
     parts.append(r"\end{document}")
     return "\n".join(parts) + "\n"
 
 
+#: The TeX engine of the PDF sheets (Debian: texlive-luatex).
+ENGINE = "lualatex"
+
+
 def tex_available() -> bool:
-    """True when pdflatex is on the PATH."""
-    return shutil.which("pdflatex") is not None
+    """True when LuaLaTeX is on the PATH."""
+    return shutil.which(ENGINE) is not None
 
 
 def _tex_environment() -> dict[str, str]:
@@ -119,65 +185,92 @@ def _tex_environment() -> dict[str, str]:
     return env
 
 
+# TeX runs started from worker threads (several documents at once): an error, Ctrl-C or SIGTERM in the
+# main thread stops them all through stop_running(), and no new run starts until allow_running()
+_RUNNING: set[subprocess.Popen[bytes]] = set()
+_RUNNING_LOCK = threading.Lock()
+_STOPPED = threading.Event()
+
+
+def stop_running() -> None:
+    """Kill every TeX run in progress (each with its process group) and refuse new ones."""
+    with _RUNNING_LOCK:
+        _STOPPED.set()
+        for proc in list(_RUNNING):
+            _kill_group(proc, wait=False)
+
+
+def allow_running() -> None:
+    """Allow TeX runs again (after :func:`stop_running`)."""
+    _STOPPED.clear()
+
+
 def _run_confined(cmd: list[str], cwd: str, timeout: float) -> tuple[int, str]:
     """Run ``cmd`` in its own process group; kill the whole group after ``timeout`` s (or on any error)."""
     with tempfile.TemporaryFile() as out:
-        proc = subprocess.Popen(cmd, cwd=cwd, stdin=subprocess.DEVNULL, stdout=out, stderr=subprocess.STDOUT,
-                                env=_tex_environment(), start_new_session=True)
+        with _RUNNING_LOCK:
+            if _STOPPED.is_set():
+                raise TeXFailedError("stopped before TeX started (another part of the output failed)")
+            proc = subprocess.Popen(cmd, cwd=cwd, stdin=subprocess.DEVNULL, stdout=out, stderr=subprocess.STDOUT,
+                                    env=_tex_environment(), start_new_session=True)
+            _RUNNING.add(proc)
         try:
             code = proc.wait(timeout=timeout)
         finally:
             _kill_group(proc)  # on time-out, on interruption and after a normal end: nothing TeX started survives
+            with _RUNNING_LOCK:
+                _RUNNING.discard(proc)
         out.seek(0)
         return code, out.read()[-4000:].decode("utf-8", "replace")
 
 
-def _kill_group(proc: subprocess.Popen[bytes]) -> None:
+def _kill_group(proc: subprocess.Popen[bytes], wait: bool = True) -> None:
     try:
         os.killpg(proc.pid, signal.SIGKILL)
     except (ProcessLookupError, PermissionError):
         pass
-    proc.wait()
+    if wait:
+        proc.wait()
 
 
 def compile_pdf(tex_source: str, timeout: float | None = None) -> bytes:
-    """Compile LaTeX source with pdflatex in a temporary folder, confined as the module says; the PDF bytes.
+    """Compile LaTeX source with LuaLaTeX in a temporary folder, confined as the module says; the PDF bytes.
 
     ``timeout`` defaults to :func:`tex_time_limit` of one sheet. Raises :class:`TeXMissingError` if TeX
     is not installed and :class:`TeXFailedError` if it fails or runs out of time.
     """
     if not tex_available():
-        raise TeXMissingError("pdflatex is not installed, so no PDF can be made. On Debian/Ubuntu run: "
-                              "sudo apt-get install texlive-latex-extra texlive-fonts-recommended lmodern latexmk "
+        raise TeXMissingError("LuaLaTeX is not installed, so no PDF can be made. On Debian/Ubuntu run: "
+                              "sudo apt-get install texlive-luatex texlive-latex-extra fonts-noto-core fonts-noto-cjk "
                               "(or 'make system-deps'); the other formats do not need TeX.")
     limit = tex_time_limit(1) if timeout is None else timeout
     with tempfile.TemporaryDirectory(prefix="pgsym-tex-") as tmp:
         src = Path(tmp) / "sheets.tex"
         src.write_text(tex_source, encoding="utf-8")
         # one run: the sheets have no cross-references; -no-shell-escape whatever texmf.cnf says
-        cmd = ["pdflatex", "-no-shell-escape", "-interaction=nonstopmode", "-halt-on-error", "sheets.tex"]
+        cmd = [ENGINE, "-no-shell-escape", "-interaction=nonstopmode", "-halt-on-error", "sheets.tex"]
         started = time.monotonic()
         try:
             code, output = _run_confined(cmd, tmp, limit)
         except subprocess.TimeoutExpired:
-            raise TeXFailedError(f"pdflatex took longer than {limit:.0f} s (the limit) and was stopped") from None
+            raise TeXFailedError(f"LuaLaTeX took longer than {limit:.0f} s (the limit) and was stopped") from None
         if code != 0 or not (Path(tmp) / "sheets.pdf").is_file():
             log = Path(tmp) / "sheets.log"
             text = log.read_text(errors="replace") if log.exists() else output
             start = text.find("\n! ")  # TeX's first error message, with the lines that locate it
             excerpt = text[start + 1:start + 800] if start >= 0 else text[-800:]
-            raise TeXFailedError(f"pdflatex failed (exit {code}, {time.monotonic() - started:.1f} s):\n{excerpt}")
+            raise TeXFailedError(f"LuaLaTeX failed (exit {code}, {time.monotonic() - started:.1f} s):\n{excerpt}")
         return (Path(tmp) / "sheets.pdf").read_bytes()
 
 
-def compile_sheets(sheets: Sequence[Sheet], solutions: bool = False) -> bytes:
-    """The PDF of every sheet (one pdflatex run, limited to :func:`tex_time_limit` of the number of sheets).
+def compile_sheets(sheets: Sequence[Sheet], solutions: bool = False, heading: str = "Exercise sheet") -> bytes:
+    """The PDF of every sheet (one LuaLaTeX run, limited to :func:`tex_time_limit` of the number of sheets).
 
     If TeX fails, the sheets are compiled again in halves, each under its own proportional limit,
     until the failing sheet is found: the :class:`TeXFailedError` then names its student.
     """
     try:
-        return compile_pdf(render_document(sheets, solutions), tex_time_limit(len(sheets)))
+        return compile_pdf(render_document(sheets, solutions, heading), tex_time_limit(len(sheets)))
     except TeXFailedError as err:
         if len(sheets) > 1:
             culprit = _failing_sheet(list(sheets), solutions)
