@@ -16,7 +16,6 @@ array([[1., 2., 1.],
 
 from __future__ import annotations
 
-import importlib
 from typing import Any
 
 import numpy as np
@@ -24,21 +23,38 @@ import numpy as np
 from ..errors import DimensionError, NonFiniteError, NonNumericError, ObjectTypeError
 from ._arrays import as_float_array
 
-__all__ = ["KINDS", "from_array", "to_array"]
+__all__ = ["from_array", "kinds", "to_array"]
 
-KINDS: dict[str, tuple[str, str, tuple[int, ...]]] = {
-    "point1": ("projective_line", "Point1", (2,)),
-    "point": ("projective_plane", "Point", (3,)),
-    "line": ("projective_plane", "Line", (3,)),
-    "point3": ("space", "Point3", (4,)),
-    "plane": ("space", "Plane", (4,)),
-    "line3": ("plucker", "Line3", (6,)),
-    "conic": ("conics", "Conic", (3, 3)),
-    "dual_conic": ("conics", "DualConic", (3, 3)),
-    "quadric": ("quadrics", "Quadric", (4, 4)),
-    "transformation": ("transformations", "Transformation", (0, 0)),
-}
-"""The kinds :func:`from_array` builds: name → (module of pgsym, class, shape of one object's array)."""
+def _shape(cls: type) -> tuple[int, ...]:
+    """The shape of one object's array, read off its class: a vector of ``size`` coordinates, a
+    ``size``×``size`` symmetric form, or a square matrix of any size (0, 0) for a transformation."""
+    from ..homogeneous import HomogeneousVector
+    from ..symmetric_form import SymmetricForm
+
+    if issubclass(cls, HomogeneousVector):
+        return (cls.size,)
+    if issubclass(cls, SymmetricForm):
+        return (cls.size, cls.size)
+    return (0, 0)
+
+
+def kinds() -> dict[str, tuple[str, str, tuple[int, ...]]]:
+    """The kinds :func:`from_array` builds, derived from the classes (:func:`pgsym.kinds.object_classes`):
+    name → (module of pgsym, class, shape of one object's array). Imports the exact core.
+
+    >>> kinds()["conic"]
+    ('conics', 'Conic', (3, 3))
+    """
+    from ..kinds import object_classes
+
+    return {kind: (cls.__module__.removeprefix("pgsym."), cls.__name__, _shape(cls))
+            for kind, cls in object_classes().items()}
+
+
+def __getattr__(name: str) -> Any:
+    if name == "KINDS":  # the table of earlier versions, now derived from the classes on first use
+        return kinds()
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 
 def _floats(values: Any, obj: Any) -> list[float]:
@@ -97,7 +113,7 @@ def from_array(array: Any, kind: str | type) -> Any:
     """Exact pgsym objects from an array: one object for one vector (or matrix), else nested lists.
 
     ``kind`` is a class (``Point``, ``Plane``, ``Conic``, …) or one of the names in
-    :data:`KINDS`. Zero rows raise :class:`~pgsym.errors.ZeroVectorError` and rows off the
+    :func:`kinds`. Zero rows raise :class:`~pgsym.errors.ZeroVectorError` and rows off the
     Klein quadric :class:`~pgsym.errors.NotOnKleinQuadricError`, as the constructors do.
 
     >>> from_array([0.5, 0.25, 1], "point")
@@ -105,13 +121,15 @@ def from_array(array: Any, kind: str | type) -> Any:
     >>> from_array(np.eye(3), "transformation").dim
     2
     """
+    from ..kinds import object_classes
+
+    classes = object_classes()
     name = kind.__name__ if isinstance(kind, type) else kind
-    by_class = {cls: key for key, (_, cls, _) in KINDS.items()}
-    key = by_class.get(name, name)
-    if key not in KINDS:
-        raise ObjectTypeError(f"from_array: unknown kind {kind!r}; use one of {', '.join(KINDS)} or their classes")
-    module, cls_name, shape = KINDS[key]
-    cls = getattr(importlib.import_module(f"pgsym.{module}"), cls_name)
+    key = {cls.__name__: key for key, cls in classes.items()}.get(name, name)
+    if key not in classes:
+        raise ObjectTypeError(f"from_array: unknown kind {kind!r}; use one of {', '.join(classes)} or their classes")
+    cls = classes[key]
+    cls_name, shape = cls.__name__, _shape(cls)
     a = as_float_array(array, "array", "from_array")
     if not np.all(np.isfinite(a)):
         raise NonFiniteError("from_array: the array holds NaN or infinity, which no exact object has")
