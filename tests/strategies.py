@@ -10,7 +10,7 @@ from fractions import Fraction
 
 from hypothesis import strategies as st
 
-from pgsym import Line, Point
+from pgsym import Line, Plane, Point, Point3
 
 small = st.integers(min_value=-12, max_value=12)
 nonzero_rational = st.fractions(min_value=-9, max_value=9, max_denominator=7).filter(lambda f: f != 0)
@@ -33,6 +33,21 @@ def homogeneous_vectors(draw, k: int = 3, allow_ideal: bool = True, entries: st.
 def homogeneous_triples(allow_ideal: bool = True) -> st.SearchStrategy[tuple[int, ...]]:
     """Integer triples that are not the zero vector; a third of them ideal when allowed."""
     return homogeneous_vectors(3, allow_ideal)
+
+
+def integers(bound: int) -> st.SearchStrategy[int]:
+    """Integers from ``-bound`` to ``bound``: small entries keep exact examples fast."""
+    return st.integers(min_value=-bound, max_value=bound)
+
+
+def points3(allow_ideal: bool = True, bound: int = 9) -> st.SearchStrategy[Point3]:
+    """Points of P³ with integer coordinates up to ``bound``; a third of them ideal when allowed."""
+    return homogeneous_vectors(4, allow_ideal, integers(bound)).map(lambda t: Point3(*t))
+
+
+def planes(bound: int = 9) -> st.SearchStrategy[Plane]:
+    """Planes with integer coordinates up to ``bound``; a third of them through the origin (last coordinate 0)."""
+    return homogeneous_vectors(4, True, integers(bound)).map(lambda t: Plane(*t))
 
 
 def points(allow_ideal: bool = True) -> st.SearchStrategy[Point]:

@@ -9,6 +9,8 @@ import pytest
 import sympy
 from hypothesis import HealthCheck, assume, given, settings
 from hypothesis import strategies as st
+from strategies import integers, nonzero_rational, points3, scaled
+from strategies import planes as planes_strategy
 from sympy import Matrix, Rational, S, symbols
 
 from pgsym.errors import (
@@ -38,22 +40,9 @@ from pgsym.space import Plane, Point3, coplanar, plane_through
 
 # -- strategies: exact random configurations of P³ --------------------------------------------
 
-small = st.integers(min_value=-6, max_value=6)
-nonzero_rational = st.fractions(min_value=-9, max_value=9, max_denominator=7).filter(lambda f: f != 0)
-
-
-@st.composite
-def quadruples(draw) -> tuple[int, int, int, int]:
-    """Nonzero integer 4-vectors; about a third of them have last coordinate 0 (ideal points)."""
-    last = 0 if draw(st.integers(0, 2)) == 0 else draw(small)
-    x = [draw(small), draw(small), draw(small), last]
-    if x == [0, 0, 0, 0]:
-        x[0] = 1
-    return tuple(x)
-
-
-points = quadruples().map(lambda t: Point3(*t))
-planes = quadruples().map(lambda t: Plane(*t))
+small = integers(6)
+points = points3(bound=6)
+planes = planes_strategy(bound=6)
 
 
 @st.composite
@@ -62,10 +51,6 @@ def lines(draw) -> tuple[Line3, Point3, Point3]:
     a = draw(points)
     b = draw(points.filter(lambda p: p != a))
     return Line3.join(a, b), a, b
-
-
-def scaled(obj, factor):
-    return type(obj)(*(c * factor for c in obj.coords))
 
 
 def outer_minus(u, v) -> Matrix:

@@ -2,11 +2,10 @@
 
 from __future__ import annotations
 
-from fractions import Fraction
-
 import pytest
 from hypothesis import assume, given, settings
 from hypothesis import strategies as st
+from strategies import integers, nonzero_rational, planes, points3, scaled
 from sympy import Matrix, Rational, S, symbols
 
 from pgsym.errors import (
@@ -31,33 +30,8 @@ from pgsym.space import (
 
 # -- strategies -------------------------------------------------------------------------------------
 
-small = st.integers(min_value=-9, max_value=9)
-nonzero_rational = st.fractions(min_value=-9, max_value=9, max_denominator=7).filter(lambda f: f != 0)
+small = integers(9)
 
-
-@st.composite
-def quadruples(draw, allow_ideal: bool = True) -> tuple[int, int, int, int]:
-    """Integer 4-vectors other than zero; about a third have last entry 0 when allowed."""
-    if allow_ideal:
-        last = 0 if draw(st.integers(0, 2)) == 0 else draw(small)
-    else:
-        last = draw(small.filter(lambda v: v != 0))
-    x1, x2, x3 = draw(small), draw(small), draw(small)
-    if (x1, x2, x3, last) == (0, 0, 0, 0):
-        x1 = 1
-    return x1, x2, x3, last
-
-
-def points3(allow_ideal: bool = True) -> st.SearchStrategy[Point3]:
-    return quadruples(allow_ideal).map(lambda t: Point3(*t))
-
-
-def planes() -> st.SearchStrategy[Plane]:
-    return quadruples(True).map(lambda t: Plane(*t))
-
-
-def scaled(obj, factor: Fraction):
-    return type(obj)(*(c * factor for c in obj.coords))
 
 
 def rank(*objs) -> int:
