@@ -28,12 +28,11 @@ import os
 os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")  # before NumPy loads its BLAS
 
 import json
-import statistics
 import sys
-import time
 from collections.abc import Callable
 
 import numpy as np
+from timing import medians
 
 try:
     import geometer
@@ -45,19 +44,6 @@ from pgsym.numeric import metric as nm
 N = 10**6
 REPEATS = 11
 GEOMETER_REPEATS = 1  # geometer takes seconds per call on 10⁶ rows
-
-
-def medians(functions: dict[str, Callable[[], object]], repeats: int) -> dict[str, float]:
-    """Median wall time of each function, the calls interleaved so that machine load hits all alike."""
-    for f in functions.values():
-        f()  # warm up: first-touch page faults, caches
-    times: dict[str, list[float]] = {name: [] for name in functions}
-    for _ in range(repeats):
-        for name, f in functions.items():
-            t0 = time.perf_counter()
-            f()
-            times[name].append(time.perf_counter() - t0)
-    return {name: statistics.median(ts) for name, ts in times.items()}
 
 
 def emit(bench: str, ours: float, baseline: str, base: float) -> None:

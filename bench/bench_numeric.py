@@ -27,12 +27,10 @@ import os
 os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")  # before NumPy loads its BLAS
 
 import json
-import statistics
 import sys
-import time
-from collections.abc import Callable
 
 import numpy as np
+from timing import medians
 
 try:
     import geometer
@@ -44,19 +42,6 @@ import pgsym.numeric as pn
 N = 10**6
 REPEATS = 21
 GEOMETER_REPEATS = 5
-
-
-def medians(functions: dict[str, Callable[[], object]], repeats: int) -> dict[str, float]:
-    """Median wall time of each function, the calls interleaved so that machine load hits all alike."""
-    for f in functions.values():
-        f()  # warm up: first-touch page faults, caches
-    times: dict[str, list[float]] = {name: [] for name in functions}
-    for _ in range(repeats):
-        for name, f in functions.items():
-            t0 = time.perf_counter()
-            f()
-            times[name].append(time.perf_counter() - t0)
-    return {name: statistics.median(ts) for name, ts in times.items()}
 
 
 def emit(bench: str, ours: float, baseline: str, base: float) -> None:

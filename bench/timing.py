@@ -76,3 +76,16 @@ def report_against_timeout(bench: str, ours_s: float, baseline: str, timeout_s: 
         report(bench, ours_s, baseline, timeout_s, timed_out=True, **extra)
     else:
         report(bench, ours_s, baseline, measured, timed_out=False, **extra)
+
+
+def medians(functions: dict[str, Callable[[], object]], repeats: int) -> dict[str, float]:
+    """Median wall time of each function, the calls interleaved so that machine load hits all alike."""
+    for f in functions.values():
+        f()  # warm up: first-touch page faults, caches
+    times: dict[str, list[float]] = {name: [] for name in functions}
+    for _ in range(repeats):
+        for name, f in functions.items():
+            t0 = time.perf_counter()
+            f()
+            times[name].append(time.perf_counter() - t0)
+    return {name: statistics.median(ts) for name, ts in times.items()}
