@@ -156,16 +156,9 @@ def _run(
     out: np.ndarray | None,
     axis: int,
     n_scratch: int,
-    arrays: list[np.ndarray],
 ) -> tuple[np.ndarray, np.ndarray]:
-    """The kernel's ``(values, finite)`` by :func:`~pgsym.numeric._arrays.rowwise`; an empty batch: empty arrays."""
-    batch = np.broadcast_shapes(*(a.shape[:-1] for a in arrays))
-    if 0 not in batch:
-        return rowwise(kernel, function, ins, k_out, out, axis, n_scratch, "mask")  # type: ignore[return-value]
-    if out is not None:
-        return out, np.ones(batch, bool)
-    values = np.empty(batch if k_out is None else (*batch, k_out))
-    return (values if k_out is None else np.moveaxis(values, -1, axis)), np.ones(batch, bool)
+    """The kernel's ``(values, finite)`` by :func:`~pgsym.numeric._arrays.rowwise` (which also takes empty batches)."""
+    return rowwise(kernel, function, ins, k_out, out, axis, n_scratch, "mask")  # type: ignore[return-value]
 
 
 def _check(ideal: str, nonfinite: str, function: str) -> None:
@@ -231,7 +224,7 @@ def cos_angle(
     arrays = _arrays([(a, "a"), (b, "b")], axis, "cos_angle", (3, 4, 6))
     part = _PART[arrays[0].shape[-1]]
     k = arrays[0].shape[-1]
-    result = _run(_cos_kernel(part), "cos_angle", [(a, k, "a"), (b, k, "b")], None, out, axis, 3, arrays)
+    result = _run(_cos_kernel(part), "cos_angle", [(a, k, "a"), (b, k, "b")], None, out, axis, 3)
     values = _resolve(result, arrays, "cos_angle", ideal, nonfinite, axis, _no_part(part), _cos_rows(part))
     if not isinstance(values, tuple) and values.ndim == 0:
         return values[()]
@@ -291,7 +284,7 @@ def _hyper_ideal(rows: list[np.ndarray]) -> np.ndarray:
 def _point_hyperplane(x: Any, h: Any, k: int, function: str, ideal: str, nonfinite: str, axis: int) -> Any:
     _check(ideal, nonfinite, function)
     arrays = _arrays([(x, "x"), (h, "h")], axis, function, (k,))
-    result = _run(_hyper_kernel, function, [(x, k, "x"), (h, k, "h")], None, None, axis, 2, arrays)
+    result = _run(_hyper_kernel, function, [(x, k, "x"), (h, k, "h")], None, None, axis, 2)
     values = _resolve(result, arrays, function, ideal, nonfinite, axis, _hyper_ideal, _hyper_rows)
     return values[()] if not isinstance(values, tuple) and values.ndim == 0 else values
 
@@ -342,7 +335,7 @@ def point_distance(x: Any, y: Any, *, ideal: str = "raise", nonfinite: str = "ra
     _check(ideal, nonfinite, "point_distance")
     arrays = _arrays([(x, "x"), (y, "y")], axis, "point_distance", (3, 4))
     k = arrays[0].shape[-1]
-    result = _run(_point_kernel, "point_distance", [(x, k, "x"), (y, k, "y")], None, None, axis, 4, arrays)
+    result = _run(_point_kernel, "point_distance", [(x, k, "x"), (y, k, "y")], None, None, axis, 4)
 
     def ideal_rows(rows: list[np.ndarray]) -> np.ndarray:
         return (rows[0][:, -1] == 0) | (rows[1][:, -1] == 0)
@@ -413,7 +406,7 @@ def orthogonal_projection(
     arrays = _arrays([(x, "x"), (h, "h")], axis, "orthogonal_projection", (3, 4))
     k = arrays[0].shape[-1]
     ins = [(x, k, "x"), (h, k, "h")]
-    result = _run(_foot_kernel(1.0), "orthogonal_projection", ins, k, out, axis, 3, arrays)
+    result = _run(_foot_kernel(1.0), "orthogonal_projection", ins, k, out, axis, 3)
     last = np.moveaxis(result[0], axis, -1)[..., -1]
     return _resolve(
         result, arrays, "orthogonal_projection", ideal, nonfinite, axis, _hyper_ideal, _foot_rows(1.0), last == 0
@@ -443,7 +436,7 @@ def reflect(
     arrays = _arrays([(x, "x"), (mirror, "mirror")], axis, "reflect", (3, 4))
     k = arrays[0].shape[-1]
     ins = [(x, k, "x"), (mirror, k, "mirror")]
-    result = _run(_foot_kernel(2.0), "reflect", ins, k, out, axis, 3, arrays)
+    result = _run(_foot_kernel(2.0), "reflect", ins, k, out, axis, 3)
     at_infinity = np.all(arrays[1][..., :-1] == 0, axis=-1)
     extra = np.broadcast_to(at_infinity, result[1].shape) if at_infinity.any() else None
 
