@@ -85,7 +85,12 @@ class Operation:
       holds (default: the entries of the value itself, i.e. the result is not the zero vector);
     * ``core(node, args, exact)``: the same object built with pgsym's classes (``None`` when the core has no
       counterpart), ``exact`` mapping coefficient data to SymPy rationals;
-    * ``description(names, data)``: how the construction reads, e.g. ``A × B``.
+    * ``description(names, data)``: how the construction reads, e.g. ``A × B``;
+    * ``group``: the group whose action the construction commutes with (``"projective"``: mapping the
+      arguments by any homography maps the result by it; ``"affine"``, ``"similarity"`` for constructions
+      that use l∞ or the circular points), or ``None`` when its value depends on the representatives or on
+      data the group does not act on (``combine`` with coefficients, a matrix applied, a formula). Choosing
+      coordinates without loss of generality is allowed only under a group every construction commutes with.
     """
 
     name: str
@@ -100,6 +105,7 @@ class Operation:
     coefficients: bool = False
     constructible: bool = True
     aliases: tuple[str, ...] = field(default=())
+    group: str | None = "projective"
 
     def result_kind(self, arg_kinds: Sequence[str]) -> str:
         """The kind of the result for arguments of the given kinds."""
@@ -224,7 +230,7 @@ _TABLE = (
     Operation("combine", (_VECTOR_KINDS, _VECTOR_KINDS), 0, _combine,
               lambda n, d: f"{d[0]}·{n[0]} + {d[1]}·{n[1]}",
               lambda n, name, d: [f"{name} is not the zero vector ({n[0]} ≠ {n[1]})"],
-              core=_combine_core, same_kind=True, coefficients=True),
+              core=_combine_core, same_kind=True, coefficients=True, group=None),
     Operation("plane_through", (_POINT3,) * 3, "plane", lambda node, v, scalar: alg.plane_through(*v),
               lambda n, d: f"plane({', '.join(n)})", lambda n, name, d: [f"{', '.join(n)} are not collinear"],
               core=lambda node, a, exact: space.plane_through(*a)),
@@ -236,14 +242,14 @@ _TABLE = (
               core=lambda node, a, exact: plucker.Line3.join(*a)),
     Operation("apply", (("matrix",), ("point1", "point", "point3")), 1,
               lambda node, v, scalar: alg.matvec(v[0], v[1]), lambda n, d: f"{n[0]} {n[1]}",
-              core=lambda node, a, exact: _vector(node.kind, a[0] * a[1].vector)),
+              core=lambda node, a, exact: _vector(node.kind, a[0] * a[1].vector), group=None),
     Operation("apply_line", (("matrix",), ("line", "plane")), 1,
               lambda node, v, scalar: alg.matvec(alg.transpose(alg.adjugate(v[0])), v[1]),
               lambda n, d: f"adj({n[0]})ᵀ {n[1]}", _nonsingular, _det_of_first, core=_apply_line_core,
-              aliases=("apply_plane",)),
+              aliases=("apply_plane",), group=None),
     Operation("apply_conic", (("matrix",), ("conic",)), "conic", _apply_conic,
               lambda n, d: f"adj({n[0]})ᵀ {n[1]} adj({n[0]})", _nonsingular, _det_of_first,
-              core=_apply_conic_core),
+              core=_apply_conic_core, group=None),
     Operation("polar", (("conic",), _POINT), "line", lambda node, v, scalar: alg.matvec(v[0], v[1]),
               lambda n, d: f"{n[0]} {n[1]}",
               lambda n, name, d: [f"{n[1]} is not a singular point of {n[0]} ({n[0]} {n[1]} ≠ 0)"],
@@ -264,7 +270,7 @@ _TABLE = (
               lambda n, name, d: [f"{', '.join(n)} are distinct"],
               core=lambda node, a, exact: projective_line.harmonic_conjugate(*a)),
     Operation("formula", None, "formula", lambda node, v, scalar: node.data(*v),
-              lambda n, d: f"{getattr(d, '__name__', 'f')}({', '.join(n)})"),
+              lambda n, d: f"{getattr(d, '__name__', 'f')}({', '.join(n)})", group=None),
 )
 
 #: every operation by name, in the order of the table
