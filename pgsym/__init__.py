@@ -105,6 +105,9 @@ _LAZY: dict[str, str] = {
     "sin_angle": "metric",
     "squared_distance": "metric",
     "translation": "metric",
+    "is_parallel": "affine",
+    "midpoint": "affine",
+    "parallel_line": "affine",
     # the errors of the subsystems live beside them (importing one loads only its small module)
     "AnswersFileError": "exercises.errors",
     "ManifestError": "exercises.errors",
