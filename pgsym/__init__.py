@@ -89,6 +89,7 @@ _LAZY: dict[str, str] = {
     "cos_angle": "metric",
     "cos_squared_angle": "metric",
     "distance": "metric",
+    "is_concyclic": "metric",
     "is_perpendicular": "metric",
     "laguerre_cross_ratio": "metric",
     "orthogonal_projection": "metric",
