@@ -172,12 +172,13 @@ def test_timeout_is_unknown_never_proved():
     assert v.status == "unknown" and "timed out" in v.reason and v.certificate is None
 
 
-def test_identically_degenerate_construction_is_unknown():
+def test_identically_degenerate_construction_is_named_never_proved():
+    # l = A × A = 0 for every A, so "A lies on l" holds vacuously: the verdict must say which condition fails
     c = Claim("self-join", "the join of A with itself contains A")
     A = c.free_point("A")
     c.conclude_incident(A, c.join("l", A, A))
     v = prove(c)
-    assert v.status == "unknown" and "A ≠ A" in v.reason
+    assert v.status == "degenerate" and "A ≠ A" in v.reason and not v.proved
 
 
 # -- display and JSON ------------------------------------------------------------------------------
@@ -325,4 +326,4 @@ def test_statuses_are_an_enum_that_reads_as_before():
     assert v.status is Status.PROVED and v.status == "proved" and f"{v.status:8s}|" == "proved  |"
     assert repr(v.status) == "'proved'" and v.to_dict()["status"] == "proved"
     assert json.loads(v.to_json())["status"] == "proved"
-    assert [str(s) for s in Status] == ["proved", "false", "unknown"]
+    assert [str(s) for s in Status] == ["proved", "false", "unknown", "degenerate"]

@@ -28,13 +28,15 @@ class Status(StrEnum):
     PROVED = "proved"
     FALSE = "false"
     UNKNOWN = "unknown"
+    DEGENERATE = "degenerate"
 
     def __repr__(self) -> str:  # shown as the plain string it was before statuses were an enum
         return repr(self.value)
 
 
-_STATUS_MARK = {Status.PROVED: "✔ proved", Status.FALSE: "✘ false", Status.UNKNOWN: "? unknown"}
-_STATUS_LATEX = {Status.PROVED: r"\text{proved}", Status.FALSE: r"\text{false}", Status.UNKNOWN: r"\text{unknown}"}
+_STATUS_MARK = {Status.PROVED: "✔ proved", Status.FALSE: "✘ false", Status.UNKNOWN: "? unknown",
+                Status.DEGENERATE: "⚠ degenerate construction"}
+_STATUS_LATEX = {s: rf"\text{{{s.value}}}" for s in Status}
 
 
 def _short(text: str, limit: int = 90) -> str:
@@ -49,7 +51,15 @@ def poly_str(p: Any, max_terms: int = 40) -> str:
     """
     if hasattr(p, "terms") and len(p) > max_terms:
         return f"<a polynomial of degree {max(sum(m) for m in p.monoms())} with {len(p)} terms>"
-    return str(p.as_expr()) if hasattr(p, "as_expr") else str(p)
+    if hasattr(p, "as_expr"):  # SymPy's ring
+        return str(p.as_expr())
+    if hasattr(p, "context"):  # python-flint: rebuild the expression in the context's variable names
+        import sympy
+
+        names = [sympy.Symbol(n) for n in p.context().names()]
+        return str(sympy.Add(*(sympy.Rational(str(c)) * sympy.Mul(*(x**e for x, e in zip(names, m, strict=True)))
+                               for m, c in p.to_dict().items())))
+    return str(p)
 
 
 @dataclass
@@ -84,6 +94,9 @@ class Certificate:
     ring: str = ""
     steps: list[str] = field(default_factory=list)
     largest_terms: int = 0
+    normalisation: str = ""
+    backend: str = ""
+    largest_degree: int = 0
 
     def to_dict(self) -> dict[str, Any]:
         """JSON-ready form.
@@ -91,7 +104,8 @@ class Certificate:
         >>> Certificate("polynomial identity", "QQ[a]", ["a - a → 0"]).to_dict()["steps"]
         ['a - a → 0']
         """
-        return {"method": self.method, "ring": self.ring, "steps": self.steps, "largest_terms": self.largest_terms}
+        return {"method": self.method, "ring": self.ring, "steps": self.steps, "largest_terms": self.largest_terms,
+                "largest_degree": self.largest_degree, "normalisation": self.normalisation, "backend": self.backend}
 
 
 @dataclass
