@@ -202,9 +202,10 @@ def normalise(claim: Claim) -> tuple[Normalisation | None, str]:
         target = next(targets, None)
         if target is None:
             break
-    if len(chosen) < len(FRAMES[kind]):
-        # a partial frame saves little, and the conditions read better in the claim's own coordinates
-        return None, f"no normalisation: fewer than {len(FRAMES[kind])} free objects of one kind fit a frame"
+    if len(chosen) < len(FRAMES[kind]) - 1:
+        # fewer than a simplex (n + 1 objects in general position in Pⁿ) saves little, and the conditions
+        # read better in the claim's own coordinates
+        return None, f"no normalisation: fewer than {len(FRAMES[kind]) - 1} free objects of one kind fit a frame"
     names = [n.name for n in chosen]
     words = _GENERAL_POSITION[kind]
     if len(names) > 2:
