@@ -399,15 +399,21 @@ def _size(R: PolynomialRing, polys: list[Any]) -> tuple[int, int]:
     return (max((R.nterms(p) for p in polys), default=0), max((R.degree(p) for p in polys), default=0))
 
 
-def _general_position(claim: Claim, normalisation: Normalisation, backend: str | None) -> Any:
-    """The product of the minors that say the frame's objects are in general position, in the claim's own
-    coordinates (each minor is nonzero exactly when no three points are collinear, no four coplanar, …)."""
+_NOT_DEPENDENT = {"point": "are not collinear", "point3": "are not coplanar", "point1": "are distinct",
+                  "line": "are not concurrent", "plane": "do not pass through one point"}
+
+
+def _general_position(claim: Claim, normalisation: Normalisation, backend: str | None) -> list[Condition]:
+    """The frame's general position as conditions in the claim's own coordinates: every n + 1 of its objects
+    in Pⁿ independent (one determinant each), e.g. "A, B, C are not collinear"."""
     conv = _converter(claim, backend=backend)
-    vectors = [tuple(conv(e) for e in claim.nodes[n].data) for n in normalisation.objects]
-    product = conv.R.constant(1)
-    for rows in itertools.combinations(vectors, len(vectors[0])):
-        product = product * alg.det(list(rows))
-    return product
+    nodes = [claim.nodes[n] for n in normalisation.objects]
+    out = []
+    for subset in itertools.combinations(nodes, len(nodes[0].data)):
+        minor = alg.det([tuple(conv(e) for e in n.data) for n in subset])
+        words = _NOT_DEPENDENT[normalisation.kind]
+        out.append(Condition(f"{', '.join(n.name for n in subset)} {words} (frame)", raw=[minor]))
+    return out
 
 
 def _exact_pass(claim: Claim, deadline: _Deadline, rank_witness: list[Any], backend: str | None = None,
@@ -422,9 +428,8 @@ def _exact_pass(claim: Claim, deadline: _Deadline, rank_witness: list[Any], back
     entries = [p for v in values.values() for p in flat(v) if not isinstance(p, int)]
     largest = max((R.nterms(p) for p in entries), default=0)
     conditions = []
-    if normalisation is not None and normalisation.condition:
-        conditions.append(Condition(normalisation.condition + " (the frame chosen without loss of generality)",
-                                    raw=[_general_position(claim, normalisation, backend)]))
+    if normalisation is not None:
+        conditions += _general_position(claim, normalisation, backend)
     for text, polys in _nonzero_requirements(claim, values):
         deadline.check("checking the non-degeneracy conditions")
         if all(p == 0 for p in polys):
