@@ -170,6 +170,21 @@ def test_a_point_off_the_hypotheses_is_no_counterexample():
     assert not recheck_counterexample(c, moved)
 
 
+def test_ideal_membership_under_a_stated_condition():
+    # hypothesis a·b = 0, conclusion b = 0: b is not in the ideal (a·b), but the join of A = (a, 0, 1) and
+    # B = (0, 0, 1) needs A ≠ B, i.e. A × B = (0·1 − 1·0, 1·0 − a·1, a·0 − 0·0) = (0, −a, 0) ≠ 0, and
+    # (−a)·b = −(a·b) lies in the ideal: b = 0 wherever that condition holds
+    c = Claim("membership-given", "a·b = 0 and A ≠ B give b = 0")
+    a, b = c.params("a b")
+    A, B = c.point("A", a, 0, 1), c.point("B", 0, 0, 1)
+    c.join("l", A, B)
+    c.assume_zero(a * b, "a·b = 0")
+    c.conclude_zero(b)
+    v = prove(c)
+    assert v.proved and v.method == "Gröbner basis ideal membership"
+    assert any("wherever A ≠ B" in s for s in v.certificate.steps)
+
+
 # -- the two polynomial backends give the same verdicts --------------------------------------------------
 
 

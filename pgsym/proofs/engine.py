@@ -416,6 +416,19 @@ def _general_position(claim: Claim, normalisation: Normalisation, backend: str |
     return out
 
 
+def _membership_given(poly: Any, basis: list[Any], requirements: list[tuple[str, list[Any]]],
+                      deadline: _Deadline) -> str | None:
+    """A non-degeneracy condition under which the conclusion follows from the hypotheses, or None.
+
+    The condition "c₁, …, cₖ not all zero" suffices when every cᵢ·g lies in the ideal: wherever some cᵢ ≠ 0
+    on the hypothesis variety, g = 0 there (a first step of saturating the ideal by the conditions)."""
+    for text, polys in requirements:
+        deadline.check("reducing the conclusion under a non-degeneracy condition")
+        if polys and all((c * poly).div(basis)[1] == 0 for c in polys):
+            return text
+    return None
+
+
 def _exact_pass(claim: Claim, deadline: _Deadline, rank_witness: list[Any], backend: str | None = None,
                 normalisation: Normalisation | None = None) -> tuple[str, Any]:
     hyps = claim.hypotheses
@@ -428,6 +441,7 @@ def _exact_pass(claim: Claim, deadline: _Deadline, rank_witness: list[Any], back
     entries = [p for v in values.values() for p in flat(v) if not isinstance(p, int)]
     largest = max((R.nterms(p) for p in entries), default=0)
     conditions = []
+    requirements: list[tuple[str, list[Any]]] = []
     if normalisation is not None:
         conditions += _general_position(claim, normalisation, backend)
     for text, polys in _nonzero_requirements(claim, values):
@@ -436,6 +450,7 @@ def _exact_pass(claim: Claim, deadline: _Deadline, rank_witness: list[Any], back
             return _Outcome.DEGENERATE, (f"the condition {text} fails identically "
                                          "(the construction is undefined for every value of the parameters)")
         conditions.append(Condition(text, raw=[p for p in polys if p != 0][:3]))
+        requirements.append((text, [p for p in polys if p != 0]))
     for node in _objects_to_check(claim):
         deadline.check("checking that no construction vanishes identically")
         if all(p == 0 for p in flat(values[node])):
@@ -453,10 +468,15 @@ def _exact_pass(claim: Claim, deadline: _Deadline, rank_witness: list[Any], back
             deadline.check("reducing the conclusion")
             quotients, rem = poly.div(basis)
             if rem != 0:
-                return _Outcome.NOT_IN_IDEAL, (label, R.text(rem))
+                needed = _membership_given(poly, basis, requirements, deadline)
+                if needed is None:
+                    return _Outcome.NOT_IN_IDEAL, (label, R.text(rem))
+                steps.append(f"{label} is not in the ideal of the hypotheses, but c·({label}) is for every "
+                             f"polynomial c of the condition {needed}: the conclusion holds wherever {needed}")
+                continue
             identity.append(poly)
             combo = " + ".join(f"({R.text(q)})·g{i + 1}" for i, q in enumerate(quotients) if q != 0) or "0"
-            steps.append(f"{label} = {combo}; remainder 0")
+            steps.append(f"{label} = {combo}; remainder 0 (so it vanishes on the whole hypothesis variety)")
     else:
         method = "polynomial identity (exact expansion)"
         done = []
