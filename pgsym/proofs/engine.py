@@ -442,8 +442,6 @@ def _exact_pass(claim: Claim, deadline: _Deadline, rank_witness: list[Any], back
     largest = max((R.nterms(p) for p in entries), default=0)
     conditions = []
     requirements: list[tuple[str, list[Any]]] = []
-    if normalisation is not None:
-        conditions += _general_position(claim, normalisation, backend)
     for text, polys in _nonzero_requirements(claim, values):
         deadline.check("checking the non-degeneracy conditions")
         if all(p == 0 for p in polys):
@@ -456,6 +454,8 @@ def _exact_pass(claim: Claim, deadline: _Deadline, rank_witness: list[Any], back
         if all(p == 0 for p in flat(values[node])):
             return _Outcome.DEGENERATE, (f"{node.name} = {node.description} is identically the zero vector "
                                          "(the construction is undefined for every value of the parameters)")
+    if normalisation is not None:  # last, so that the claim's own conditions read first
+        conditions += _general_position(claim, normalisation, backend)
     deadline.check("reducing the conclusion")
     steps = []
     identity: list[Any] = []
@@ -476,7 +476,7 @@ def _exact_pass(claim: Claim, deadline: _Deadline, rank_witness: list[Any], back
                 continue
             identity.append(poly)
             combo = " + ".join(f"({R.text(q)})·g{i + 1}" for i, q in enumerate(quotients) if q != 0) or "0"
-            steps.append(f"{label} = {combo}; remainder 0 (so it vanishes on the whole hypothesis variety)")
+            steps.append(f"{label} = {combo}; remainder 0")
     else:
         method = "polynomial identity (exact expansion)"
         done = []

@@ -83,6 +83,7 @@ class PolynomialRing:
         self.integral = integral
         self.order = order
         self._index = {s: i for i, s in enumerate(self.symbols)}
+        self._sympy_ring: Any = None
         if self.backend == "flint":
             ctx_type = _flint.fmpz_mpoly_ctx if integral else _flint.fmpq_mpoly_ctx
             names = tuple(str(sym) for sym in self.symbols)
@@ -108,16 +109,20 @@ class PolynomialRing:
         e = sympy.sympify(expr)
         if e.is_Rational:
             return self._ctx.constant(self._coefficient(e))
-        terms = sympy.Poly(e, *self.symbols, domain=sympy.QQ).as_dict()
-        return self._ctx.from_dict({m: self._coefficient(c) for m, c in terms.items()})
+        if self._sympy_ring is None:  # SymPy's ring reads expressions fastest; flint then takes its terms
+            from sympy.polys.rings import ring
+
+            self._sympy_ring = ring(self.symbols, sympy.QQ, "lex")[0]
+        terms = self._sympy_ring(e).items()
+        return self._ctx.from_dict({m: self._coefficient(c) for m, c in terms})
 
     def _coefficient(self, c: Any) -> Any:
-        q = sympy.Rational(c)
+        p, q = (int(c.numerator), int(c.denominator)) if hasattr(c, "numerator") else (int(c.p), int(c.q))
         if self.integral:
-            if q.q != 1:
-                raise PolynomialBackendError(f"the coefficient {q} is not an integer, but the ring is ℤ[…]")
-            return int(q.p)
-        return _flint.fmpq(int(q.p), int(q.q))
+            if q != 1:
+                raise PolynomialBackendError(f"the coefficient {p}/{q} is not an integer, but the ring is ℤ[…]")
+            return p
+        return _flint.fmpq(p, q)
 
     def constant(self, value: int) -> Any:
         """The constant polynomial ``value``."""
