@@ -7,6 +7,7 @@ from fractions import Fraction
 import pytest
 import sympy
 from hypothesis import given, settings
+from hypothesis import strategies as st
 from strategies import incidence_programs
 
 from pgsym import ring as alg
@@ -201,3 +202,35 @@ def test_sympy_fallback_gives_the_same_verdicts_as_flint(monkeypatch):
         if v.certificate is not None:
             assert v.certificate.steps == w.certificate.steps, n
             assert v.certificate.backend == "sympy" and w.certificate.backend in ("flint", "sympy"), n
+
+
+def test_without_flint_the_engine_runs_on_sympys_ring(monkeypatch):
+    # as in the browser, where python-flint cannot be imported
+    from pgsym.proofs import polynomials
+    from pgsym.proofs.errors import PolynomialBackendError
+
+    monkeypatch.setattr(polynomials, "_flint", None)
+    assert polynomials.available_backends() == ("sympy",) and polynomials.default_backend() == "sympy"
+    with pytest.raises(PolynomialBackendError, match="not available"):
+        polynomials.PolynomialRing([sympy.Symbol("a")], backend="flint")
+    v = prove("desargues")
+    assert v.proved and v.certificate.backend == "sympy"
+
+
+@pytest.mark.skipif("flint" not in available_backends(), reason="python-flint is not installed")
+@settings(max_examples=40, deadline=None)
+@given(st.lists(st.tuples(st.integers(-5, 5), st.integers(0, 3), st.integers(0, 3)), min_size=1, max_size=6),
+       st.lists(st.tuples(st.integers(-5, 5), st.integers(0, 3), st.integers(0, 3)), min_size=1, max_size=6))
+def test_both_backends_multiply_alike(f_terms, g_terms):
+    # (Σ c xⁱ yʲ)(Σ d xᵏ yˡ) expanded by each backend is the product SymPy's expand gives
+    from pgsym.proofs.polynomials import PolynomialRing
+
+    x, y = sympy.symbols("x y")
+    f = sum(c * x**i * y**j for c, i, j in f_terms)
+    g = sum(d * x**k * y**m for d, k, m in g_terms)
+    for backend in ("flint", "sympy"):
+        R = PolynomialRing([x, y], integral=True, backend=backend)
+        product = R(f) * R(g)
+        assert sympy.expand(R.to_expr(product) - f * g) == 0
+        at = (f * g).subs({x: 2, y: sympy.Rational(-1, 3)})
+        assert R.evaluate(product, [Fraction(2), Fraction(-1, 3)]) == Fraction(str(at))

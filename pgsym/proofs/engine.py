@@ -54,7 +54,7 @@ from ..exact import is_zero
 from .claims import Claim, Node
 from .normalisation import Normalisation, normalise
 from .operations import CoreDegenerate, flat
-from .polynomials import PolynomialRing
+from .polynomials import PolynomialRing, default_backend
 from .verdicts import Certificate, Condition, Counterexample, Status, Verdict
 
 __all__ = ["PRIME", "prove", "recheck_counterexample"]
@@ -259,6 +259,7 @@ def _converter(claim: Claim, order: str = "lex", field: bool = True, backend: st
         integral = integral and all(sympy.Rational(v).q == 1 for v in sub.values())
         gens = [s for s in claim.parameters if s not in sub]
         return _Converter(PolynomialRing(gens, integral=integral, order=order, backend=backend), sub)
+    backend = backend or default_backend()  # the environment may change between calls
     key = (id(claim), order, field, backend)
     hit = _CONVERTERS.get(key)
     if hit is None or hit[0] is not claim:
