@@ -160,6 +160,16 @@ def test_pascal_on_a_parabola_mis_stated_with_hypotheses_is_refuted():
     assert v.counterexample.recheck()
 
 
+def test_pascal_on_a_parabola_with_hypotheses_is_proved_by_reduction():
+    # y_i − x_i² (i = A … F): distinct leading variables y_i, so the hypotheses are their own Gröbner basis
+    # and reducing the conclusion substitutes y_i = x_i²
+    c = Claim("pascal-parabola", "Pascal on y = x², stated with hypotheses")
+    _parabola_hexagon(c, wrong=False)
+    v = prove(c)
+    assert v.proved and v.method == "Gröbner basis ideal membership" and v.elapsed < 2
+    assert "reduction modulo it substitutes yA = xA**2" in v.certificate.steps[0]
+
+
 def test_a_point_off_the_hypotheses_is_no_counterexample():
     c = Claim("pascal-parabola-wrong", "Pascal on y = x², wrong pairing", expected=False)
     _parabola_hexagon(c, wrong=True)

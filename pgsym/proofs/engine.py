@@ -252,11 +252,11 @@ def _integral(claim: Claim) -> bool:
 
 
 def _converter(claim: Claim, order: str = "lex", field: bool = True, backend: str | None = None,
-               normalisation: Normalisation | None = None) -> _Converter:
+               substitution: dict[sympy.Symbol, Any] | None = None) -> _Converter:
     integral = not field and _integral(claim)
-    if normalisation is not None:
-        sub = normalisation.substitution
-        integral = integral and all(sympy.Rational(v).q == 1 for v in sub.values())
+    if substitution is not None:
+        sub = substitution
+        integral = integral and all(sympy.Rational(v).q == 1 for v in sub.values() if sympy.sympify(v).is_Rational)
         gens = [s for s in claim.parameters if s not in sub]
         return _Converter(PolynomialRing(gens, integral=integral, order=order, backend=backend), sub)
     backend = backend or default_backend()  # the environment may change between calls
@@ -408,7 +408,7 @@ def _general_position(claim: Claim, normalisation: Normalisation, backend: str |
     """The frame's general position as conditions in the claim's own coordinates: every n + 1 of its objects
     in Pⁿ independent (one determinant each), e.g. "A, B, C are not collinear"."""
     conv = _converter(claim, backend=backend)
-    nodes = [claim.nodes[n] for n in normalisation.objects]
+    nodes = [claim.nodes[n] for n in normalisation.objects]  # their coordinates are plain parameters
     out = []
     for subset in itertools.combinations(nodes, len(nodes[0].data)):
         minor = alg.det([tuple(conv(e) for e in n.data) for n in subset])
@@ -430,13 +430,33 @@ def _membership_given(poly: Any, basis: list[Any], requirements: list[tuple[str,
     return None
 
 
+def _solved_hypotheses(claim: Claim) -> dict[sympy.Symbol, sympy.Expr] | None:
+    """Each hypothesis as ``v = f`` (None when that is not possible): v of degree one with a constant coefficient
+    in its hypothesis and in no other. The variety is then the graph of v = f over the other parameters, so a
+    polynomial vanishes on it exactly when it vanishes identically once v is replaced by f."""
+    hyps = [sympy.expand(h) for h, _ in claim.hypotheses]
+    sub: dict[sympy.Symbol, sympy.Expr] = {}
+    for i, h in enumerate(hyps):
+        others = set().union(*(g.free_symbols for j, g in enumerate(hyps) if j != i))
+        for v in sorted(h.free_symbols - others, key=str):
+            c = h.coeff(v, 1)
+            if c.is_Rational and c != 0 and sympy.degree(h, v) == 1:
+                sub[v] = sympy.expand(-(h - c * v) / c)
+                break
+        else:
+            return None
+    return sub
+
+
 def _exact_pass(claim: Claim, deadline: _Deadline, rank_witness: list[Any], backend: str | None = None,
                 normalisation: Normalisation | None = None) -> tuple[str, Any]:
-    hyps = claim.hypotheses
+    solved = _solved_hypotheses(claim) if claim.hypotheses else None
+    hyps = claim.hypotheses if solved is None else []
     order = "grevlex" if hyps else "lex"
     # Gröbner reduction runs in SymPy's ring (hypotheses are small); expansion on the fastest backend
-    conv = _converter(claim, order, field=bool(hyps), backend="sympy" if hyps else backend,
-                      normalisation=normalisation)
+    substitution = normalisation.substitution if normalisation is not None else solved
+    conv = _converter(claim, order, field=bool(claim.hypotheses), backend="sympy" if hyps else backend,
+                      substitution=substitution)
     R = conv.R
     values = _evaluate(claim, conv, deadline=deadline)
     entries = [p for v in values.values() for p in flat(v) if not isinstance(p, int)]
@@ -480,6 +500,13 @@ def _exact_pass(claim: Claim, deadline: _Deadline, rank_witness: list[Any], back
             steps.append(f"{label} = {combo}; remainder 0")
     else:
         method = "polynomial identity (exact expansion)"
+        if solved:
+            # v − f with pairwise distinct leading variables v absent from every f: a Gröbner basis for a lex
+            # order with the v first (coprime leading terms), and reducing modulo it is substituting v = f
+            method = "Gröbner basis ideal membership"
+            steps.append("the hypotheses " + ", ".join(f"{v} − ({f})" for v, f in solved.items())
+                         + " are a Gröbner basis (lex, solved variables first: coprime leading terms); "
+                         "reduction modulo it substitutes " + ", ".join(f"{v} = {f}" for v, f in solved.items()))
         done = []
         for c in claim.conclusions:
             if c.kind == "proportional":
@@ -491,8 +518,10 @@ def _exact_pass(claim: Claim, deadline: _Deadline, rank_witness: list[Any], back
         for label, poly in _conclusion_polys(claim, values, done):
             deadline.check("expanding the conclusion")
             if poly != 0:
+                if solved:
+                    return _Outcome.NOT_IN_IDEAL, (label, R.text(poly))
                 return _Outcome.NONZERO, (label, R.text(poly))
-            steps.append(f"{label} expands to 0")
+            steps.append(f"{label} reduces to 0" if solved else f"{label} expands to 0")
     for c in claim.conclusions:
         if c.kind != "rank":
             continue
