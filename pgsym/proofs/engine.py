@@ -674,11 +674,15 @@ def _variety_points(claim: Claim, rng: random.Random, deadline: _Deadline, tries
 def _variety_counterexample(claim: Claim, deadline: _Deadline, rng: random.Random) -> Counterexample | None:
     """A point of the hypothesis variety where the constructions are defined and the conclusion fails."""
     R = _converter(claim).R
+    holds = 0
     for point in _variety_points(claim, rng, deadline):
         values = _evaluate(claim, _point_evaluator(claim, R, point))
         kind, data = _check_point(claim, values, modp=False)
         if kind == _Outcome.FAILS and _on_hypotheses(claim, point):
             return Counterexample({str(s): v for s, v in point.items()}, data, claim)
+        holds += kind == _Outcome.HOLDS
+        if holds >= 8:  # a false claim fails almost everywhere on the variety: enough searching
+            break
     return None
 
 
