@@ -244,3 +244,11 @@ def test_both_backends_multiply_alike(f_terms, g_terms):
         assert sympy.expand(R.to_expr(product) - f * g) == 0
         at = (f * g).subs({x: 2, y: sympy.Rational(-1, 3)})
         assert R.evaluate(product, [Fraction(2), Fraction(-1, 3)]) == Fraction(str(at))
+
+
+def test_an_expansion_beyond_the_term_limit_is_unknown(monkeypatch):
+    from pgsym.proofs import engine
+
+    monkeypatch.setattr(engine, "MAX_TERMS", 3)
+    v = prove("pappus")  # its meets have more than three terms per coordinate
+    assert v.status == "unknown" and "too large" in v.reason

@@ -80,6 +80,15 @@ class _Timeout(Exception):
     pass
 
 
+class _TooLarge(Exception):
+    pass
+
+
+MAX_TERMS = 400_000
+"""The most terms one coordinate may have in the exact pass: beyond, the verdict is *unknown* rather than a
+computation that a time limit cannot interrupt (python-flint's products run in C)."""
+
+
 class _Deadline:
     def __init__(self, seconds: float | None) -> None:
         self.end = None if seconds is None else time.perf_counter() + seconds
@@ -124,6 +133,8 @@ def _evaluate(claim: Claim, scalar: Callable[[Any], Any], reduce: Callable[[Any]
         value = node.operation.formula(node, [values[a] for a in node.args if isinstance(a, Node)], scalar)
         if reduce is not None:
             value = _map(value, reduce)
+        elif deadline is not None and any(hasattr(x, "__len__") and len(x) > MAX_TERMS for x in flat(value)):
+            raise _TooLarge(f"{node.name} has more than {MAX_TERMS} terms")
         values[node] = value
     return values
 
@@ -802,6 +813,10 @@ def prove(claim: Claim, *, timeout: float | None = 10.0, seed: int = 0, core_che
                                elapsed=time.perf_counter() - start, **base)
             return Verdict(status=Status.UNKNOWN, random_pass=summary, reason=reason,
                            elapsed=time.perf_counter() - start, **base)
+    except _TooLarge as err:
+        return Verdict(status=Status.UNKNOWN, random_pass=summary,
+                       reason=f"the expansion is too large: {err.args[0]} (no frame could be chosen, or it did not "
+                              "suffice)", elapsed=time.perf_counter() - start, **base)
     except _Timeout as err:
         return Verdict(status=Status.UNKNOWN, random_pass=summary,
                        reason=f"timed out after {timeout} s while {err.args[0] if err.args else 'working'}",
