@@ -1,5 +1,16 @@
 """Templates on the metric plane read off the absolute: the angle of two lines, the perpendicular through a
-point, and the type of a conic from its points at infinity."""
+point, and the type of a conic from its points at infinity.
+
+An angle's cosine is usually a surd; it is asked as ``p√q`` (``p`` rational, ``q`` square-free), two parts
+that grade exactly.
+
+>>> from pgsym.exercises.template import get_template
+>>> ex = get_template("angle").generate(seed=1, level=2, slot=2)
+>>> [(p.label, p.answer.kind) for p in ex.parts]
+[('2a', 'scalar'), ('2b', 'integer')]
+>>> _surd(Fraction(1, 12))       # √(1/12) = 1/(2√3) = √3/6
+(Fraction(1, 6), 3)
+"""
 
 from __future__ import annotations
 
@@ -11,7 +22,7 @@ import sympy
 from ...conics import Conic
 from ...exact import is_zero, sign
 from ...metric import cos_angle, cos_squared_angle, is_perpendicular, orthogonal_projection, perpendicular_line
-from ...projective_plane import Line, Point, incident
+from ...projective_plane import Line, Point, incident, line_at_infinity
 from ...ring import cross, primitive_integers
 from ..mistakes import mistake
 from ..model import Answer, Exercise, Mistake
@@ -296,7 +307,7 @@ class ConicTypeTemplate(Template):
         check(not conic.is_degenerate, "the conic is degenerate")
         check(conic.contains(Point(*exercise.params["point"])), "the conic has no real point where it should")
         # how the conic meets l∞: two real points (hyperbola), a double point (parabola) or none (ellipse)
-        disc = conic.discriminant(Line(0, 0, 1))
+        disc = conic.discriminant(line_at_infinity())
         kind = "parabola" if is_zero(disc) else ("hyperbola" if sign(disc) > 0 else "ellipse")
         check(exercise.parts[0].answer.value == "ABC"[_TYPES.index(kind)], f"the conic is a {kind}")
 
