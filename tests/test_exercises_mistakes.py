@@ -2,7 +2,7 @@
 hand or with SymPy), the right answer never is, and every stored candidate is really wrong.
 
 The property test runs ``PGSYM_MISTAKE_SEEDS`` seeds per template: 10⁴ by default (about three
-minutes for the sixteen templates on two cores); a smaller number gives a quick local run.
+minutes for the nineteen templates on two cores); a smaller number gives a quick local run.
 """
 
 from __future__ import annotations
