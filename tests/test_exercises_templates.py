@@ -113,6 +113,25 @@ def test_surd_normal_form_by_hand():
     assert _surd(Fraction(1, 12)) == (Fraction(1, 6), 3)
 
 
+@given(st.integers(1, 10**12), st.integers(1, 10**12))
+def test_surd_normal_form_squares_back(num, den):
+    from pgsym.exercises.templates.metric import _surd
+
+    x = Fraction(min(num, den), max(num, den))  # a squared cosine, in (0, 1]
+    a, b = _surd(x)
+    # plain Python numbers (large factors must not stay python-flint integers), and (a√b)² = x
+    assert type(a) is Fraction and type(b) is int and a > 0 and a * a * b == x
+
+
+def test_surd_of_a_stress_seed_with_large_factors():
+    from pgsym.exercises.templates.metric import _surd
+
+    # the 'absolute' slip of l = (3, 4, 22), m = (13, 84, 459): (l·m)² / (|l|² |m|²) over all three coordinates,
+    # l·m = 39 + 336 + 10098 = 10473, |l|² = 9 + 16 + 484 = 509, |m|² = 169 + 7056 + 210681 = 217906
+    a, b = _surd(Fraction(10473**2, 509 * 217906))
+    assert type(b) is int and a * a * b == Fraction(10473**2, 509 * 217906)
+
+
 def test_angle_instances_match_the_dot_product_of_the_normals():
     # cos²θ = (l1 m1 + l2 m2)² / ((l1² + l2²)(m1² + m2²)), in plain fractions, must equal p² q
     for level in (1, 2, 3):

@@ -43,7 +43,8 @@ def _tex(value: Fraction) -> str:
 def _squarefree_split(n: int) -> tuple[int, int]:
     """``(k, b)`` with ``n = k² b`` and ``b`` square-free (``n > 0``)."""
     k, b = 1, 1
-    for p, e in sympy.factorint(n).items():
+    for prime, exponent in sympy.factorint(n).items():
+        p, e = int(prime), int(exponent)  # large factors may come back as python-flint integers
         k *= p ** (e // 2)
         b *= p ** (e % 2)
     return k, b
