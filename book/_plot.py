@@ -112,3 +112,88 @@ def posts_along_a_road(world, image):
     plt.tight_layout()
     plt.show()
     return np.diff(world), np.diff(image)
+
+
+def angle_and_laguerre(l, m, cr):
+    """Draw two lines ``l``, ``m`` (homogeneous 3-vectors, meeting at a finite point) with the angle θ
+    turning the normal of ``l`` onto the normal of ``m``, and beside them Laguerre's cross-ratio ``cr``
+    (a complex number) on the unit circle of the complex plane, at the angle −2θ.
+
+    Returns θ and the argument of ``cr`` in degrees.
+    """
+    l, m = (np.array([float(c) for c in v]) for v in (l, m))
+    cr = complex(cr)
+    p = np.cross(l, m)
+    p = p[:2] / p[2]
+    theta = np.arctan2(l[0] * m[1] - l[1] * m[0], l[0] * m[0] + l[1] * m[1])
+    _fig, (left, right) = plt.subplots(1, 2, figsize=(9, 4))
+    s = np.linspace(-2.2, 2.2, 2)
+    for line, name, color in ((l, r"$\mathbf{l}$", "tab:blue"), (m, r"$\mathbf{m}$", "tab:orange")):
+        d = np.array([line[1], -line[0]]) / np.hypot(line[0], line[1])  # direction of the line
+        left.plot(p[0] + s * d[0], p[1] + s * d[1], color=color, lw=1.8, label=name)
+        n = np.array(line[:2]) / np.hypot(line[0], line[1])
+        left.annotate("", p + 0.9 * n, p, arrowprops={"arrowstyle": "->", "color": color})
+    a0 = np.arctan2(l[1], l[0])
+    arc = a0 + np.linspace(0, theta, 50)
+    left.plot(p[0] + 0.5 * np.cos(arc), p[1] + 0.5 * np.sin(arc), color="black", lw=1)
+    mid = a0 + theta / 2
+    left.text(p[0] + 0.62 * np.cos(mid), p[1] + 0.62 * np.sin(mid), r"$\theta$")
+    left.plot(*p, "o", color="black")
+    left.set_aspect("equal")
+    left.set_xlim(p[0] - 2, p[0] + 2)
+    left.set_ylim(p[1] - 2, p[1] + 2)
+    left.legend(loc="lower right")
+    left.set_title("two lines and the normals $(l_1, l_2)$, $(m_1, m_2)$", fontsize=9)
+    t = np.linspace(0, 2 * np.pi, 200)
+    right.plot(np.cos(t), np.sin(t), color="0.6", lw=1)
+    right.axhline(0, color="0.8", lw=0.8)
+    right.axvline(0, color="0.8", lw=0.8)
+    right.plot([0, cr.real], [0, cr.imag], color="tab:red", lw=1.5)
+    right.plot(cr.real, cr.imag, "o", color="tab:red")
+    right.annotate(r"cr$(\mathbf{l}, \mathbf{m}; \mathbf{p}\vee\mathbf{I}, \mathbf{p}\vee\mathbf{J}) = e^{-2i\theta}$",
+                   (cr.real, cr.imag), xytext=(-60, -22), textcoords="offset points", fontsize=9)
+    arc2 = np.linspace(0, np.angle(cr), 50)
+    right.plot(0.3 * np.cos(arc2), 0.3 * np.sin(arc2), color="black", lw=1)
+    right.text(0.35, -0.25 if np.angle(cr) < 0 else 0.15, r"$-2\theta$")
+    right.set_aspect("equal")
+    right.set_xlim(-1.4, 1.4)
+    right.set_ylim(-1.4, 1.4)
+    right.set_xlabel("real part")
+    right.set_ylabel("imaginary part")
+    right.set_title("Laguerre's cross-ratio in the complex plane", fontsize=9)
+    plt.tight_layout()
+    plt.show()
+    return float(np.degrees(theta)), float(np.degrees(np.angle(cr)))
+
+
+def circle_pencil(circles, a, b):
+    """Draw circles ``(cx, cy, r)`` of the pencil through the points ``a`` and ``b`` (and I, J), and the
+    line ``ab``, the finite part of the pencil's degenerate member ``ab ∪ l∞``.
+
+    Returns the largest distance of ``a`` or ``b`` from a drawn circle (zero up to rounding).
+    """
+    a, b = np.asarray(a, dtype=float), np.asarray(b, dtype=float)
+    _fig, ax = plt.subplots(figsize=(5.6, 5))
+    t = np.linspace(0, 2 * np.pi, 300)
+    worst = 0.0
+    colors = plt.cm.viridis(np.linspace(0, 0.9, len(circles)))
+    for (cx, cy, r), color in zip(circles, colors, strict=True):
+        cx, cy, r = float(cx), float(cy), float(r)
+        ax.plot(cx + r * np.cos(t), cy + r * np.sin(t), color=color, lw=1.3)
+        ax.plot(cx, cy, "+", color=color)
+        worst = max(worst, *(abs(np.hypot(*(q - (cx, cy))) - r) for q in (a, b)))
+    d = (b - a) / np.linalg.norm(b - a)
+    ax.plot(*np.array([a - 6 * d, b + 6 * d]).T, color="black", lw=1, ls="--", label=r"$\mathbf{a} \vee \mathbf{b}$")
+    mid = (a + b) / 2
+    ax.plot(*np.array([mid - 6 * d[::-1] * (1, -1), mid + 6 * d[::-1] * (1, -1)]).T, color="0.6", lw=0.8,
+            ls=":", label="centres")
+    for q, name in ((a, r"$\mathbf{a}$"), (b, r"$\mathbf{b}$")):
+        ax.plot(*q, "o", color="black")
+        ax.annotate(name, q, xytext=(5, 5), textcoords="offset points")
+    ax.set_aspect("equal")
+    ax.set_xlim(-3.5, 3.5)
+    ax.set_ylim(-3.5, 3.5)
+    ax.legend(loc="upper right", fontsize=8)
+    ax.set_title(r"the pencil of conics through $\mathbf{a}, \mathbf{b}, \mathbf{I}, \mathbf{J}$", fontsize=9)
+    plt.show()
+    return worst

@@ -2,7 +2,7 @@
 hand or with SymPy), the right answer never is, and every stored candidate is really wrong.
 
 The property test runs ``PGSYM_MISTAKE_SEEDS`` seeds per template: 10⁴ by default (about three
-minutes for the sixteen templates on two cores); a smaller number gives a quick local run.
+minutes for the nineteen templates on two cores); a smaller number gives a quick local run.
 """
 
 from __future__ import annotations
@@ -215,6 +215,32 @@ def test_exact_answers_right_only_up_to_scale():
     assert _check(classify, 1, "8") is None
 
 
+def test_metric_templates_name_the_usual_slips():
+    ex = _instance("angle", 2, "squared")
+    (l1, l2, _), (m1, m2, _) = ex.params["l"], ex.params["m"]
+    cos2 = F((l1 * m1 + l2 * m2) ** 2, (l1**2 + l2**2) * (m1**2 + m2**2))
+    assert _check(ex, 0, str(cos2)) == "squared"  # cos²θ, no square root
+    sin2 = 1 - cos2
+    assert _check(ex, 0, str(-ex.parts[0].answer.value)) == "sign"
+    assert _check(ex, 0, str(ex.parts[0].answer.value)) is None
+    # the sine: p² q = 1 − cos²θ; found among the candidates of part 0 by value
+    sine = next(m for m in ex.parts[0].mistakes if m.code == "sine").answer.value
+    q_sine = next((m.answer.value for m in ex.parts[1].mistakes if m.code == "sine"), ex.parts[1].answer.value)
+    assert sine * sine * q_sine == sin2
+    ex = _instance("angle", 2, "unsimplified")
+    (l1, l2, _), (m1, m2, _) = ex.params["l"], ex.params["m"]
+    cos2 = F((l1 * m1 + l2 * m2) ** 2, (l1**2 + l2**2) * (m1**2 + m2**2))
+    assert _check(ex, 1, str(cos2.numerator * cos2.denominator)) == "unsimplified"  # √(n/d) = √(nd)/d, not reduced
+    ex = _instance("perpendicular", 1, "parallel")
+    (a, b, c), x = ex.params["l"], ex.params["x"]
+    # the parallel through x: (a, b, −(a x1 + b x2)/x3), here with x3 = 1
+    assert _check(ex, 0, typed([a, b, -(a * x[0] + b * x[1])])) == "parallel"
+    assert _check(ex, 0, typed([b, -a, c])) == "wrong-point"
+    ex = _instance("conic-type", 2, "reversed")
+    wrong = "A" if ex.parts[0].answer.value == "B" else "B"  # ellipse for a hyperbola, or the other way round
+    assert _check(ex, 0, wrong) == "reversed"
+
+
 # --- the property over many seeds ------------------------------------------------------------------------
 # the classes each built-in template must produce somewhere in its seeds
 EXPECTED = {
@@ -224,6 +250,8 @@ EXPECTED = {
     "classify": {"scale"}, "cross-ratio": {"sign", "order"}, "homography4": {"transposed", "inverted"},
     "plane3": {"dual"}, "point3": {"dual", "ideal-as-finite"}, "plucker": {"dual", "sign"},
     "decompose": {"sign", "scale", "transposed", "inverted"}, "incidence": set(), "preserved": set(),
+    "angle": {"sign", "squared", "absolute", "sine", "unsimplified"},
+    "perpendicular": {"sign", "parallel", "wrong-point", "dual"}, "conic-type": {"reversed", "matrix-entry"},
 }
 
 

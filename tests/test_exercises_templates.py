@@ -16,7 +16,8 @@ from pgsym.exercises.template import TemplateError, UnknownTopicError, all_templ
 from pgsym.ring import adjugate, det, primitive_integers
 
 TOPICS = ["homogeneous", "join", "meet", "ideal", "incidence", "apply-point", "apply-line", "apply-conic", "classify",
-          "preserved", "cross-ratio", "homography4", "plane3", "point3", "plucker", "decompose"]
+          "preserved", "cross-ratio", "homography4", "plane3", "point3", "plucker", "decompose", "angle",
+          "perpendicular", "conic-type"]
 
 # Seeds per level in the per-template stress test. The CLI and the benchmark run the full 10^4
 # (bench/bench_exercises.py times it for one template); here a smaller count keeps CI fast.
@@ -99,6 +100,93 @@ def test_cross_ratio_instance_matches_the_formula():
     ex = get_template("cross-ratio").generate(seed=9, level=1, slot=1)
     a, b, c, d = (pt[0] for pt in ex.params["points"])
     assert ex.parts[0].answer.value == Fraction((a - c) * (b - d), (a - d) * (b - c))
+
+
+def test_surd_normal_form_by_hand():
+    from pgsym.exercises.templates.metric import _surd
+
+    # √(169/250) = 13/√250 = 13/(5√10) = 13√10/50
+    assert _surd(Fraction(169, 250)) == (Fraction(13, 50), 10)
+    # √(9/25) = 3/5, rational: q = 1; √(1/2) = √2/2; √(1/12) = 1/(2√3) = √3/6
+    assert _surd(Fraction(9, 25)) == (Fraction(3, 5), 1)
+    assert _surd(Fraction(1, 2)) == (Fraction(1, 2), 2)
+    assert _surd(Fraction(1, 12)) == (Fraction(1, 6), 3)
+
+
+@given(st.integers(1, 10**12), st.integers(1, 10**12))
+def test_surd_normal_form_squares_back(num, den):
+    from pgsym.exercises.templates.metric import _surd
+
+    x = Fraction(min(num, den), max(num, den))  # a squared cosine, in (0, 1]
+    a, b = _surd(x)
+    # plain Python numbers (large factors must not stay python-flint integers), and (a√b)² = x
+    assert type(a) is Fraction and type(b) is int and a > 0 and a * a * b == x
+
+
+def test_surd_of_a_stress_seed_with_large_factors():
+    from pgsym.exercises.templates.metric import _surd
+
+    # the 'absolute' slip of l = (3, 4, 22), m = (13, 84, 459): (l·m)² / (|l|² |m|²) over all three coordinates,
+    # l·m = 39 + 336 + 10098 = 10473, |l|² = 9 + 16 + 484 = 509, |m|² = 169 + 7056 + 210681 = 217906
+    a, b = _surd(Fraction(10473**2, 509 * 217906))
+    assert type(b) is int and a * a * b == Fraction(10473**2, 509 * 217906)
+
+
+def test_angle_instances_match_the_dot_product_of_the_normals():
+    # cos²θ = (l1 m1 + l2 m2)² / ((l1² + l2²)(m1² + m2²)), in plain fractions, must equal p² q
+    for level in (1, 2, 3):
+        for seed in range(15):
+            ex = get_template("angle").generate(seed=seed, level=level, slot=1)
+            (l1, l2, _), (m1, m2, _) = ex.params["l"], ex.params["m"]
+            p, q = ex.parts[0].answer.value, ex.parts[1].answer.value
+            assert p > 0 and p * p * q == Fraction((l1 * m1 + l2 * m2) ** 2, (l1**2 + l2**2) * (m1**2 + m2**2))
+            assert all(q % (k * k) for k in range(2, 40))  # square-free
+            if level == 1:
+                assert q == 1  # a Pythagorean rotation: the cosine is rational
+
+
+def test_angle_of_three_four_five_by_hand():
+    import dataclasses
+
+    from pgsym.exercises.model import Answer
+
+    # l = (1, 0, 0) (x = 0) and m = (3, 4, -5): cos θ = 3/√(1·25) = 3/5, i.e. p = 3/5, q = 1
+    t = get_template("angle")
+    ex = t.generate(seed=0, level=2, slot=1)
+    ex = dataclasses.replace(ex, params={"l": [1, 0, 0], "m": [3, 4, -5]}, parts=(
+        dataclasses.replace(ex.parts[0], answer=Answer.scalar(Fraction(3, 5))),
+        dataclasses.replace(ex.parts[1], answer=Answer.integer(1))))
+    t.verify(ex)
+    wrong = dataclasses.replace(ex, parts=(dataclasses.replace(ex.parts[0], answer=Answer.scalar(Fraction(4, 5))),
+                                           ex.parts[1]))
+    with pytest.raises(TemplateError):
+        t.verify(wrong)  # 4/5 is the sine
+
+
+def test_perpendicular_instances_pass_through_the_point_at_a_right_angle():
+    for level in (1, 2, 3):
+        for seed in range(15):
+            ex = get_template("perpendicular").generate(seed=seed, level=level, slot=1)
+            (a, b, _), x = ex.params["l"], ex.params["x"]
+            u = ex.parts[0].answer.value
+            assert sum(ui * xi for ui, xi in zip(u, x, strict=True)) == 0  # through x
+            assert a * u[0] + b * u[1] == 0  # normals orthogonal: lᵀ C*∞ u = 0
+            assert a * x[0] + b * x[1] + ex.params["l"][2] * x[2] != 0  # x is not on l
+
+
+def test_conic_type_key_follows_the_discriminant_of_the_quadratic_part():
+    seen = set()
+    for level in (1, 2, 3):
+        for seed in range(30):
+            ex = get_template("conic-type").generate(seed=seed, level=level, slot=1)
+            a, b, c, d, e, f = ex.params["coefficients"]
+            disc = b * b - 4 * a * c  # of a x1² + b x1x2 + c x2² = 0, the points at infinity
+            expected = "B" if disc > 0 else "C" if disc == 0 else "A"  # hyperbola, parabola, ellipse
+            assert ex.parts[0].answer.value == expected
+            x0, y0 = ex.params["point"]
+            assert a * x0 * x0 + b * x0 * y0 + c * y0 * y0 + d * x0 + e * y0 + f == 0  # a real point
+            seen.add((level, expected))
+    assert seen == {(lv, k) for lv in (1, 2, 3) for k in "ABC"}
 
 
 def test_ideal_point_instances_have_last_coordinate_zero():

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from .line1 import CrossRatioTemplate
+from .metric import AngleTemplate, ConicTypeTemplate, PerpendicularTemplate
 from .plane import HomogeneousTemplate, IdealPointTemplate, IncidenceTemplate, JoinTemplate, MeetTemplate
 from .space import PlaneThroughTemplate, PluckerTemplate, PointOnPlanesTemplate
 from .transform import (
@@ -32,6 +33,9 @@ BUILTIN_TEMPLATES = (
     PointOnPlanesTemplate,
     PluckerTemplate,
     DecomposeTemplate,
+    AngleTemplate,
+    PerpendicularTemplate,
+    ConicTypeTemplate,
 )
 
 __all__ = ["BUILTIN_TEMPLATES"]
