@@ -105,6 +105,13 @@ _LAZY: dict[str, str] = {
     "sin_angle": "metric",
     "squared_distance": "metric",
     "translation": "metric",
+    "intersect_conics": "conic_pencil",
+    "conics_through_tangent": "conic_pencil",
+    "affine_type": "conic_metric",
+    "conic_center": "conic_metric:center",
+    "conic_axes": "conic_metric:axes",
+    "conic_foci": "conic_metric:foci",
+    "semi_axes": "conic_metric",
     # the errors of the subsystems live beside them (importing one loads only its small module)
     "AnswersFileError": "exercises.errors",
     "ManifestError": "exercises.errors",
