@@ -30,7 +30,7 @@ from .conics import Conic, circular_points
 from .errors import DegenerateConfigurationError, DegenerateConicError, InvalidCoordinatesError, ObjectTypeError
 from .exact import Scalar, is_zero, sign, to_exact
 from .homogeneous import require
-from .matrices import adjugate
+from .matrices import adjugate, proportional
 from .metric import rotation
 from .projective_plane import Line, Point, cross, join, line_at_infinity
 from .transformations import Transformation
@@ -72,6 +72,26 @@ def _is_circular(C: Conic) -> bool:
     return is_zero(m[0, 0] - m[1, 1]) and is_zero(m[0, 1])
 
 
+def _real(conic: Conic, what: str) -> Conic:
+    """A real representative of the conic (signs are scale-free only for real scales), or a named error
+    when there is none (``C ∝ C̄`` fails); symbols count as real parameters."""
+    require(conic, Conic, what)
+    entries = list(conic.matrix)
+    symbols = set().union(*(e.free_symbols for e in entries))
+    real = {s: sympy.Dummy(s.name, real=True) for s in symbols}
+    mine = [e.xreplace(real) for e in entries]
+    conj = [sympy.expand(sympy.conjugate(e)) for e in mine]
+    if not proportional(mine, conj):
+        raise InvalidCoordinatesError(
+            f"{what}: {conic!r} is not a real conic (no real multiple of its matrix is real); the affine "
+            "type, centre, axes and foci are defined here for real conics"
+        )
+    if all(is_zero(sympy.expand(a - b)) for a, b in zip(mine, conj, strict=True)):
+        return conic
+    pivot = next(e for e in entries if not is_zero(e))
+    return Conic._from_exact(conic.matrix.applyfunc(lambda e: sympy.expand(sympy.radsimp(e / pivot))))
+
+
 def affine_type(conic: Conic) -> str:
     """The affine type of a real conic, one of :data:`CONIC_TYPES`, decided exactly.
 
@@ -85,7 +105,8 @@ def affine_type(conic: Conic) -> str:
 
     Every sign is scale-free (``C → kC`` multiplies it by an even power of k) and decided by
     :func:`pgsym.exact.sign`; a conic with symbolic or complex coefficients whose sign is not
-    determined raises :class:`~pgsym.errors.UndecidableError`.
+    determined raises :class:`~pgsym.errors.UndecidableError`; a conic that is not real (symbols are
+    taken as real parameters) raises :class:`~pgsym.errors.InvalidCoordinatesError`.
 
     >>> [affine_type(Conic.from_coefficients(*c)) for c in [(1, 0, 1, 0, 0, -1), (1, 0, -1, 0, 0, -1),
     ...                                                   (1, 0, 0, 0, -1, 0), (1, 0, 2, 0, 0, 1)]]
@@ -94,7 +115,7 @@ def affine_type(conic: Conic) -> str:
     ...                                                   (1, 0, 0, 0, 0, 1), (0, 0, 0, 1, 0, 0)]]
     ['intersecting lines', 'parallel lines', 'imaginary parallel lines', 'line and line at infinity']
     """
-    require(conic, Conic, "affine_type")
+    conic = _real(conic, "affine_type")
     m = conic.matrix
     meets = sign(conic.discriminant(line_at_infinity()))  # +: two real ideal points, 0: one, −: none
     if not conic.is_degenerate:
@@ -135,7 +156,7 @@ def center(conic: Conic) -> Point:
     >>> center(Conic.circle(3, -1, 2)), center(Conic.from_coefficients(1, 0, 0, 0, -1, 0))   # y = x²
     (Point(3, -1, 1), Point(0, 1, 0))
     """
-    require(conic, Conic, "center")
+    conic = _real(conic, "center")
     return _affine(conic.pole(line_at_infinity()))
 
 
@@ -148,6 +169,7 @@ def _principal(conic: Conic) -> list[tuple[tuple[Expr, Expr], Expr]]:
     off-diagonal entry), eigenvectors ``(2h, c − a ± r)``. The first axis is the major axis of an
     ellipse (larger s) or the transverse axis of a hyperbola (``s > 0``).
     """
+    conic = _real(conic, "axes")
     kind = affine_type(conic)
     if kind not in ("ellipse", "hyperbola"):
         raise DegenerateConfigurationError(
@@ -176,7 +198,7 @@ def semi_axes(conic: Conic) -> tuple[Expr, Expr]:
     >>> semi_axes(Conic.from_coefficients(1, 0, 4, 0, 0, -4)), semi_axes(Conic.from_coefficients(1, 0, -1, 0, 0, -2))
     ((2, 1), (sqrt(2), sqrt(2)))
     """
-    require(conic, Conic, "semi_axes")
+    conic = _real(conic, "semi_axes")
     (_, s1), (_, s2) = _principal(conic)
     return sympy.sqrt(s1), sympy.sqrt(s2 if sign(s2) > 0 else sympy.radsimp(-s2))
 
@@ -188,7 +210,7 @@ def axes(conic: Conic) -> tuple[Line, ...]:
     >>> axes(Conic.from_coefficients(5, 6, 5, 0, 0, -8))     # 5x² + 6xy + 5y² = 8: major axis y = −x
     (Line(1, 1, 0), Line(1, -1, 0))
     """
-    require(conic, Conic, "axes")
+    conic = _real(conic, "axes")
     if affine_type(conic) == "parabola":
         return (join(foci(conic)[0], center(conic)).canonical(),)
     z = center(conic)
@@ -216,7 +238,7 @@ def foci(conic: Conic) -> tuple[Point, ...]:
     >>> foci(Conic.from_coefficients(1, 0, -1, 0, 0, -2))      # x² − y² = 2: c² = 2 + 2
     (Point(-2, 0, 1), Point(2, 0, 1))
     """
-    require(conic, Conic, "foci")
+    conic = _real(conic, "foci")
     kind = affine_type(conic)
     I_, J_ = circular_points()
     if kind == "circle":
