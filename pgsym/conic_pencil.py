@@ -37,7 +37,7 @@ from .errors import (
     DimensionError,
     UndecidableError,
 )
-from .exact import is_zero
+from .exact import algebraic_normal_form, is_zero
 from .homogeneous import require
 from .projective_plane import Line, Point, collinear, join
 
@@ -150,11 +150,24 @@ def intersect_conics(c1: Conic, c2: Conic) -> tuple[Point, Point, Point, Point]:
 
 
 def _nice(p: Point) -> Point:
-    """The canonical representative, where the exact kit can normalise it (else the point as computed)."""
-    try:
+    """Rational points in canonical form; others scaled so that the last nonzero coordinate is 1, each
+    coordinate in the normal form of :func:`pgsym.exact.algebraic_normal_form` where that is a radical
+    expression (a ``CRootOf`` is not wanted here, and symbols have no normal form)."""
+    if all(c.is_Rational for c in p.coords):
         return p.canonical()
-    except UndecidableError:
-        return p
+    k = max(i for i in range(3) if not is_zero(p.coords[i]))
+    coords = [sympy.expand(sympy.radsimp(c / p.coords[k])) for c in p.coords]
+    out = []
+    for c in coords:
+        if c.is_Rational or c.free_symbols:
+            out.append(c)
+            continue
+        try:
+            normal = algebraic_normal_form(c)
+        except UndecidableError:
+            normal = c
+        out.append(c if normal.has(sympy.CRootOf) else normal)
+    return Point._from_exact(tuple(out))
 
 
 def conics_through_tangent(points: tuple[Point, Point, Point, Point], line: Line) -> tuple[Conic, ...]:

@@ -240,3 +240,14 @@ def test_four_points_and_tangent_property(coords, l):
         form = sympy.Poly(sympy.expand((Matrix(x).T * Matrix(C.matrix) * Matrix(x))[0, 0]), s, u)
         A, B2, Cc = (form.coeff_monomial(m) for m in (s**2, s * u, u**2))
         assert is_zero(B2**2 - 4 * A * Cc)
+
+
+def test_symbolic_conics():
+    # y = a x² and x² = 1: the points (±1, a); the lines x = ±1 both pass through (0, 1, 0), where the
+    # parabola touches l∞, so that ideal point counts twice
+    a, r, d = symbols("a r d")
+    got = intersect_conics(Conic.from_coefficients(a, 0, 0, 0, -1, 0), Conic.from_coefficients(1, 0, 0, 0, 0, -1))
+    assert same_multiset(got, [Point(1, a), Point(-1, a), Point(0, 1, 0), Point(0, 1, 0)])
+    # circles of radius r at distance d: y = ±√(r² − d²/4), a symbol under a radical, so no decision
+    with pytest.raises(UndecidableError):
+        intersect_conics(Conic.circle(0, 0, r), Conic.circle(d, 0, r))
