@@ -251,3 +251,16 @@ def test_symbolic_conics():
     # circles of radius r at distance d: y = ±√(r² − d²/4), a symbol under a radical, so no decision
     with pytest.raises(UndecidableError):
         intersect_conics(Conic.circle(0, 0, r), Conic.circle(d, 0, r))
+
+
+def test_conics_through_four_points_touching_special_lines():
+    # touching l∞ means a parabola (or a parallel pair). Through (0, 0), (1, 1), (−1, 1), (2, 4): y = x², and
+    # the pair y = x (through the first two) and y = x + 2 (through the other two): (x − y)(x − y + 2)
+    got = conics_through_tangent((Point(0, 0), Point(1, 1), Point(-1, 1), Point(2, 4)), Line(0, 0, 1))
+    assert set(got) == {Conic.from_coefficients(1, 0, 0, 0, -1, 0), Conic.from_coefficients(1, -2, 1, 2, -2, 0)}
+    square = (Point(1, 1), Point(-1, 1), Point(-1, -1), Point(1, -1))
+    # α(x² − 1) + β(y² − 1) on w = 0 is αx² + βy², a double root iff αβ = 0: the pairs y = ±1 and x = ±1
+    assert set(conics_through_tangent(square, Line(0, 0, 1))) == {Conic.from_coefficients(1, 0, 0, 0, 0, -1),
+                                                                   Conic.from_coefficients(0, 0, 1, 0, 0, -1)}
+    # x = 1 holds two of the points, met by every conic of the pencil twice: only the pair x = ±1 contains it
+    assert conics_through_tangent(square, Line(1, 0, -1)) == (Conic.from_coefficients(1, 0, 0, 0, 0, -1),)
