@@ -291,6 +291,26 @@ class Conic(SymmetricForm, kind="conic"):
                 + ("a pair of lines" if self.rank == 2 else "a double line")
             )
 
+    def tangents_from(self, point: Point) -> tuple[Line, Line]:
+        """The two tangent lines from a point to a non-degenerate conic, exact (possibly irrational or complex).
+
+        They form the line pair ``T = (xᵀCx) C − (Cx)(Cx)ᵀ``: a point y is on T exactly when
+        ``(xᵀCx)(yᵀCy) = (xᵀCy)²``, the condition that the line xy touches C (Joachimsthal), so
+        :meth:`split` gives the two lines. For a point on the conic T is the tangent there, doubled;
+        from a point inside a real conic the tangents are complex conjugate.
+
+        >>> sorted(Conic.circle(0, 0, 1).tangents_from(Point(0, 2)), key=str)   # slopes ±√3
+        [Line(1, -sqrt(3)/3, 2*sqrt(3)/3), Line(1, sqrt(3)/3, -2*sqrt(3)/3)]
+        >>> Conic.circle(0, 0, 1).tangents_from(Point(1, 0))
+        (Line(1, 0, -1), Line(1, 0, -1))
+        """
+        require(point, Point, "Conic.tangents_from")
+        self._require_nondegenerate("the tangents from a point")
+        x = Matrix(list(point.coords))
+        cx = Matrix(self._matrix) * x
+        T = (sympy.expand((x.T * cx)[0, 0]) * Matrix(self._matrix) - cx * cx.T).applyfunc(sympy.expand)
+        return Conic._from_exact(T).split()
+
     def split(self) -> tuple[Line, Line]:
         """The two lines of a degenerate conic: ``(l, m)`` with ``C ∝ l mᵀ + m lᵀ`` (a double line: ``l = m``).
 

@@ -23,7 +23,7 @@ from pgsym.conic_metric import (
     parabola,
     semi_axes,
 )
-from pgsym.conics import Conic
+from pgsym.conics import Conic, circular_points
 from pgsym.errors import (
     DegenerateConfigurationError,
     DegenerateConicError,
@@ -32,7 +32,7 @@ from pgsym.errors import (
 )
 from pgsym.exact import is_zero
 from pgsym.metric import distance
-from pgsym.projective_plane import Line, Point
+from pgsym.projective_plane import Line, Point, meet
 from pgsym.transformations import Transformation
 from tests.strategies import affine_matrices, integers, unit_directions
 
@@ -231,3 +231,14 @@ def test_parabola_focus_and_directrix(vertex, p, direction, s):
     assert P_.contains(Q)
     assert is_zero(distance(Q, F) - (p * s * s + p))
     assert center(P_) == Point(direction[0], direction[1], 0)
+
+
+@pytest.mark.parametrize("coefficients", [(1, 0, 4, 0, 0, -4), (5, 6, 5, 0, 0, -8), (4, 0, -9, -8, -36, -68)])
+def test_foci_are_where_tangents_from_I_and_J_meet(coefficients):
+    # Plücker's definition (H&Z, Richter-Gebert): the tangents from I and from J meet in four points, the
+    # two real foci and two imaginary ones; computed here with the tangents, independently of foci()
+    C = Conic.from_coefficients(*coefficients)
+    I_, J_ = circular_points()
+    meets = [meet(s, t) for s in C.tangents_from(I_) for t in C.tangents_from(J_)]
+    for f in foci(C):
+        assert any(f == m for m in meets)

@@ -264,3 +264,15 @@ def test_conics_through_four_points_touching_special_lines():
                                                                    Conic.from_coefficients(0, 0, 1, 0, 0, -1)}
     # x = 1 holds two of the points, met by every conic of the pencil twice: only the pair x = ±1 contains it
     assert conics_through_tangent(square, Line(1, 0, -1)) == (Conic.from_coefficients(1, 0, 0, 0, 0, -1),)
+
+
+def test_tangents_from_a_point():
+    # from (0, 2) to x² + y² = 1: y = kx + 2 touches when k² + 1 = 4 (distance 2/√(1 + k²) = 1), k = ±√3
+    got = Conic.circle(0, 0, 1).tangents_from(Point(0, 2))
+    assert set(got) == {Line(sqrt(3), -1, 2), Line(-sqrt(3), -1, 2)}
+    # from a point of the conic: its tangent, twice
+    assert Conic.circle(0, 0, 1).tangents_from(Point(0, 1)) == (Line(0, 1, -1), Line(0, 1, -1))
+    # from the origin, inside: y = kx touches when 1 + k² = 0, k = ±i
+    assert set(Conic.circle(0, 0, 1).tangents_from(Point(0, 0))) == {Line(I, -1, 0), Line(-I, -1, 0)}
+    with pytest.raises(DegenerateConicError):
+        Conic.from_coefficients(1, 0, -1, 0, 0, 0).tangents_from(Point(1, 2))
