@@ -218,7 +218,7 @@ def test_four_points_errors():
 
 @given(st.lists(st.tuples(integers(5), integers(5)), min_size=4, max_size=4, unique=True),
        st.tuples(integers(5), integers(5), integers(5)))
-@FAST
+@settings(max_examples=8, deadline=None)
 def test_four_points_and_tangent_property(coords, l):
     pts = tuple(Point(x, y) for x, y in coords)
     assume(_general_position(pts) and any(l[:2]))
