@@ -149,24 +149,29 @@ def intersect_conics(c1: Conic, c2: Conic) -> tuple[Point, Point, Point, Point]:
     return tuple(points)  # type: ignore[return-value]
 
 
+def _simple(c: Expr) -> bool:
+    """True when every radical in ``c`` is of a rational number (``√31``, ``i``), none nested."""
+    return all(e.exp.is_Integer or e.base.is_Rational for e in c.atoms(sympy.Pow))
+
+
 def _nice(p: Point) -> Point:
-    """Rational points in canonical form; others scaled so that the last nonzero coordinate is 1, each
-    coordinate in the normal form of :func:`pgsym.exact.algebraic_normal_form` where that is a radical
-    expression (a ``CRootOf`` is not wanted here, and symbols have no normal form)."""
+    """Rational points in canonical form; others scaled by a coordinate without nested radicals (the last one
+    where it has none, so that a finite point reads ``(x, y, 1)``), those coordinates in the normal form of
+    :func:`pgsym.exact.algebraic_normal_form`. Nested radicals are left as computed: their normal form
+    would cost a minimal polynomial of high degree, and dividing by them nests them in denominators."""
     if all(c.is_Rational for c in p.coords):
         return p.canonical()
-    k = max(i for i in range(3) if not is_zero(p.coords[i]))
-    coords = [sympy.expand(sympy.radsimp(c / p.coords[k])) for c in p.coords]
+    nonzero = [i for i in range(3) if not is_zero(p.coords[i])]
+    simple = [i for i in nonzero if _simple(p.coords[i])]
+    if not simple:
+        return p
+    k = 2 if 2 in simple else simple[0]
     out = []
-    for c in coords:
-        if c.is_Rational or c.free_symbols:
-            out.append(c)
-            continue
-        try:
-            normal = algebraic_normal_form(c)
-        except UndecidableError:
-            normal = c
-        out.append(c if normal.has(sympy.CRootOf) else normal)
+    for c in p.coords:
+        c = sympy.expand(sympy.radsimp(c / p.coords[k]))
+        if not (c.is_Rational or c.free_symbols) and _simple(c):
+            c = algebraic_normal_form(c)
+        out.append(c)
     return Point._from_exact(tuple(out))
 
 
