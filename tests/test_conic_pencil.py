@@ -276,3 +276,19 @@ def test_tangents_from_a_point():
     assert set(Conic.circle(0, 0, 1).tangents_from(Point(0, 0))) == {Line(I, -1, 0), Line(-I, -1, 0)}
     with pytest.raises(DegenerateConicError):
         Conic.from_coefficients(1, 0, -1, 0, 0, 0).tangents_from(Point(1, 2))
+
+
+@given(st.lists(integers(5), min_size=6, max_size=6), st.lists(integers(5), min_size=3, max_size=3))
+@FAST
+def test_pencil_with_a_line_pair_through_the_origin(e, d):
+    # C2 = C1 + D with D = d0 x² + d1 xy + d2 y² (two lines through the origin: rational, irrational or
+    # complex): every common point of C1 and C2 is on D, and the four points (with multiplicity) are exact
+    assume(any(e) and any(d))
+    C1 = Conic.from_coefficients(*e)
+    D = Conic.from_coefficients(d[0], d[1], d[2], 0, 0, 0)
+    C2 = Conic(Matrix(C1.matrix) + Matrix(D.matrix))
+    assume(C1 != C2 and not C1.is_degenerate)
+    got = intersect_conics(C1, C2)
+    assert len(got) == 4
+    for p in got:
+        assert is_zero(qf(C1, p)) and is_zero(qf(C2, p)) and is_zero(qf(D, p))
