@@ -89,6 +89,7 @@ _LAZY: dict[str, str] = {
     "cos_angle": "metric",
     "cos_squared_angle": "metric",
     "distance": "metric",
+    "is_concyclic": "metric",
     "is_perpendicular": "metric",
     "laguerre_cross_ratio": "metric",
     "orthogonal_projection": "metric",
@@ -112,6 +113,9 @@ _LAZY: dict[str, str] = {
     "conic_axes": "conic_metric:axes",
     "conic_foci": "conic_metric:foci",
     "semi_axes": "conic_metric",
+    "is_parallel": "affine",
+    "midpoint": "affine",
+    "parallel_line": "affine",
     # the errors of the subsystems live beside them (importing one loads only its small module)
     "AnswersFileError": "exercises.errors",
     "ManifestError": "exercises.errors",

@@ -137,6 +137,17 @@ class HomogeneousVector(Kind):
         except UndecidableError as err:
             raise UndecidableError(f"cannot decide whether {self!r} and {other!r} are equal: {err}") from err
 
+    @property
+    def is_real(self) -> bool:
+        """True when some multiple of the coordinates is real: the vector and its complex conjugate agree up to scale.
+
+        >>> from sympy import I
+        >>> from pgsym import Point
+        >>> Point(I, 2*I, 3*I).is_real, Point(1, I, 0).is_real      # i·(1, 2, 3) is real; a circular point is not
+        (True, False)
+        """
+        return self.is_proportional(type(self)._from_exact(tuple(sympy.conjugate(c) for c in self._coords)))
+
     def __eq__(self, other: object) -> bool:
         if type(self) is not type(other):
             return NotImplemented

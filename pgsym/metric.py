@@ -58,7 +58,7 @@ from .errors import (
 from .exact import Scalar, all_zero, is_zero, to_exact
 from .plucker import Line3
 from .projective_line import cross_ratio_lines
-from .projective_plane import Line, Point, join, meet
+from .projective_plane import Line, Point, collinear, join, meet
 from .ring import cross, dot, matvec
 from .space import Plane, Point3
 from .transformations import Transformation
@@ -70,6 +70,7 @@ __all__ = [
     "cos_angle",
     "cos_squared_angle",
     "distance",
+    "is_concyclic",
     "is_perpendicular",
     "laguerre_cross_ratio",
     "orthogonal_projection",
@@ -657,3 +658,35 @@ def angle_bisectors(l: Line, m: Line) -> tuple[Line, Line]:
     plus = tuple(sympy.radsimp(a + b) for a, b in zip(u, v, strict=True))
     minus = tuple(sympy.radsimp(a - b) for a, b in zip(u, v, strict=True))
     return Line._from_exact(plus).canonical(), Line._from_exact(minus).canonical()
+
+
+def is_concyclic(a: Point, b: Point, c: Point, d: Point) -> bool:
+    """True when one circle passes through the four finite points.
+
+    A circle is a conic through the circular points, so its equation is
+    ``λ(x² + y²) + μx + νy + ρ = 0``; four points lie on one such curve exactly when the 4×4
+    determinant of the rows ``(x² + y², xw, yw, w²)`` vanishes (homogeneous coordinates, so any
+    representative works). That curve may be the degenerate "circle" line ∪ l∞, so points on a line
+    are told apart: three or more distinct collinear points lie on no circle. Two equal points leave
+    three to pass a circle through. Ideal points raise :class:`~pgsym.errors.IdealPointError`.
+
+    >>> is_concyclic(Point(1, 0), Point(0, 1), Point(-1, 0), Point(3, 4, 5))   # on x² + y² = 1
+    True
+    >>> is_concyclic(Point(1, 0), Point(0, 1), Point(-1, 0), Point(0, 2))
+    False
+    """
+    pts = [a, b, c, d]
+    for p in pts:
+        if not isinstance(p, Point):
+            raise ObjectTypeError(f"is_concyclic takes four Points of P², got {type(p).__name__} {p!r}")
+        _finite(p, "is_concyclic")
+    rows = [(x * x + y * y, x * w, y * w, w * w) for x, y, w in (p.coords for p in pts)]
+    if not is_zero(sympy.Matrix(rows).det()):
+        return False
+    distinct: list[Point] = []
+    for p in pts:
+        if all(p != q for q in distinct):
+            distinct.append(p)
+    if len(distinct) <= 2:
+        return True
+    return not all(collinear(*distinct[:2], r) for r in distinct[2:])

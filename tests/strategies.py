@@ -64,6 +64,17 @@ def scaled(obj, factor: Fraction):
 
 
 @st.composite
+def incidence_programs(draw, max_points: int = 6, max_steps: int = 5) -> dict:
+    """A random program of the proof engine's incidence grammar: free points, then joins and meets of
+    earlier objects (by index), and three indices for a "collinear" conclusion (see test_proofs_soundness)."""
+    n = draw(st.integers(4, max_points))
+    steps = draw(st.lists(st.tuples(st.sampled_from(["meet", "copy"]), st.integers(0, 20), st.integers(0, 20)),
+                          min_size=1, max_size=max_steps))
+    conclusion = draw(st.tuples(st.integers(0, 30), st.integers(0, 30), st.integers(0, 30)))
+    return {"points": n, "steps": steps, "conclusion": conclusion}
+
+
+@st.composite
 def unit_directions(draw) -> tuple[Fraction, Fraction]:
     """Rational points ``(cos θ, sin θ)`` of the unit circle: ``((1 − t²)/(1 + t²), 2t/(1 + t²))``, and ``(−1, 0)``."""
     if draw(st.integers(0, 9)) == 0:

@@ -2,10 +2,13 @@
 
 from __future__ import annotations
 
+from fractions import Fraction
+
 import pytest
 import sympy
 from hypothesis import HealthCheck, assume, given, settings
 from hypothesis import strategies as st
+from strategies import nonzero_rational
 from sympy import I, Rational, sqrt
 
 from pgsym.errors import (
@@ -25,6 +28,7 @@ from pgsym.metric import (
     cos_angle,
     cos_squared_angle,
     distance,
+    is_concyclic,
     is_perpendicular,
     laguerre_cross_ratio,
     orthogonal_projection,
@@ -428,3 +432,41 @@ def test_space_angles_are_similarity_invariants(a, b, c, d, e, f, k):
     m = Line3.join(Point3(0, 0, 0), Point3(f, d, e))
     assert cos_squared_angle(S(l), S(m)) == cos_squared_angle(l, m)
     assert squared_distance(S(l), S(m)) == k**2 * squared_distance(l, m)
+
+
+# -- concyclic points -------------------------------------------------------------------------------
+
+def _on_circle(cx: Fraction, cy: Fraction, r: Fraction, t: Fraction) -> Point:
+    # the rational parametrisation of the unit circle ((1 − t²)/(1 + t²), 2t/(1 + t²)), scaled and moved
+    q = 1 + t * t
+    return Point(cx + r * (1 - t * t) / q, cy + r * 2 * t / q)
+
+
+def test_is_concyclic_by_hand() -> None:
+    # x² + y² = 25 holds for (5, 0), (3, 4), (−4, 3), (0, −5); (1, 1) gives 2 ≠ 25
+    on = [Point(5, 0), Point(3, 4), Point(-4, 3), Point(0, -5)]
+    assert is_concyclic(*on)
+    assert not is_concyclic(*on[:3], Point(1, 1))
+    # the same points with other representatives
+    assert is_concyclic(Point(10, 0, 2), Point(-3, -4, -1), *on[2:])
+    # collinear points: on the degenerate "circle" line ∪ l∞ only, so on no circle
+    assert not is_concyclic(Point(0, 0), Point(1, 0), Point(2, 0), Point(3, 0))
+    # a repeated point leaves three points in general position: a circle passes through them
+    assert is_concyclic(Point(0, 0), Point(0, 0), Point(1, 0), Point(0, 1))
+    with pytest.raises(IdealPointError):
+        is_concyclic(Point(1, 0, 0), *on[1:])
+
+
+@given(st.tuples(*[nonzero_rational] * 7))
+@settings(max_examples=40, deadline=None)
+def test_points_of_a_circle_are_concyclic_and_a_moved_one_is_not(v: tuple[Fraction, ...]) -> None:
+    cx, cy, r, *ts = v
+    pts = [_on_circle(cx, cy, r, t) for t in ts]
+    assert is_concyclic(*pts)
+    # the fourth point pushed away from the centre to twice the radius is on no circle with the others
+    # (unless the first three coincide in fewer than three distinct points)
+    x, y = (sympy.Rational(c.numerator, c.denominator) for c in (cx, cy))
+    px, py = pts[3].dehomogenize()
+    far = Point(x + 2 * (px - x), y + 2 * (py - y))
+    if len({p.canonical().coords for p in pts[:3]}) == 3:
+        assert not is_concyclic(*pts[:3], far)

@@ -172,12 +172,13 @@ def test_timeout_is_unknown_never_proved():
     assert v.status == "unknown" and "timed out" in v.reason and v.certificate is None
 
 
-def test_identically_degenerate_construction_is_unknown():
+def test_identically_degenerate_construction_is_named_never_proved():
+    # l = A × A = 0 for every A, so "A lies on l" holds vacuously: the verdict must say which condition fails
     c = Claim("self-join", "the join of A with itself contains A")
     A = c.free_point("A")
     c.conclude_incident(A, c.join("l", A, A))
     v = prove(c)
-    assert v.status == "unknown" and "A ≠ A" in v.reason
+    assert v.status == "degenerate" and "A ≠ A" in v.reason and not v.proved
 
 
 # -- display and JSON ------------------------------------------------------------------------------
@@ -325,4 +326,40 @@ def test_statuses_are_an_enum_that_reads_as_before():
     assert v.status is Status.PROVED and v.status == "proved" and f"{v.status:8s}|" == "proved  |"
     assert repr(v.status) == "'proved'" and v.to_dict()["status"] == "proved"
     assert json.loads(v.to_json())["status"] == "proved"
-    assert [str(s) for s in Status] == ["proved", "false", "unknown"]
+    assert [str(s) for s in Status] == ["proved", "false", "unknown", "degenerate"]
+
+
+# -- readable certificates -----------------------------------------------------------------------------
+
+def test_a_proved_verdict_prints_its_normalisation_method_size_and_conditions():
+    v = prove("desargues")
+    text = str(v)
+    # Desargues: O, A, B, C free, A' = A + aO, …: the four free points become the frame
+    assert "normalisation: without loss of generality O = (0, 0, 1), A = (1, 0, 1), B = (0, 1, 1), C = (1, 1, 1)" \
+        in text
+    assert "by polynomial identity (exact expansion)" in text and "terms of degree" in text
+    assert "O, A, B are not collinear (frame)" in text and "AB ≠ A'B'" in text
+    md = v.to_markdown(timing=False)
+    assert "*Normalisation:* without loss of generality" in md and "terms of degree" in md
+
+
+def test_markdown_and_latex_escape_the_claims_text():
+    c = Claim("x_y", "50% of *A* & {B}_1 $\\input{x}$", "a `code` # heading")
+    A, B = c.free_point("A"), c.free_point("B")
+    c.conclude_incident(A, c.join("l", A, B))
+    v = prove(c)
+    md = v.to_markdown(timing=False)
+    assert md.startswith(r"**50% of \*A\* \& \{B\}\_1 \$\\input\{x\}\$** (`x_y`)")
+    assert r"*Claim.* a \`code\` \# heading" in md
+    tex = v.to_latex()
+    assert tex.startswith(r"\paragraph{50\% of *A* \& \{B\}\_1 \$\textbackslash{}input\{x\}\$} \textbf{proved}.")
+    assert r"A $\neq$ B" in tex and "\\input{" not in tex
+
+
+def test_degenerate_verdict_reads_in_every_format():
+    c = Claim("self-join", "the join of A with itself")
+    A = c.free_point("A")
+    c.conclude_incident(A, c.join("l", A, A))
+    v = prove(c)
+    assert "⚠ degenerate construction" in v.to_markdown() and r"\textbf{degenerate}" in v.to_latex()
+    assert str(v).startswith("the join of A with itself: degenerate") and v.to_dict()["status"] == "degenerate"

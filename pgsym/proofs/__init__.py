@@ -14,7 +14,12 @@ from __future__ import annotations
 
 from .._lazy import lazy_names
 from . import errors as _errors
-from .errors import NonPolynomialClaimError, UndefinedConstructionError, UnknownClaimError  # noqa: F401 (re-exported)
+from .errors import (  # noqa: F401 (re-exported)
+    NonPolynomialClaimError,
+    PolynomialBackendError,
+    UndefinedConstructionError,
+    UnknownClaimError,
+)
 
 _LAZY = {
     "CATALOGUE": "catalogue",

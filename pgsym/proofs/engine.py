@@ -4,12 +4,18 @@
    prime p = 2⁶¹ − 1. If a conclusion polynomial is nonzero there while the
    constructions are defined, the claim is false, and an exact counterexample
    (small integers when possible) is returned. A zero value proves nothing.
-2. **Certificate.** The constructions are evaluated in the polynomial ring
-   ℚ[parameters]; the claim is proved when every conclusion polynomial is the zero
-   polynomial (with equation hypotheses: when it reduces to zero modulo a Gröbner
-   basis of the hypotheses, i.e. lies in their ideal). The non-degeneracy
-   conditions are the constructions' nonzero requirements, checked not to vanish
-   identically.
+2. **Certificate.** When the claim allows it, coordinates are first chosen without loss
+   of generality (:mod:`pgsym.proofs.normalisation`: free points mapped to a projective
+   frame). The constructions are then expanded in the polynomial ring ℤ[parameters] or
+   ℚ[parameters] (:mod:`pgsym.proofs.polynomials`: python-flint, or SymPy's ring where
+   flint is missing); the claim is proved when every conclusion polynomial is the zero
+   polynomial. Before that, every constructed object is checked not to vanish
+   identically and every non-degeneracy condition not to be identically violated:
+   otherwise the verdict is *degenerate*, naming the object — never *proved*.
+   With equation hypotheses, points of the hypothesis variety are searched first (solving
+   the hypotheses for variables they contain linearly, exactly) and a point violating the
+   conclusion refutes the claim; otherwise the conclusion must reduce to zero modulo a
+   Gröbner basis of the hypotheses (ideal membership).
 3. **Core check.** At one exact rational point the same configuration is built with
    pgsym's own objects (``join``, ``meet``, ``plane_through``, ``Line3.join``, …) and
    compared with the formulas, so the catalogue and the library cannot drift.
@@ -28,6 +34,7 @@ All three read each construction's formula, conditions and core builder from the
 
 from __future__ import annotations
 
+import itertools
 import random
 import signal
 import threading
@@ -40,15 +47,15 @@ from fractions import Fraction
 from typing import Any
 
 import sympy
-from sympy.polys.rings import ring
 
 from .. import ring as alg
 from ..errors import PgsymError
 from ..exact import is_zero
 from .claims import Claim, Node
+from .normalisation import Normalisation, normalise
 from .operations import CoreDegenerate, flat
+from .polynomials import PolynomialRing, default_backend
 from .verdicts import Certificate, Condition, Counterexample, Status, Verdict
-from .verdicts import poly_str as _poly_str
 
 __all__ = ["PRIME", "prove", "recheck_counterexample"]
 
@@ -71,6 +78,15 @@ class _Outcome(StrEnum):
 
 class _Timeout(Exception):
     pass
+
+
+class _TooLarge(Exception):
+    pass
+
+
+MAX_TERMS = 400_000
+"""The most terms one coordinate may have in the exact pass: beyond, the verdict is *unknown* rather than a
+computation that a time limit cannot interrupt (python-flint's products run in C)."""
 
 
 class _Deadline:
@@ -117,6 +133,8 @@ def _evaluate(claim: Claim, scalar: Callable[[Any], Any], reduce: Callable[[Any]
         value = node.operation.formula(node, [values[a] for a in node.args if isinstance(a, Node)], scalar)
         if reduce is not None:
             value = _map(value, reduce)
+        elif deadline is not None and any(hasattr(x, "__len__") and len(x) > MAX_TERMS for x in flat(value)):
+            raise _TooLarge(f"{node.name} has more than {MAX_TERMS} terms")
         values[node] = value
     return values
 
@@ -180,6 +198,15 @@ def _nonzero_requirements(claim: Claim, values: dict[Node, Any]) -> list[tuple[s
     return out
 
 
+def _objects_to_check(claim: Claim) -> list[Node]:
+    """The constructed objects that must not be the zero vector: every point, line, plane, line of P³ and
+    conic built by an operation (a matrix or scalar may be zero on purpose, e.g. a residual concluded zero)."""
+    protected = {id(a) for c in claim.conclusions if c.kind in ("zero", "equal") for a in c.args}
+    return [n for n in claim.nodes.values()
+            if n.op not in ("free", "const") and n.kind not in ("matrix", "scalar", "ratio")
+            and id(n) not in protected]
+
+
 def _rank_mod(rows: list[list[int]], p: int) -> tuple[int, tuple[int, ...], tuple[int, ...]]:
     """Rank of an integer matrix modulo p, with the rows and columns of a nonzero maximal minor."""
     m = [[x % p for x in r] for r in rows]
@@ -204,25 +231,25 @@ def _rank_mod(rows: list[list[int]], p: int) -> tuple[int, tuple[int, ...], tupl
 
 # -- the passes ---------------------------------------------------------------------------
 
-def _qq_to_fraction(x: Any) -> Fraction:
-    return Fraction(int(x.numerator), int(x.denominator))
-
-
 class _Converter:
-    """Parameter expressions to ring elements, memoised (one per ring)."""
+    """Parameter expressions to ring elements, memoised (one per ring), after an optional substitution."""
 
-    def __init__(self, R: Any) -> None:
+    def __init__(self, R: PolynomialRing, substitution: dict[sympy.Symbol, Any] | None = None) -> None:
         self.R = R
+        self.sub = substitution or {}
         self.cache: dict[Any, Any] = {}
 
     def __call__(self, expr: Any) -> Any:
         out = self.cache.get(expr)
         if out is None:
-            out = self.cache[expr] = self.R(expr)
+            e = expr
+            if self.sub and not isinstance(e, (int, Fraction)):
+                e = sympy.sympify(e).xreplace(self.sub)
+            out = self.cache[expr] = self.R(e)
         return out
 
 
-_CONVERTERS: dict[tuple[int, str, bool], tuple[Claim, _Converter]] = {}
+_CONVERTERS: dict[tuple[int, str, bool, str | None], tuple[Claim, _Converter]] = {}
 
 
 def _integral(claim: Claim) -> bool:
@@ -235,14 +262,22 @@ def _integral(claim: Claim) -> bool:
     return not claim.hypotheses
 
 
-def _converter(claim: Claim, order: str = "lex", field: bool = True) -> _Converter:
-    key = (id(claim), order, field)
+def _converter(claim: Claim, order: str = "lex", field: bool = True, backend: str | None = None,
+               substitution: dict[sympy.Symbol, Any] | None = None) -> _Converter:
+    integral = not field and _integral(claim)
+    if substitution is not None:
+        sub = substitution
+        integral = integral and all(sympy.Rational(v).q == 1 for v in sub.values() if sympy.sympify(v).is_Rational)
+        gens = [s for s in claim.parameters if s not in sub]
+        return _Converter(PolynomialRing(gens, integral=integral, order=order, backend=backend), sub)
+    backend = backend or default_backend()  # the environment may change between calls
+    key = (id(claim), order, field, backend)
     hit = _CONVERTERS.get(key)
     if hit is None or hit[0] is not claim:
         if len(_CONVERTERS) > 64:
             _CONVERTERS.clear()
-        domain = sympy.QQ if field or not _integral(claim) else sympy.ZZ
-        hit = _CONVERTERS[key] = (claim, _Converter(_ring(claim, order, domain)))
+        R = PolynomialRing(claim.parameters, integral=integral, order=order, backend=backend)
+        hit = _CONVERTERS[key] = (claim, _Converter(R))
     return hit[1]
 
 
@@ -260,24 +295,11 @@ def _point_evaluator(claim: Claim, R: Any, point: dict[sympy.Symbol, Any]) -> Ca
             elif expr.is_Rational:
                 out = Fraction(int(expr.p), int(expr.q))
             else:
-                out = _value_at(conv(expr), args)
+                out = conv.R.evaluate(conv(expr), args)
             cache[expr] = out
         return out
 
     return scalar
-
-
-def _value_at(poly: Any, xs: list[Fraction]) -> Fraction:
-    """The exact value of a polynomial of the ring at a point (term by term: much faster than
-    the ring's own evaluation, which builds a smaller ring for every variable)."""
-    total = Fraction(0)
-    for monom, coeff in poly.items():
-        term = _qq_to_fraction(coeff)
-        for x, e in zip(xs, monom, strict=False):
-            if e:
-                term *= x**e
-        total += term
-    return total
 
 
 def _modp(x: Fraction) -> int:
@@ -290,6 +312,9 @@ def _check_point(claim: Claim, values: dict[Node, Any], modp: bool) -> tuple[str
     for _text, polys in _nonzero_requirements(claim, values):
         if all(red(p) == 0 for p in polys):
             return _Outcome.DEGENERATE, _text
+    for node in _objects_to_check(claim):
+        if all(red(p) == 0 for p in flat(values[node])):
+            return _Outcome.DEGENERATE, f"{node.name} is the zero vector"
     residuals = [red(val) for _, val in _conclusion_polys(claim, values)]
     rank_info = []
     for c in claim.conclusions:
@@ -335,17 +360,10 @@ def _find_small_counterexample(claim: Claim, R: Any, rng: random.Random, fallbac
     return Counterexample({str(s): Fraction(v) for s, v in fallback.items()}, data, claim)
 
 
-def _ring(claim: Claim, order: str = "lex", domain: Any = sympy.QQ) -> Any:
-    gens = claim.parameters or [sympy.Symbol("_t")]
-    R, *_ = ring(gens, domain, order)
-    return R
-
-
-def _describe_ring(claim: Claim, order: str) -> str:
-    names = [str(s) for s in claim.parameters]
+def _describe_ring(R: PolynomialRing) -> str:
+    names = [str(s) for s in R.symbols]
     shown = ", ".join(names) if len(names) <= 6 else ", ".join(names[:4]) + ", …"
-    field = "ℚ" if not _integral(claim) else "ℤ"
-    return f"{field}[{shown}] ({len(names)} variables, {order} order)"
+    return f"{R.field}[{shown}] ({len(names)} variables, {R.order} order)"
 
 
 def _random_pass(claim: Claim, R: Any, rng: random.Random, deadline: _Deadline) -> tuple[str, Any, str]:
@@ -372,7 +390,7 @@ def _random_pass(claim: Claim, R: Any, rng: random.Random, deadline: _Deadline) 
     return _Outcome.DEGENERATE, data, f"a construction was undefined at four random points: {data}"
 
 
-def _proportional_by_division(c: Any, values: dict[Node, Any]) -> str | None:
+def _proportional_by_division(c: Any, values: dict[Node, Any], R: PolynomialRing) -> str | None:
     """Prove u = q·v (or v = q·u) with one exact polynomial division; None when that does not work."""
     u, v = (flat(values[a]) for a in c.args)
     names = [a.name for a in c.args]
@@ -380,56 +398,141 @@ def _proportional_by_division(c: Any, values: dict[Node, Any]) -> str | None:
         k = next((i for i, t in enumerate(y) if t != 0), None)
         if k is None or x[k] == 0:
             continue
-        q, r = divmod(x[k], y[k])
-        if r == 0 and q != 0 and all(a == q * b for a, b in zip(x, y, strict=True)):
-            scale = _poly_str(q)
-            scale = scale if len(scale) <= 120 else f"a polynomial with {len(q)} terms"
+        q = R.exact_quotient(x[k], y[k])
+        if q is not None and q != 0 and all(a == q * b for a, b in zip(x, y, strict=True)):
+            scale = R.text(q, 12)
+            scale = scale if len(scale) <= 120 else f"a polynomial with {R.nterms(q)} terms"
             return f"{nx} = q·{ny} exactly, with q = {scale} (one exact division, then {len(x)} products compared)"
     return None
 
 
-def _exact_pass(claim: Claim, deadline: _Deadline, rank_witness: list[Any]) -> tuple[str, Any]:
-    hyps = claim.hypotheses
+def _size(R: PolynomialRing, polys: list[Any]) -> tuple[int, int]:
+    """The largest number of terms and the largest total degree among the polynomials."""
+    return (max((R.nterms(p) for p in polys), default=0), max((R.degree(p) for p in polys), default=0))
+
+
+_NOT_DEPENDENT = {"point": "are not collinear", "point3": "are not coplanar", "point1": "are distinct",
+                  "line": "are not concurrent", "plane": "do not pass through one point"}
+
+
+def _general_position(claim: Claim, normalisation: Normalisation, backend: str | None) -> list[Condition]:
+    """The frame's general position as conditions in the claim's own coordinates: every n + 1 of its objects
+    in Pⁿ independent (one determinant each), e.g. "A, B, C are not collinear"."""
+    conv = _converter(claim, backend=backend)
+    nodes = [claim.nodes[n] for n in normalisation.objects]  # their coordinates are plain parameters
+    out = []
+    for subset in itertools.combinations(nodes, len(nodes[0].data)):
+        minor = alg.det([tuple(conv(e) for e in n.data) for n in subset])
+        words = _NOT_DEPENDENT[normalisation.kind]
+        out.append(Condition(f"{', '.join(n.name for n in subset)} {words} (frame)", raw=[minor]))
+    return out
+
+
+def _membership_given(poly: Any, basis: list[Any], requirements: list[tuple[str, list[Any]]],
+                      deadline: _Deadline) -> str | None:
+    """A non-degeneracy condition under which the conclusion follows from the hypotheses, or None.
+
+    The condition "c₁, …, cₖ not all zero" suffices when every cᵢ·g lies in the ideal: wherever some cᵢ ≠ 0
+    on the hypothesis variety, g = 0 there (a first step of saturating the ideal by the conditions)."""
+    for text, polys in requirements:
+        deadline.check("reducing the conclusion under a non-degeneracy condition")
+        if polys and all((c * poly).div(basis)[1] == 0 for c in polys):
+            return text
+    return None
+
+
+def _solved_hypotheses(claim: Claim) -> dict[sympy.Symbol, sympy.Expr] | None:
+    """Each hypothesis as ``v = f`` (None when that is not possible): v of degree one with a constant coefficient
+    in its hypothesis and in no other. The variety is then the graph of v = f over the other parameters, so a
+    polynomial vanishes on it exactly when it vanishes identically once v is replaced by f."""
+    hyps = [sympy.expand(h) for h, _ in claim.hypotheses]
+    sub: dict[sympy.Symbol, sympy.Expr] = {}
+    for i, h in enumerate(hyps):
+        others = set().union(*(g.free_symbols for j, g in enumerate(hyps) if j != i))
+        for v in sorted(h.free_symbols - others, key=str):
+            c = h.coeff(v, 1)
+            if c.is_Rational and c != 0 and sympy.degree(h, v) == 1:
+                sub[v] = sympy.expand(-(h - c * v) / c)
+                break
+        else:
+            return None
+    return sub
+
+
+def _exact_pass(claim: Claim, deadline: _Deadline, rank_witness: list[Any], backend: str | None = None,
+                normalisation: Normalisation | None = None) -> tuple[str, Any]:
+    solved = _solved_hypotheses(claim) if claim.hypotheses else None
+    hyps = claim.hypotheses if solved is None else []
     order = "grevlex" if hyps else "lex"
-    conv = _converter(claim, order, field=bool(hyps))
+    # Gröbner reduction runs in SymPy's ring (hypotheses are small); expansion on the fastest backend
+    substitution = normalisation.substitution if normalisation is not None else solved
+    conv = _converter(claim, order, field=bool(claim.hypotheses), backend="sympy" if hyps else backend,
+                      substitution=substitution)
     R = conv.R
     values = _evaluate(claim, conv, deadline=deadline)
-    largest = max((len(p) for v in values.values() for p in flat(v) if hasattr(p, "terms")), default=0)
+    entries = [p for v in values.values() for p in flat(v) if not isinstance(p, int)]
+    largest = max((R.nterms(p) for p in entries), default=0)
     conditions = []
+    requirements: list[tuple[str, list[Any]]] = []
     for text, polys in _nonzero_requirements(claim, values):
         deadline.check("checking the non-degeneracy conditions")
         if all(p == 0 for p in polys):
-            return _Outcome.DEGENERATE, text
+            return _Outcome.DEGENERATE, (f"the condition {text} fails identically "
+                                         "(the construction is undefined for every value of the parameters)")
         conditions.append(Condition(text, raw=[p for p in polys if p != 0][:3]))
+        requirements.append((text, [p for p in polys if p != 0]))
+    for node in _objects_to_check(claim):
+        deadline.check("checking that no construction vanishes identically")
+        if all(p == 0 for p in flat(values[node])):
+            return _Outcome.DEGENERATE, (f"{node.name} = {node.description} is identically the zero vector "
+                                         "(the construction is undefined for every value of the parameters)")
+    if normalisation is not None:  # last, so that the claim's own conditions read first
+        conditions += _general_position(claim, normalisation, backend)
     deadline.check("reducing the conclusion")
     steps = []
+    identity: list[Any] = []
     if hyps:
-        G = sympy.groebner([h for h, _ in hyps], *claim.parameters, order="grevlex", domain="QQ")
+        G = sympy.groebner([h for h, _ in hyps], *R.symbols, order="grevlex", domain="QQ")
         basis = [R(g.as_expr()) for g in G.exprs]
         method = "Gröbner basis ideal membership"
-        steps.append("Gröbner basis (grevlex) of the hypotheses: " + "; ".join(_poly_str(g) for g in basis))
+        steps.append("Gröbner basis (grevlex) of the hypotheses: " + "; ".join(R.text(g) for g in basis))
         for label, poly in _conclusion_polys(claim, values):
             deadline.check("reducing the conclusion")
             quotients, rem = poly.div(basis)
             if rem != 0:
-                return _Outcome.NOT_IN_IDEAL, (label, _poly_str(rem))
-            combo = " + ".join(f"({_poly_str(q)})·g{i + 1}" for i, q in enumerate(quotients) if q != 0) or "0"
+                needed = _membership_given(poly, basis, requirements, deadline)
+                if needed is None:
+                    return _Outcome.NOT_IN_IDEAL, (label, R.text(rem))
+                steps.append(f"{label} is not in the ideal of the hypotheses, but c·({label}) is for every "
+                             f"polynomial c of the condition {needed}: the conclusion holds wherever {needed}")
+                continue
+            identity.append(poly)
+            combo = " + ".join(f"({R.text(q)})·g{i + 1}" for i, q in enumerate(quotients) if q != 0) or "0"
             steps.append(f"{label} = {combo}; remainder 0")
     else:
         method = "polynomial identity (exact expansion)"
+        if solved:
+            # v − f with pairwise distinct leading variables v absent from every f: a Gröbner basis for a lex
+            # order with the v first (coprime leading terms), and reducing modulo it is substituting v = f
+            method = "Gröbner basis ideal membership"
+            steps.append("the hypotheses " + ", ".join(f"{v} − ({f})" for v, f in solved.items())
+                         + " are a Gröbner basis (lex, solved variables first: coprime leading terms); "
+                         "reduction modulo it substitutes " + ", ".join(f"{v} = {f}" for v, f in solved.items()))
         done = []
         for c in claim.conclusions:
             if c.kind == "proportional":
                 deadline.check("dividing for the scale factor")
-                line = _proportional_by_division(c, values)
+                line = _proportional_by_division(c, values, R)
                 if line is not None:
                     steps.append(line)
                     done.append(c)
         for label, poly in _conclusion_polys(claim, values, done):
             deadline.check("expanding the conclusion")
             if poly != 0:
-                return _Outcome.NONZERO, (label, _poly_str(poly))
-            steps.append(f"{label} expands to 0")
+                if solved:
+                    return _Outcome.NOT_IN_IDEAL, (label, R.text(poly))
+                return _Outcome.NONZERO, (label, R.text(poly))
+            steps.append(f"{label} reduces to 0" if solved else f"{label} expands to 0")
     for c in claim.conclusions:
         if c.kind != "rank":
             continue
@@ -440,7 +543,7 @@ def _exact_pass(claim: Claim, deadline: _Deadline, rank_witness: list[Any]) -> t
             for rs, cs, minor in alg.minors(rows, r + 1):
                 deadline.check("expanding the minors")
                 if minor != 0:
-                    return _Outcome.NONZERO, (f"minor rows {rs} columns {cs} of {node.name}", _poly_str(minor))
+                    return _Outcome.NONZERO, (f"minor rows {rs} columns {cs} of {node.name}", R.text(minor))
             steps.append(f"all {r + 1}×{r + 1} minors of {node.name} expand to 0")
         witness = next((w for w in rank_witness if w[0] is node), None)
         if witness is None:
@@ -448,7 +551,11 @@ def _exact_pass(claim: Claim, deadline: _Deadline, rank_witness: list[Any]) -> t
         _, _, _rank, rs, cs = witness
         steps.append(f"the {r}×{r} minor of {node.name} on rows {rs}, columns {cs} is nonzero at a random point "
                      "modulo p, hence not the zero polynomial")
-    return _Outcome.PROVED, (Certificate(method, _describe_ring(claim, order), steps, largest), conditions)
+    _, degree = _size(R, entries)
+    certificate = Certificate(method, _describe_ring(R), steps, largest,
+                              normalisation="" if normalisation is None else normalisation.describe(),
+                              backend=R.backend, largest_degree=degree)
+    return _Outcome.PROVED, (certificate, conditions)
 
 
 # -- the core check -------------------------------------------------------------------------
@@ -519,11 +626,83 @@ def _core_check(claim: Claim, rng: random.Random, deadline: _Deadline) -> str:
     return "skipped: the core rejected eight random rational instances as degenerate"
 
 
+def _on_hypotheses(claim: Claim, point: dict[Any, Fraction]) -> bool:
+    """Every equation hypothesis vanishes exactly at the point."""
+    sub = {s: sympy.Rational(x.numerator, x.denominator) for s, x in point.items()}
+    return all(h.xreplace(sub) == 0 for h, _ in claim.hypotheses)
+
+
+def _variety_points(claim: Claim, rng: random.Random, deadline: _Deadline, tries: int = 60):
+    """Exact points of the hypothesis variety: random small values for some parameters, the others solved for.
+
+    Each hypothesis is solved for a parameter it contains to the first degree (or, failing that, for the
+    rational roots of what remains once everything else is known), in an order found as it goes.
+    """
+    hyps = [sympy.expand(h) for h, _ in claim.hypotheses]
+    solved: dict[int, sympy.Symbol] = {}
+    taken: set[sympy.Symbol] = set()
+    for i, h in enumerate(hyps):  # a parameter of degree one, each used for one hypothesis only
+        cands = [s for s in claim.parameters if s in h.free_symbols and s not in taken]
+        linear = [s for s in cands if sympy.degree(h, s) == 1]
+        pick = (linear or cands or [None])[0]
+        if pick is not None:
+            solved[i] = pick
+            taken.add(pick)
+    for attempt in range(tries):
+        deadline.check("searching points of the hypothesis variety")
+        bound = 2 + attempt // 6
+        point: dict[sympy.Symbol, sympy.Rational] = {s: sympy.Integer(rng.randint(-bound, bound))
+                                                      for s in claim.parameters if s not in taken}
+        pending = dict(enumerate(hyps))
+        progress = True
+        while pending and progress:
+            progress = False
+            for i, h in list(pending.items()):
+                rest = h.xreplace(point)
+                unknown = rest.free_symbols
+                if not unknown:
+                    if rest != 0:
+                        pending = {}
+                        point = {}
+                        break
+                    del pending[i]
+                    progress = True
+                elif unknown == {solved.get(i)}:
+                    v = solved[i]
+                    roots = [r for r in sympy.Poly(rest, v).ground_roots() if r.is_Rational]
+                    if not roots:
+                        pending, point = {}, {}
+                        break
+                    point[v] = rng.choice(roots)
+                    del pending[i]
+                    progress = True
+            if not point:
+                break
+        if point and not pending and len(point) == len(claim.parameters):
+            yield {s: Fraction(int(x.p), int(x.q)) for s, x in point.items()}
+
+
+def _variety_counterexample(claim: Claim, deadline: _Deadline, rng: random.Random) -> Counterexample | None:
+    """A point of the hypothesis variety where the constructions are defined and the conclusion fails."""
+    R = _converter(claim).R
+    holds = 0
+    for point in _variety_points(claim, rng, deadline):
+        values = _evaluate(claim, _point_evaluator(claim, R, point))
+        kind, data = _check_point(claim, values, modp=False)
+        if kind == _Outcome.FAILS and _on_hypotheses(claim, point):
+            return Counterexample({str(s): v for s, v in point.items()}, data, claim)
+        holds += kind == _Outcome.HOLDS
+        if holds >= 8:  # a false claim fails almost everywhere on the variety: enough searching
+            break
+    return None
+
+
 def recheck_counterexample(claim: Claim, values: dict[str, Any]) -> bool:
     """True when, at these exact values, pgsym's core builds the configuration and the conclusion fails.
 
     The core objects must be defined (no degenerate construction raised) and agree
-    with the formulas; then the conclusion polynomials are evaluated exactly.
+    with the formulas, the equation hypotheses must hold exactly; then the conclusion
+    polynomials are evaluated exactly.
     """
     point = {s: Fraction(values[str(s)]) for s in claim.parameters}
     try:
@@ -532,6 +711,8 @@ def recheck_counterexample(claim: Claim, values: dict[str, Any]) -> bool:
         return False
     vals = _evaluate(claim, _point_evaluator(claim, _converter(claim).R, point))
     if _agree(claim, objs, vals) is not None:
+        return False
+    if not _on_hypotheses(claim, point):
         return False
     kind, _ = _check_point(claim, vals, modp=False)
     return kind == _Outcome.FAILS
@@ -543,12 +724,16 @@ def _constructions(claim: Claim) -> list[tuple[str, str, str]]:
     return [(n.name, n.kind, n.description) for k, n in claim.nodes.items() if not k.startswith("_")]
 
 
-def prove(claim: Claim, *, timeout: float | None = 10.0, seed: int = 0, core_check: bool = True) -> Verdict:
+def prove(claim: Claim, *, timeout: float | None = 10.0, seed: int = 0, core_check: bool = True,
+          backend: str | None = None, normalise_coordinates: bool = True) -> Verdict:
     """Decide a claim: proved (with certificate and conditions), false (with a counterexample), or unknown.
 
     ``timeout`` (seconds, ``None`` for none) bounds the whole run; when it is
     exceeded the verdict is *unknown*, never *proved*. ``seed`` changes the random
-    points (the default makes runs reproducible).
+    points (the default makes runs reproducible). ``backend`` chooses the polynomial
+    arithmetic (``"flint"`` or ``"sympy"``; default: flint when installed, see
+    :mod:`pgsym.proofs.polynomials`); ``normalise_coordinates=False`` keeps the claim's
+    coordinates even when a frame could be chosen without loss of generality.
 
     >>> from pgsym.proofs.claims import Claim
     >>> c = Claim("wrong", "every point lies on the line y = 0", expected=False)
@@ -579,6 +764,13 @@ def prove(claim: Claim, *, timeout: float | None = 10.0, seed: int = 0, core_che
             rank_witness: list[Any] = []
             if claim.hypotheses:
                 summary = "skipped: random points do not satisfy the equation hypotheses"
+                ce = _variety_counterexample(claim, deadline, rng)
+                if ce is not None:
+                    return Verdict(status=Status.FALSE, counterexample=ce, random_pass=summary,
+                                   method="a point of the hypothesis variety (hypotheses solved exactly), "
+                                          "then exact evaluation",
+                                   reason="the hypotheses hold and the conclusion fails at the counterexample",
+                                   elapsed=time.perf_counter() - start, **base)
             else:
                 outcome, data, summary = _random_pass(claim, R, rng, deadline)
                 if outcome == _Outcome.FAILS:
@@ -592,7 +784,8 @@ def prove(claim: Claim, *, timeout: float | None = 10.0, seed: int = 0, core_che
                                    reason="the matrix had lower rank than claimed at every random point tried",
                                    elapsed=time.perf_counter() - start, **base)
                 rank_witness = data[1] if outcome == _Outcome.HOLDS else []
-            status, data = _exact_pass(claim, deadline, rank_witness)
+            norm, _why = normalise(claim) if normalise_coordinates else (None, "")
+            status, data = _exact_pass(claim, deadline, rank_witness, backend, norm)
             if status is _Outcome.PROVED:
                 certificate, conditions = data
                 core = _core_check(claim, rng, deadline) if core_check else "not requested"
@@ -606,8 +799,9 @@ def prove(claim: Claim, *, timeout: float | None = 10.0, seed: int = 0, core_che
                 return Verdict(status=Status.PROVED, method=method, certificate=certificate, conditions=conditions,
                                random_pass=summary, core_check=core, elapsed=time.perf_counter() - start, **base)
             if status == _Outcome.DEGENERATE:
-                reason = f"a construction is undefined for every value of the parameters: {data} fails identically"
-            elif status == _Outcome.NOT_IN_IDEAL:
+                return Verdict(status=Status.DEGENERATE, random_pass=summary, reason=data,
+                               elapsed=time.perf_counter() - start, **base)
+            if status == _Outcome.NOT_IN_IDEAL:
                 reason = (f"{data[0]} has the nonzero remainder {data[1][:200]} modulo the hypotheses: it is not in "
                           "their ideal (it may still hold on a component, or after saturating by the conditions)")
             elif status == _Outcome.NO_WITNESS:
@@ -619,6 +813,10 @@ def prove(claim: Claim, *, timeout: float | None = 10.0, seed: int = 0, core_che
                                elapsed=time.perf_counter() - start, **base)
             return Verdict(status=Status.UNKNOWN, random_pass=summary, reason=reason,
                            elapsed=time.perf_counter() - start, **base)
+    except _TooLarge as err:
+        return Verdict(status=Status.UNKNOWN, random_pass=summary,
+                       reason=f"the expansion is too large: {err.args[0]} (no frame could be chosen, or it did not "
+                              "suffice)", elapsed=time.perf_counter() - start, **base)
     except _Timeout as err:
         return Verdict(status=Status.UNKNOWN, random_pass=summary,
                        reason=f"timed out after {timeout} s while {err.args[0] if err.args else 'working'}",

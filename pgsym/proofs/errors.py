@@ -9,11 +9,15 @@ from __future__ import annotations
 
 from ..errors import InvalidCoordinatesError, ObjectTypeError, PgsymError
 
-__all__ = ["NonPolynomialClaimError", "UndefinedConstructionError", "UnknownClaimError"]
+__all__ = ["NonPolynomialClaimError", "PolynomialBackendError", "UndefinedConstructionError", "UnknownClaimError"]
 
 
 class NonPolynomialClaimError(InvalidCoordinatesError):
     """A coordinate, hypothesis or conclusion is not a polynomial in the claim's parameters."""
+
+
+class PolynomialBackendError(PgsymError):
+    """The requested polynomial backend (python-flint or SymPy) is not available, or cannot hold a value."""
 
 
 class UndefinedConstructionError(ObjectTypeError):

@@ -8,6 +8,7 @@
 from __future__ import annotations
 
 import json
+import re
 from dataclasses import dataclass, field
 from enum import StrEnum
 from fractions import Fraction
@@ -28,13 +29,55 @@ class Status(StrEnum):
     PROVED = "proved"
     FALSE = "false"
     UNKNOWN = "unknown"
+    DEGENERATE = "degenerate"
 
     def __repr__(self) -> str:  # shown as the plain string it was before statuses were an enum
         return repr(self.value)
 
 
-_STATUS_MARK = {Status.PROVED: "✔ proved", Status.FALSE: "✘ false", Status.UNKNOWN: "? unknown"}
-_STATUS_LATEX = {Status.PROVED: r"\text{proved}", Status.FALSE: r"\text{false}", Status.UNKNOWN: r"\text{unknown}"}
+_STATUS_MARK = {Status.PROVED: "✔ proved", Status.FALSE: "✘ false", Status.UNKNOWN: "? unknown",
+                Status.DEGENERATE: "⚠ degenerate construction"}
+_STATUS_LATEX = {s: rf"\text{{{s.value}}}" for s in Status}
+
+
+# the escaping of plain text, as in pgsym.exercises._text (which this layer may not import)
+_MD_SPECIAL = set("\\`*_{}[]<>&$|~!#")
+_TEX_SPECIAL = {"\\": r"\textbackslash{}", "&": r"\&", "%": r"\%", "$": r"\$", "#": r"\#", "_": r"\_",
+                "{": r"\{", "}": r"\}", "~": r"\textasciitilde{}", "^": r"\textasciicircum{}"}
+_TEX_MATH = {"≠": r"$\neq$", "×": r"$\times$", "·": r"$\cdot$", "∧": r"$\wedge$", "−": "-", "λ": r"$\lambda$",
+             "ᵀ": r"$^{\top}$", "…": r"\dots{}", "²": r"$^2$", "³": r"$^3$", "¹": r"$^1$", "⁶": r"$^6$",
+             "ℚ": r"$\mathbb{Q}$", "ℤ": r"$\mathbb{Z}$", "∞": r"$\infty$", "′": "'", "—": "---", "–": "--"}
+
+
+def _md(text: str) -> str:
+    """Plain text as Markdown showing exactly these characters (inline syntax backslash-escaped)."""
+    return "".join("\\" + c if c in _MD_SPECIAL else c for c in " ".join(str(text).splitlines()))
+
+
+def _code(text: str) -> str:
+    """Text as one inline code span, fenced by more backticks than the longest run it holds.
+
+    >>> _code("a`b")
+    '`` a`b ``'
+    """
+    runs = re.findall(r"`+", text)
+    fence = "`" * (max((len(r) for r in runs), default=0) + 1)
+    pad = " " if runs else ""
+    return f"{fence}{pad}{text}{pad}{fence}"
+
+
+def _tex(text: str) -> str:
+    """Plain text as pdfLaTeX source: specials escaped, the engine's few math symbols as commands, other
+    characters outside Latin-1 as '?'."""
+    out = []
+    for c in " ".join(str(text).splitlines()):
+        if c in _TEX_SPECIAL:
+            out.append(_TEX_SPECIAL[c])
+        elif c in _TEX_MATH:
+            out.append(_TEX_MATH[c])
+        else:
+            out.append(c if (" " <= c <= "~") or ("\u00a0" <= c <= "\u00ff") else "?")
+    return "".join(out)
 
 
 def _short(text: str, limit: int = 90) -> str:
@@ -49,7 +92,15 @@ def poly_str(p: Any, max_terms: int = 40) -> str:
     """
     if hasattr(p, "terms") and len(p) > max_terms:
         return f"<a polynomial of degree {max(sum(m) for m in p.monoms())} with {len(p)} terms>"
-    return str(p.as_expr()) if hasattr(p, "as_expr") else str(p)
+    if hasattr(p, "as_expr"):  # SymPy's ring
+        return str(p.as_expr())
+    if hasattr(p, "context"):  # python-flint: rebuild the expression in the context's variable names
+        import sympy
+
+        names = [sympy.Symbol(n) for n in p.context().names()]
+        return str(sympy.Add(*(sympy.Rational(str(c)) * sympy.Mul(*(x**e for x, e in zip(names, m, strict=True)))
+                               for m, c in p.to_dict().items())))
+    return str(p)
 
 
 @dataclass
@@ -84,6 +135,9 @@ class Certificate:
     ring: str = ""
     steps: list[str] = field(default_factory=list)
     largest_terms: int = 0
+    normalisation: str = ""
+    backend: str = ""
+    largest_degree: int = 0
 
     def to_dict(self) -> dict[str, Any]:
         """JSON-ready form.
@@ -91,7 +145,8 @@ class Certificate:
         >>> Certificate("polynomial identity", "QQ[a]", ["a - a → 0"]).to_dict()["steps"]
         ['a - a → 0']
         """
-        return {"method": self.method, "ring": self.ring, "steps": self.steps, "largest_terms": self.largest_terms}
+        return {"method": self.method, "ring": self.ring, "steps": self.steps, "largest_terms": self.largest_terms,
+                "largest_degree": self.largest_degree, "normalisation": self.normalisation, "backend": self.backend}
 
 
 @dataclass
@@ -215,47 +270,127 @@ class Verdict:
         return json.dumps(self.to_dict(timing), ensure_ascii=False, **kwargs)
 
     # -- display -----------------------------------------------------------------
-    def markdown(self, timing: bool = True) -> str:
-        """A short derivation in Markdown: statement, constructions, conclusion, conditions, verdict."""
-        lines = [f"**{self.title}** (`{self.name}`): **{_STATUS_MARK[self.status]}**", ""]
+    def identity_size(self) -> str:
+        """How big the certified identity is, in words ("" when there is no certificate).
+
+        >>> Verdict("x", "x", "proved", certificate=Certificate("m", "ℤ[a]", [], 12, largest_degree=3)).identity_size()
+        'largest polynomial expanded: 12 terms of degree 3 in ℤ[a]'
+        """
+        c = self.certificate
+        if c is None:
+            return ""
+        backend = f", on {c.backend}" if c.backend else ""
+        return f"largest polynomial expanded: {c.largest_terms} terms of degree {c.largest_degree} in {c.ring}{backend}"
+
+    def summary(self) -> str:
+        """Plain text for a terminal: the verdict, the normalisation, the method, the size, the conditions.
+
+        >>> print(Verdict("x", "A demo", "unknown", reason="timed out").summary())
+        A demo: unknown
+          why: timed out
+        """
+        lines = [f"{self.title}: {self.status}" + (f" by {self.method}" if self.method else "")]
+        if self.certificate is not None:
+            if self.certificate.normalisation:
+                lines.append(f"  normalisation: {self.certificate.normalisation}")
+            lines.append(f"  {self.identity_size()}")
+        if self.conditions:
+            lines.append("  provided that: " + "; ".join(c.text for c in self.conditions))
+        if self.counterexample is not None:
+            lines.append("  counterexample: " + ", ".join(f"{k} = {v}" for k, v in self.counterexample.values.items()))
+        if self.reason:
+            lines.append(f"  why: {self.reason}")
+        return "\n".join(lines)
+
+    def __str__(self) -> str:
+        return self.summary()
+
+    def to_markdown(self, timing: bool = True) -> str:
+        """A short derivation in Markdown: statement, constructions, conclusion, normalisation, certificate,
+        conditions, verdict. Every text that comes from the claim is escaped, so it shows as written.
+
+        >>> print(Verdict("x", "50% *of* A_1", "unknown").to_markdown(timing=False).splitlines()[0])
+        **50% \\*of\\* A\\_1** (`x`): **? unknown**
+        """
+        e = _md
+        lines = [f"**{e(self.title)}** ({_code(self.name)}): **{_STATUS_MARK[self.status]}**", ""]
         if self.statement and self.statement != self.title:
-            lines += [f"*Claim.* {self.statement}", ""]
+            lines += [f"*Claim.* {e(self.statement)}", ""]
         if self.constructions:
             lines.append("*Constructions:*")
-            lines += [f"- {name} ({kind}) = {_short(desc, 100)}" for name, kind, desc in self.constructions]
+            lines += [f"- {e(name)} ({kind}) = {e(_short(desc, 100))}" for name, kind, desc in self.constructions]
             lines.append("")
         if self.hypotheses:
-            lines += ["*Hypotheses:* " + "; ".join(self.hypotheses), ""]
-        lines += ["*Conclusion:* " + "; ".join(self.conclusion), ""]
+            lines += ["*Hypotheses:* " + "; ".join(e(h) for h in self.hypotheses), ""]
+        lines += ["*Conclusion:* " + "; ".join(e(c) for c in self.conclusion), ""]
         if self.certificate is not None:
-            lines.append(f"*Certificate* ({self.certificate.method}, in {self.certificate.ring}):")
-            lines += [f"- `{_short(s, 160)}`" for s in self.certificate.steps[:8]]
+            if self.certificate.normalisation:
+                lines += [f"*Normalisation:* {e(self.certificate.normalisation)}", ""]
+            lines.append(f"*Certificate* ({e(self.certificate.method)}, in {e(self.certificate.ring)}):")
+            lines += [f"- {_code(_short(s, 160))}" for s in self.certificate.steps[:8]]
             if len(self.certificate.steps) > 8:
                 lines.append(f"- … and {len(self.certificate.steps) - 8} more polynomials, each reduced to 0")
-            lines.append("")
+            lines += [f"- {e(self.identity_size())}", ""]
         if self.conditions:
-            lines.append("*Non-degeneracy conditions:* " + "; ".join(c.text for c in self.conditions))
+            lines.append("*Non-degeneracy conditions:* " + "; ".join(e(c.text) for c in self.conditions))
             lines.append("")
         if self.counterexample is not None:
-            vals = ", ".join(f"{k} = {v}" for k, v in self.counterexample.values.items())
+            vals = ", ".join(f"{e(k)} = {v}" for k, v in self.counterexample.values.items())
             lines += [f"*Counterexample:* {vals}", "",
                       "*Residual (should be 0):* "
                       + ", ".join(_short(str(r), 40) for r in self.counterexample.residuals[:4]),
                       ""]
         if self.reason:
-            lines += [f"*Why:* {self.reason}", ""]
+            lines += [f"*Why:* {e(self.reason)}", ""]
         if timing:
             lines.append(f"*Time:* {1000 * self.elapsed:.1f} ms")
         return "\n".join(lines).rstrip() + "\n"
 
+    markdown = to_markdown
+
     def _repr_markdown_(self) -> str:
-        return self.markdown(timing=True)
+        return self.to_markdown(timing=True)
+
+    def to_latex(self, timing: bool = False) -> str:
+        """The derivation as a LaTeX fragment (for the book's PDF): every text from the claim escaped.
+
+        >>> print(Verdict("x", "100% & A_1", "proved", conditions=[Condition("A ≠ B")]).to_latex())
+        \\paragraph{100\\% \\& A\\_1} \\textbf{proved}.
+        \\begin{itemize}
+        \\item Non-degeneracy conditions: A $\\neq$ B
+        \\end{itemize}
+        """
+        t = _tex
+        items = []
+        if self.statement and self.statement != self.title:
+            items.append(f"Claim: {t(self.statement)}")
+        if self.hypotheses:
+            items.append("Hypotheses: " + "; ".join(t(h) for h in self.hypotheses))
+        if self.conclusion:
+            items.append("Conclusion: " + "; ".join(t(c) for c in self.conclusion))
+        if self.certificate is not None:
+            if self.certificate.normalisation:
+                items.append(f"Normalisation: {t(self.certificate.normalisation)}")
+            items.append(f"Method: {t(self.certificate.method)}; {t(self.identity_size())}")
+            items += [r"\texttt{" + t(_short(s, 120)) + "}" for s in self.certificate.steps[:4]]
+        if self.conditions:
+            items.append("Non-degeneracy conditions: " + "; ".join(t(c.text) for c in self.conditions))
+        if self.counterexample is not None:
+            items.append("Counterexample: " + ", ".join(f"{t(k)} = {t(str(v))}"
+                                                         for k, v in self.counterexample.values.items()))
+        if self.reason:
+            items.append(f"Why: {t(self.reason)}")
+        if timing:
+            items.append(f"Time: {1000 * self.elapsed:.1f} ms")
+        lines = [rf"\paragraph{{{t(self.title)}}} \textbf{{{self.status.value}}}."]
+        if items:
+            lines += [r"\begin{itemize}", *(rf"\item {i}" for i in items), r"\end{itemize}"]
+        return "\n".join(lines)
 
     def latex(self) -> str:
         """A one-line LaTeX summary (status, statement and the number of conditions)."""
         word = _STATUS_LATEX[self.status]
-        title = self.title.replace("_", r"\_")
-        return rf"$\text{{{title}}}:\ {word}\ \ (\text{{{len(self.conditions)} non-degeneracy conditions}})$"
+        return rf"$\text{{{_tex(self.title)}}}:\ {word}\ \ (\text{{{len(self.conditions)} non-degeneracy conditions}})$"
 
     def _repr_latex_(self) -> str:
         return self.latex()
