@@ -292,3 +292,33 @@ def test_pencil_with_a_line_pair_through_the_origin(e, d):
     assert len(got) == 4
     for p in got:
         assert is_zero(qf(C1, p)) and is_zero(qf(C2, p)) and is_zero(qf(D, p))
+    if not (is_zero(qf(C1, Point(0, 1, 0))) and is_zero(qf(C2, Point(0, 1, 0)))):
+        assert _resultant_matches(C1, C2, got)
+
+
+def _resultant_matches(C1: Conic, C2: Conic, points) -> bool:
+    """Multiplicities checked independently: if (0, 1, 0) is on at most one of the conics, the resultant
+    Res_y(C1, C2) is a binary quartic in (x, w) equal, up to a constant, to ∏ (w_p x − x_p w) over the
+    common points p counted with multiplicity (Poisson's product formula). It sees only (x : w); with the
+    points checked on both conics separately, it pins the multiplicities."""
+    x, y, w = symbols("x y w")
+    v = Matrix([x, y, w])
+    f1, f2 = ((v.T * Matrix(C.matrix) * v)[0, 0] for C in (C1, C2))
+    res = sympy.Poly(sympy.resultant(sympy.expand(f1), sympy.expand(f2), y), x, w)
+    prod = sympy.Poly(sympy.expand(sympy.Mul(*(p.coords[2] * x - p.coords[0] * w for p in points))), x, w)
+    monomials = [(4 - k, k) for k in range(5)]
+    a = [res.coeff_monomial(m) for m in monomials]
+    b = [prod.coeff_monomial(m) for m in monomials]
+    k = next(i for i in range(5) if a[i] != 0)
+    return all(is_zero(a[k] * b[i] - a[i] * b[k]) for i in range(5)) and not is_zero(b[k])
+
+
+@pytest.mark.parametrize(("C1", "C2"), [
+    (Conic.from_coefficients(1, 0, 0, 0, -1, 0), Conic.circle(0, 1, 1)),                          # tangent once
+    (Conic.circle(0, 0, 1), Conic.from_coefficients(1, 0, 4, 0, 0, -1)),                          # bitangent
+    (Conic.from_coefficients(1, 0, 0, 0, -1, 0), Conic.circle(0, Rational(1, 2), Rational(1, 2))),  # order 4
+    (Conic.from_coefficients(1, 0, 4, 0, 0, -4), Conic.from_coefficients(1, 0, -1, 0, 0, -1)),    # four simple
+    (Conic.circle(0, 0, 2), Conic.circle(1, 1, 2)),                                               # with I and J
+])
+def test_multiplicities_agree_with_the_resultant(C1, C2):
+    assert _resultant_matches(C1, C2, intersect_conics(C1, C2))
