@@ -187,6 +187,7 @@ def test_random_circles_meet_in_points_on_both(c1, c2):
     assert Point(1, I, 0) in got and Point(1, -I, 0) in got     # every circle passes through I and J
     for p in got:
         assert is_zero(qf(C1, p)) and is_zero(qf(C2, p))
+    assert _resultant_matches(C1, C2, got)     # (0, 1, 0) is on no circle
 
 
 # -- four points and a tangent ----------------------------------------------------------------------
