@@ -20,7 +20,9 @@ field such as ℚ(√2, i), or rational functions in symbols). A root found ther
 member with coefficients in that field, and its lines and the points need at most two nested
 square roots. When the cubic has no root in that field (an irreducible cubic, as for two random
 conics) the points would need Cardano's formula nested under square roots; this is not attempted
-and :class:`~pgsym.errors.UndecidableError` says so — never an approximate point. Every point
+and :class:`~pgsym.errors.UndecidableError` says so — never an approximate point. (Two common points
+with coordinates in the field suffice for a root: the line pair through them and through the other two
+is fixed by every conjugation.) Every point
 returned is checked exactly (:func:`pgsym.exact.is_zero`) to lie on both conics.
 """
 
@@ -129,8 +131,8 @@ def intersect_conics(c1: Conic, c2: Conic) -> tuple[Point, Point, Point, Point]:
         raise UndecidableError(
             "intersect_conics: det(C1 + t C2) has no root in the field of the conics' coefficients, so the "
             "common points would need the roots of an irreducible cubic nested under square roots (Cardano); "
-            "pgsym does not produce them exactly (and has no float conic intersection yet); a common point "
-            "with coordinates in that field, or a degenerate conic among the two, makes the question exact"
+            "pgsym does not produce them exactly (and has no float conic intersection yet); two known common "
+            "points with coordinates in that field, or a degenerate conic among the two, make the question exact"
         )
     candidates = [(D, D.split()) for D in members]
     D, (l, m) = min(candidates, key=lambda c: _plainness(c[1]))
