@@ -72,3 +72,23 @@ def incidence_programs(draw, max_points: int = 6, max_steps: int = 5) -> dict:
                           min_size=1, max_size=max_steps))
     conclusion = draw(st.tuples(st.integers(0, 30), st.integers(0, 30), st.integers(0, 30)))
     return {"points": n, "steps": steps, "conclusion": conclusion}
+
+
+@st.composite
+def unit_directions(draw) -> tuple[Fraction, Fraction]:
+    """Rational points ``(cos θ, sin θ)`` of the unit circle: ``((1 − t²)/(1 + t²), 2t/(1 + t²))``, and ``(−1, 0)``."""
+    if draw(st.integers(0, 9)) == 0:
+        return Fraction(-1), Fraction(0)
+    t = draw(st.fractions(min_value=-4, max_value=4, max_denominator=5))
+    return (1 - t * t) / (1 + t * t), 2 * t / (1 + t * t)
+
+
+@st.composite
+def affine_matrices(draw, bound: int = 5) -> list[list[int]]:
+    """Invertible affine 3×3 integer matrices ``[[A, t], [0, 0, 1]]`` (entries up to ``bound``)."""
+    a, b, c, d = (draw(integers(bound)) for _ in range(4))
+    if a * d - b * c == 0:
+        a, b, c, d = a + 1, b, c, d + (1 if d >= 0 else -1)
+        if a * d - b * c == 0:
+            a, b, c, d = 1, 0, 0, 1
+    return [[a, b, draw(integers(bound))], [c, d, draw(integers(bound))], [0, 0, 1]]
