@@ -19,10 +19,11 @@ from fractions import Fraction
 
 import sympy
 
+from ...conic_metric import affine_type
 from ...conics import Conic
-from ...exact import is_zero, sign
+from ...exact import is_zero
 from ...metric import cos_angle, cos_squared_angle, is_perpendicular, orthogonal_projection, perpendicular_line
-from ...projective_plane import Line, Point, incident, line_at_infinity
+from ...projective_plane import Line, Point, incident
 from ...ring import cross, primitive_integers
 from ..mistakes import mistake
 from ..model import Answer, Exercise, Mistake
@@ -307,9 +308,9 @@ class ConicTypeTemplate(Template):
         conic = Conic.from_coefficients(*exercise.params["coefficients"])
         check(not conic.is_degenerate, "the conic is degenerate")
         check(conic.contains(Point(*exercise.params["point"])), "the conic has no real point where it should")
-        # how the conic meets l∞: two real points (hyperbola), a double point (parabola) or none (ellipse)
-        disc = conic.discriminant(line_at_infinity())
-        kind = "parabola" if is_zero(disc) else ("hyperbola" if sign(disc) > 0 else "ellipse")
+        # the library's classification by how the conic meets l∞ (a circle is the ellipse through I and J)
+        kind = affine_type(conic)
+        kind = "ellipse" if kind == "circle" else kind
         check(exercise.parts[0].answer.value == "ABC"[_TYPES.index(kind)], f"the conic is a {kind}")
 
 
