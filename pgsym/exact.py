@@ -306,12 +306,35 @@ def _is_zero_number(c: Expr) -> bool:
     """Exact zero test of an algebraic number (already checked by :func:`_check_algebraic`)."""
     if c.is_Rational:
         return bool(c == 0)
+    reduced = _in_one_root(c)
+    if reduced is not None:
+        return reduced
     for prec in (64, 256):
         box = _interval(c, prec)
         if box is not None and (_excludes_zero(box[0]) or _excludes_zero(box[1])):
             return False
     m = _minimal_polynomial(c)
     return m.degree() == 1 and m.TC() == 0
+
+
+def _in_one_root(c: Expr) -> bool | None:
+    """Zero test of a rational function over ℚ of one indexed root ``r``: reduce modulo r's polynomial.
+
+    ``CRootOf`` keeps an irreducible polynomial, so a polynomial in ``r`` vanishes exactly when its
+    remainder by that polynomial does — no minimal polynomial of the whole expression is needed
+    (SymPy's takes minutes for complex roots). ``None`` when ``c`` is not of that form.
+    """
+    roots = c.atoms(sympy.CRootOf)
+    if len(roots) != 1:
+        return None
+    (r,) = roots
+    t = sympy.Dummy("t")
+    numerator, _ = sympy.fraction(sympy.together(c.xreplace({r: t})))
+    try:
+        p = sympy.Poly(numerator, t, domain="QQ")
+    except sympy.polys.polyerrors.PolynomialError:
+        return None
+    return (p.rem(sympy.Poly(r.poly.as_expr(), r.poly.gen).replace(r.poly.gen, t))).is_zero
 
 
 def _minimal_polynomial(c: Expr) -> sympy.Poly:
@@ -378,6 +401,8 @@ def _iv(e: Expr, iv: Any) -> tuple[Any, Any] | None:
         angle = iv.pi * iv.mpf(int(t.p)) / int(t.q)
         f = {sympy.cos: iv.cos, sympy.sin: iv.sin}.get(type(e))
         return (f(angle), zero) if f else (iv.sin(angle) / iv.cos(angle), zero)
+    if isinstance(e, sympy.CRootOf):
+        return _iv_root(e, iv)
     if isinstance(e, sympy.exp):
         t = e.args[0] / (sympy.I * sympy.pi)
         if not t.is_Rational:
@@ -385,6 +410,24 @@ def _iv(e: Expr, iv: Any) -> tuple[Any, Any] | None:
         angle = iv.pi * iv.mpf(int(t.p)) / int(t.q)
         return iv.cos(angle), iv.sin(angle)
     return None
+
+
+def _iv_root(r: sympy.CRootOf, iv: Any) -> tuple[Any, Any]:
+    """A box around an indexed root from SymPy's own isolating interval, refined to the working precision.
+
+    The interval is rigorous (exact rational endpoints), so no minimal polynomial is needed to tell a
+    nonzero expression in complex roots from zero (that computation can take minutes).
+    """
+    r.eval_rational(n=int(iv.prec * 0.302) + 2)  # refines the cached isolating interval in place
+    box = r._get_interval()
+
+    def hull(a: sympy.Rational, b: sympy.Rational) -> Any:
+        lo, hi = iv.mpf(int(a.p)) / int(a.q), iv.mpf(int(b.p)) / int(b.q)
+        return iv.mpf([lo.a, hi.b])
+
+    if r.is_real:
+        return hull(box.a, box.b), iv.mpf(0)
+    return hull(box.ax, box.bx), hull(box.ay, box.by)
 
 
 def _iv_power(z: tuple[Any, Any], n: int, iv: Any) -> tuple[Any, Any]:

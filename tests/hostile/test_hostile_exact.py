@@ -333,3 +333,15 @@ def test_algebraic_rescaling_is_the_same_point(v, k, choice):
 def test_euclidean_quantities_of_degenerate_input_are_named_errors(call, error):
     with pytest.raises(error):
         call()
+
+
+def test_expressions_in_a_complex_indexed_root_are_decided_quickly() -> None:
+    # r is a non-real root of x⁴ − 3x³ + x − 5 (irreducible over ℚ); SymPy's minimal polynomial of an
+    # expression in it takes minutes, reduction modulo the root's polynomial takes milliseconds
+    x = sympy.Symbol("x")
+    r = sympy.CRootOf(x**4 - 3 * x**3 + x - 5, 2)
+    assert not r.is_real
+    assert is_zero(r**4 - 3 * r**3 + r - 5)
+    assert not is_zero(r**2 + 1 - r)
+    # 1/(r + 1) written two ways: (r³ − 4r² + 4r − 3)(r + 1) = r⁴ − 3r³ + r − 3 = (r⁴ − 3r³ + r − 5) + 2 = 2
+    assert is_zero(1 / (r + 1) - (r**3 - 4 * r**2 + 4 * r - 3) / 2)
