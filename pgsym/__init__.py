@@ -56,6 +56,7 @@ _LAZY: dict[str, str] = {
     "Point3": "space",
     "ProjectiveMap1": "projective_line",
     "Quadric": "quadrics",
+    "DualQuadric": "quadrics",
     "bracket": "projective_line",
     "circular_points": "conics",
     "collinear": "projective_plane",

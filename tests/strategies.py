@@ -61,3 +61,17 @@ def lines() -> st.SearchStrategy[Line]:
 def scaled(obj, factor: Fraction):
     """The same projective object with every coordinate multiplied by ``factor``."""
     return type(obj)(*(c * factor for c in obj.coords))
+
+
+@st.composite
+def invertible_matrices(draw, n: int = 3, bound: int = 4) -> list[list[int]]:
+    """Non-singular integer n×n matrices with entries up to ``bound`` (a homography of P^(n-1))."""
+    from sympy import Matrix
+
+    m = [[draw(integers(bound)) for _ in range(n)] for _ in range(n)]
+    if Matrix(m).det() == 0:  # a shifted diagonal keeps the example instead of rejecting it
+        for i in range(n):
+            m[i][i] += 2 * bound + 1
+    if Matrix(m).det() == 0:
+        m = [[int(i == j) for j in range(n)] for i in range(n)]
+    return m
