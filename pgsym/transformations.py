@@ -27,14 +27,25 @@ from typing import Any, ClassVar
 import sympy
 from sympy import Expr, ImmutableMatrix, Matrix
 
-from .errors import CollinearPointsError, DimensionError, ObjectTypeError, SingularTransformationError
+from .errors import (
+    CollinearPointsError,
+    DimensionError,
+    InputLimitError,
+    ObjectTypeError,
+    SingularTransformationError,
+)
 from .exact import latex
 from .homogeneous import _format_entry, is_zero
 from .kinds import Kind, object_classes
+from .limits import MAX_EXPONENT
 from .matrices import adjugate, exact_matrix, expanded, proportional
 from .projective_plane import Point, collinear
 
-__all__ = ["Transformation", "adjugate", "as_exact_matrix", "homography_from_points"]
+__all__ = ["MAX_POWER", "Transformation", "adjugate", "as_exact_matrix", "homography_from_points"]
+
+MAX_POWER = 4096
+"""The largest ``|n|`` that ``H ** n`` accepts for a numeric matrix: the entries grow about n-fold in
+digits, so a larger power is a request for a number too long to write (symbolic matrices: ``MAX_EXPONENT``)."""
 
 
 def as_exact_matrix(matrix: Any, what: str = "a transformation matrix") -> ImmutableMatrix:
@@ -186,6 +197,35 @@ class Transformation(Kind, kind="transformation"):
         if other.dim != self.dim:
             raise DimensionError(f"cannot compose a transformation of P^{self.dim} with one of P^{other.dim}")
         return type(self)(expanded(self._matrix * other._matrix))
+
+    def __pow__(self, n: int) -> Transformation:
+        """``H ** n``: the n-fold composition; ``H ** 0`` the identity, ``H ** -n`` the inverse's power.
+
+        Computed by repeated squaring (the inverse by the adjugate). ``n`` must be an integer
+        (a float or fraction raises :class:`~pgsym.errors.ObjectTypeError`); ``|n|`` is at most
+        :data:`MAX_POWER` (:data:`pgsym.limits.MAX_EXPONENT` for symbolic matrices), else
+        :class:`~pgsym.errors.InputLimitError`.
+
+        >>> R = Transformation([[0, -1, 0], [1, 0, 0], [0, 0, 1]])       # a quarter turn
+        >>> R ** 4 == Transformation.identity(), R ** -1 == R ** 3, (R ** 2).matrix[0, 0]
+        (True, True, -1)
+        """
+        if isinstance(n, bool) or not isinstance(n, (numbers.Integral, sympy.Integer)):
+            raise ObjectTypeError(f"a transformation is raised to integer powers only, got {type(n).__name__} {n!r}")
+        n = int(n)
+        limit = MAX_EXPONENT if self._matrix.free_symbols else MAX_POWER
+        if abs(n) > limit:
+            raise InputLimitError(f"H ** {n}: the power is limited to |n| ≤ {limit} (the entries grow with n)")
+        base = Matrix(self.adjugate if n < 0 else self._matrix)
+        result = Matrix.eye(self._matrix.rows)
+        n = abs(n)
+        while n:
+            if n & 1:
+                result = Matrix(expanded(result * base))
+            n >>= 1
+            if n:
+                base = Matrix(expanded(base * base))
+        return type(self)(result)
 
     def __matmul__(self, other: Any) -> Any:
         if isinstance(other, Transformation):
