@@ -32,6 +32,7 @@ _LAZY: dict[str, str] = {
     "CLASSES_3D": "hierarchy",
     "EUCLIDEAN_2D": "hierarchy",
     "ISOMETRY_2D": "hierarchy",
+    "ISOMETRY_3D": "hierarchy",
     "SIMILARITY_2D": "hierarchy",
     "AFFINE_2D": "hierarchy",
     "PROJECTIVE_2D": "hierarchy",
