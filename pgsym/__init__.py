@@ -46,6 +46,7 @@ _LAZY: dict[str, str] = {
     "invariant": "invariants",
     "summary_table": "invariants",
     "decompose": "decomposition",
+    "affine_decomposition": "decomposition",
     "FixedSpace": "fixed_points",
     "fixed_lines": "fixed_points",
     "fixed_planes": "fixed_points",
