@@ -27,6 +27,7 @@ _LAZY: dict[str, str] = {
     "Transformation": "transformations",
     "adjugate": "transformations",
     "homography_from_points": "transformations",
+    "homography_from_points_and_conics": "transformations",
     "classify": "hierarchy",
     "CLASSES_2D": "hierarchy",
     "CLASSES_3D": "hierarchy",

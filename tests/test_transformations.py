@@ -444,3 +444,68 @@ def test_powers_add_exponents(m, a, b):
 def test_powers_in_space(m, a):
     H = Transformation(m)
     assert (H**a) @ H == H ** (a + 1)
+
+
+# -- three points and a conic ----------------------------------------------------------------------------
+CIRCLE_25 = [(5, 0), (0, 5), (-5, 0), (0, -5), (3, 4), (4, 3), (-3, 4), (-4, -3), (3, -4), (-4, 3)]
+
+
+def test_homography_from_points_and_conics_by_hand():
+    from pgsym.conics import Conic
+    from pgsym.transformations import homography_from_points_and_conics as hpc
+
+    # the unit circle to itself, (1, 0), (0, 1), (−1, 0) to (0, 1), (−1, 0), (0, −1): the quarter turn
+    C = Conic.circle(0, 0, 1)
+    H = hpc([Point(1, 0), Point(0, 1), Point(-1, 0)], [Point(0, 1), Point(-1, 0), Point(0, -1)], C, C)
+    assert H == Transformation([[0, -1, 0], [1, 0, 0], [0, 0, 1]])
+    # (1, 0) ↔ (0, 1) and (−1, 0) ↦ (0, −1): the reflection in the line y = x
+    H = hpc([Point(1, 0), Point(0, 1), Point(-1, 0)], [Point(0, 1), Point(1, 0), Point(0, -1)], C, C)
+    assert H == Transformation([[0, 1, 0], [1, 0, 0], [0, 0, 1]])
+    # the unit circle onto the parabola X² = YW with (0, −1), (0, 1), (1, 0) ↦ (0, 0), (0, 1, 0), (1, 1):
+    # (x, y, w) ↦ (x, y + w, w − y) does it, since x² − (y + w)(w − y) = x² + y² − w², and
+    # (0, −1, 1) ↦ (0, 0, 2), (0, 1, 1) ↦ (0, 2, 0), (1, 0, 1) ↦ (1, 1, 1); being unique, it is the answer
+    P = Conic.from_coefficients(1, 0, 0, 0, -1, 0)
+    src, dst = [Point(0, -1), Point(0, 1), Point(1, 0)], [Point(0, 0), Point(0, 1, 0), Point(1, 1)]
+    assert hpc(src, dst, C, P) == Transformation([[1, 0, 0], [0, 1, 1], [0, -1, 1]])
+
+
+def test_homography_from_points_and_conics_with_surds():
+    from pgsym.conics import Conic
+    from pgsym.transformations import homography_from_points_and_conics as hpc
+
+    r = sympy.sqrt(2)
+    C = Conic.circle(0, 0, r)  # x² + y² = 2 through (1, 1), (−1, 1), (√2, 0)
+    src = [Point(1, 1), Point(-1, 1), Point(r, 0)]
+    G = Transformation([[1, 2, 0], [0, 1, 1], [1, 0, 2]])
+    H = hpc(src, [G(p) for p in src], C, G(C))
+    assert H == G
+
+
+@settings(max_examples=15, deadline=None)
+@given(invertible_matrices(3, 3), st.lists(st.sampled_from(CIRCLE_25), min_size=3, max_size=3, unique=True))
+def test_homography_from_points_and_conics_is_the_unique_one(m, pts):
+    from pgsym.conics import Conic
+    from pgsym.transformations import homography_from_points_and_conics as hpc
+
+    G, C = Transformation(m), Conic.circle(0, 0, 5)
+    src = [Point(*p) for p in pts]
+    assert hpc(src, [G(p) for p in src], C, G(C)) == G
+
+
+def test_homography_from_points_and_conics_errors():
+    from pgsym.conics import Conic
+    from pgsym.errors import CoincidentPointsError, DegenerateConicError, NotOnConicError
+    from pgsym.transformations import homography_from_points_and_conics as hpc
+
+    C = Conic.circle(0, 0, 1)
+    on = [Point(1, 0), Point(0, 1), Point(-1, 0)]
+    with pytest.raises(NotOnConicError):
+        hpc([Point(1, 0), Point(0, 1), Point(2, 0)], on, C, C)
+    with pytest.raises(CoincidentPointsError):
+        hpc([Point(1, 0), Point(1, 0), Point(-1, 0)], on, C, C)
+    with pytest.raises(DegenerateConicError):
+        hpc(on, on, C, Conic.from_coefficients(1, 0, -1, 0, 0, 0))
+    with pytest.raises(DimensionError):
+        hpc(on[:2], on[:2], C, C)
+    with pytest.raises(ObjectTypeError):
+        hpc(on, on, C, "circle")
