@@ -144,10 +144,21 @@ def _spaces(H: Transformation, transpose: bool, element: str, cls: type) -> tupl
     M = Matrix(H.matrix.T if transpose else H.matrix)
     spaces = []
     for lam, mult, basis, quadratic in _eigenspaces(M):
-        # the canonical form of a point with Cardano radicals costs minutes: only surds are normalised
-        spaces.append(FixedSpace(lam, mult, tuple(cls(*v).canonical() if quadratic else cls(*v) for v in basis),
-                                 element))
+        if quadratic:
+            elements = tuple(cls(*v).canonical() for v in basis)
+        else:
+            # Cardano/Ferrari radicals: deciding that such coordinates are not all zero (or normalising them)
+            # costs minutes, and is not needed — each coordinate is a polynomial of degree < deg f in λ, not
+            # all zero modulo the irreducible f, and such a polynomial cannot vanish at a root of f
+            elements = tuple(_trusted(cls, v) for v in basis)
+        spaces.append(FixedSpace(lam, mult, elements, element))
     return tuple(spaces)
+
+
+def _trusted(cls: type, coords: tuple[Expr, ...]) -> Any:
+    obj = cls.__new__(cls)
+    obj._coords = tuple(coords)
+    return obj
 
 
 def _transformation(H: Any) -> Transformation:
