@@ -276,9 +276,9 @@ class Quadric(SymmetricForm, kind="quadric"):
         (3, 1)), ``'ruled quadric'`` (hyperboloid of one sheet, hyperbolic paraboloid; (2, 2)),
         ``'imaginary quadric'`` (no real point; (4, 0)), ``'cone'`` / ``'cylinder'`` (rank 3,
         (2, 1), apex finite / ideal), ``'imaginary cone'`` (rank 3, (3, 0): the apex is its only
-        real point), ``'plane pair'`` (rank 2, (1, 1)), ``'complex plane pair'`` (rank 2, (2, 0):
-        conjugate planes through a real line) and ``'double plane'`` (rank 1). Symbolic entries
-        raise :class:`~pgsym.errors.UndecidableError`.
+        real point; ``'imaginary cylinder'`` when that apex is ideal), ``'plane pair'`` (rank 2,
+        (1, 1)), ``'complex plane pair'`` (rank 2, (2, 0): conjugate planes through a real line) and
+        ``'double plane'`` (rank 1). Symbolic entries raise :class:`~pgsym.errors.UndecidableError`.
 
         >>> Quadric([[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, -1, 0], [0, 0, 0, -1]]).kind_of_quadric()
         'ruled quadric'
