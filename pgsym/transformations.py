@@ -234,6 +234,23 @@ class Transformation(Kind, kind="transformation"):
                 base = Matrix(expanded(base * base))
         return type(self)(result)
 
+    def fixed_points(self) -> tuple[Any, ...]:
+        """The fixed points, one eigenspace per eigenvalue (:func:`pgsym.fixed_points.fixed_points`).
+
+        >>> G = Transformation([[1, 0, 2], [0, -1, 0], [0, 0, 1]])     # glide reflection: no finite fixed point
+        >>> [(f.eigenvalue, f.basis) for f in G.fixed_points()]
+        [(-1, (Point(0, 1, 0),)), (1, (Point(1, 0, 0),))]
+        """
+        from .fixed_points import fixed_points
+
+        return fixed_points(self)
+
+    def fixed_hyperplanes(self) -> tuple[Any, ...]:
+        """The fixed lines (P²) or planes (P³): :func:`~pgsym.fixed_points.fixed_lines` / ``fixed_planes``."""
+        from .fixed_points import fixed_lines, fixed_planes
+
+        return fixed_lines(self) if self.dim == 2 else fixed_planes(self)
+
     def __matmul__(self, other: Any) -> Any:
         if isinstance(other, Transformation):
             return self.compose(other)
