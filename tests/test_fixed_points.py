@@ -142,3 +142,15 @@ def test_generic_matrices_get_radical_fixed_points_quickly(m):
         v = sympy.Matrix(f.basis[0].coords).evalf(60)
         lam = sympy.N(f.eigenvalue, 60)
         assert max(abs(e) for e in (M * v - lam * v)) < 1e-40 * max(abs(e) for e in v)
+
+
+def test_glide_reflection_by_hand():
+    # (x, y) ↦ (x + 2, −y). H − I = [[0, 0, 2], [0, −2, 0], 0]: y = w = 0, the ideal point (1, 0, 0);
+    # H + I = [[2, 0, 2], 0, [0, 0, 2]]: x = w = 0, the ideal point (0, 1, 0). No finite point is fixed.
+    # Hᵀ − I = [0, [0, −2, 0], [2, 0, 0]]: the line at infinity (0, 0, 1); Hᵀ + I = [[2, 0, 0], 0, [2, 0, 2]]:
+    # the line (0, 1, 0), y = 0 — the glide axis
+    G = Transformation([[1, 0, 2], [0, -1, 0], [0, 0, 1]])
+    assert {f.eigenvalue: f.basis for f in G.fixed_points()} == {1: (Point(1, 0, 0),), -1: (Point(0, 1, 0),)}
+    assert {f.eigenvalue: f.basis for f in G.fixed_hyperplanes()} == {1: (Line(0, 0, 1),), -1: (Line(0, 1, 0),)}
+    mirror = Transformation(sympy.diag(1, 1, -1, 1))
+    assert [f.element for f in mirror.fixed_hyperplanes()] == ["plane", "plane"]
