@@ -403,7 +403,7 @@ def homography_from_points_and_conics(src: list[Point], dst: list[Point], conic:
     for pts, C, side in ((src, conic, "source"), (dst, image, "image")):
         if not isinstance(C, Conic):
             raise ObjectTypeError(f"the {side} conic must be a Conic, got {type(C).__name__} {C!r}")
-        if len(pts) != 3 or not all(isinstance(p, Point) for p in pts):
+        if not isinstance(pts, (list, tuple)) or len(pts) != 3 or not all(isinstance(p, Point) for p in pts):
             raise DimensionError(f"three Points on the {side} conic are needed, got {pts!r}")
         if C.is_degenerate:
             raise DegenerateConicError(f"the {side} conic {C!r} is degenerate: it has no tangents at every point")

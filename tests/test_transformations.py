@@ -509,3 +509,5 @@ def test_homography_from_points_and_conics_errors():
         hpc(on[:2], on[:2], C, C)
     with pytest.raises(ObjectTypeError):
         hpc(on, on, C, "circle")
+    with pytest.raises(DimensionError):
+        hpc(5, on, C, C)
