@@ -27,9 +27,11 @@ __all__ = [
     "IdealPointError",
     "InputLimitError",
     "InvalidCoordinatesError",
+    "LineOnQuadricError",
     "NonFiniteError",
     "NonNumericError",
     "NotAPencilError",
+    "NotASphereError",
     "NotOnConicError",
     "NotOnKleinQuadricError",
     "NotOnQuadricError",
@@ -121,6 +123,14 @@ class ZeroCoordinateError(DegenerateConfigurationError):
 
 class NotOnQuadricError(DegenerateConfigurationError):
     """A point that must lie on a quadric (e.g. to have a tangent plane there) does not."""
+
+
+class LineOnQuadricError(DegenerateConfigurationError):
+    """A line that was to meet a quadric in one or two points lies on it (a ruling, or a line of a plane pair)."""
+
+
+class NotASphereError(DegenerateConfigurationError):
+    """A quadric asked for a sphere's centre or radius is no real sphere (not of the form |X − c|² = r², r² > 0)."""
 
 
 class NotSkewSymmetricError(InvalidCoordinatesError):

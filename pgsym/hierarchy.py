@@ -59,6 +59,7 @@ __all__ = [
     "EUCLIDEAN_2D",
     "EUCLIDEAN_3D",
     "ISOMETRY_2D",
+    "ISOMETRY_3D",
     "PROJECTIVE_2D",
     "PROJECTIVE_3D",
     "SIMILARITY_2D",
@@ -187,14 +188,20 @@ def _projective(n: int) -> Callable[[Sequence[Any], int], list[list[Any]]]:
     return build
 
 
+def _rotation3(a: Any, b: Any, c: Any, component: int) -> list[list[Any]]:
+    """R, or R diag(1, 1, −1) (R after the mirror z = 0) for the reflected component."""
+    R = rotation_3d(a, b, c)
+    return [[-e if (component and j == 2) else e for j, e in enumerate(row)] for row in R]
+
+
 def _euclidean3(p: Sequence[Any], component: int) -> list[list[Any]]:
     a, b, c, tx, ty, tz = p
-    return _homogeneous(rotation_3d(a, b, c), [tx, ty, tz])
+    return _homogeneous(_rotation3(a, b, c, component), [tx, ty, tz])
 
 
 def _similarity3(p: Sequence[Any], component: int) -> list[list[Any]]:
     k, a, b, c, tx, ty, tz = p
-    return _homogeneous([[k * e for e in row] for row in rotation_3d(a, b, c)], [tx, ty, tz])
+    return _homogeneous([[k * e for e in row] for row in _rotation3(a, b, c, component)], [tx, ty, tz])
 
 
 def _affine3(p: Sequence[Any], component: int) -> list[list[Any]]:
@@ -462,11 +469,16 @@ PROJECTIVE_2D = TransformationClass(
 )
 EUCLIDEAN_3D = TransformationClass(
     "euclidean3", "Euclidean (rigid motion)", 3, ("a", "b", "c", "t_x", "t_y", "t_z"), _euclidean3,
-    r"\begin{bmatrix} R & \mathbf{t} \\ \mathbf{0}^\top & 1\end{bmatrix}", "similarity3",
+    r"\begin{bmatrix} R & \mathbf{t} \\ \mathbf{0}^\top & 1\end{bmatrix}", "isometry3",
+)
+ISOMETRY_3D = TransformationClass(
+    "isometry3", "Isometry", 3, ("a", "b", "c", "t_x", "t_y", "t_z"), _euclidean3,
+    r"\begin{bmatrix} R & \mathbf{t} \\ \mathbf{0}^\top & 1\end{bmatrix},\ R^\top R = I",
+    "similarity3", ("proper", "reflection"),
 )
 SIMILARITY_3D = TransformationClass(
     "similarity3", "Similarity", 3, ("k", "a", "b", "c", "t_x", "t_y", "t_z"), _similarity3,
-    r"\begin{bmatrix} s R & \mathbf{t} \\ \mathbf{0}^\top & 1\end{bmatrix}", "affine3",
+    r"\begin{bmatrix} s R & \mathbf{t} \\ \mathbf{0}^\top & 1\end{bmatrix}", "affine3", ("proper", "reflection"),
 )
 AFFINE_3D = TransformationClass(
     "affine3", "Affine", 3, (*(f"a_{i}{j}" for i in range(1, 4) for j in range(1, 4)), "t_x", "t_y", "t_z"),
@@ -479,7 +491,7 @@ PROJECTIVE_3D = TransformationClass(
 
 CLASSES_2D: tuple[TransformationClass, ...] = (EUCLIDEAN_2D, ISOMETRY_2D, SIMILARITY_2D, AFFINE_2D, PROJECTIVE_2D)
 """The 2D hierarchy, smallest class first."""
-CLASSES_3D: tuple[TransformationClass, ...] = (EUCLIDEAN_3D, SIMILARITY_3D, AFFINE_3D, PROJECTIVE_3D)
+CLASSES_3D: tuple[TransformationClass, ...] = (EUCLIDEAN_3D, ISOMETRY_3D, SIMILARITY_3D, AFFINE_3D, PROJECTIVE_3D)
 """The 3D hierarchy, smallest class first."""
 
 _ORDER = {c.key: i for i, c in enumerate(CLASSES_2D)} | {c.key: i for i, c in enumerate(CLASSES_3D)}
@@ -508,7 +520,8 @@ def dof_table(seed: int = 0) -> list[dict[str, Any]]:
     [3, 4, 6, 8, 6, 7, 12, 15]
     """
     rows = []
-    for c in (ISOMETRY_2D, SIMILARITY_2D, AFFINE_2D, PROJECTIVE_2D, *CLASSES_3D):
+    for c in (ISOMETRY_2D, SIMILARITY_2D, AFFINE_2D, PROJECTIVE_2D,
+              EUCLIDEAN_3D, SIMILARITY_3D, AFFINE_3D, PROJECTIVE_3D):
         d = c.dof(seed)
         rows.append({"class": c.name, "dim": c.dim, "dof": d.dof, "parameters": c.n_parameters,
                      "proof": d.explanation()})
@@ -541,6 +554,8 @@ def classify(H: Any, tol: float | None = None) -> TransformationClass:
     'Euclidean (proper isometry)'
     >>> classify([[1, 0, 0], [0, -1, 0], [0, 0, 1]]).name    # a reflection
     'Isometry'
+    >>> classify(sympy.diag(1, 1, -1, 1)).key, classify(sympy.diag(2, 2, -2, 1)).key   # in space too
+    ('isometry3', 'similarity3')
     """
     if tol is not None or _is_float_input(H):
         return _classify_numeric(H, tol)
@@ -559,9 +574,9 @@ def classify(H: Any, tol: float | None = None) -> TransformationClass:
         if not is_zero(G[0, 0] - 1):
             return SIMILARITY_2D
         return EUCLIDEAN_2D if proper else ISOMETRY_2D
-    if not proper:
-        return AFFINE_3D
-    return EUCLIDEAN_3D if is_zero(G[0, 0] - 1) else SIMILARITY_3D
+    if not is_zero(G[0, 0] - 1):
+        return SIMILARITY_3D
+    return EUCLIDEAN_3D if proper else ISOMETRY_3D
 
 
 def _classify_numeric(H: Any, tol: float | None) -> TransformationClass:

@@ -538,6 +538,7 @@ _REFLECT2 = [[1, 0, 0], [0, -1, 0], [0, 0, 1]]
 _SHEAR2 = [[1, 1, 0], [0, 1, 0], [0, 0, 1]]
 _PERSP2 = [[1, 0, 0], [0, 1, 0], [0, 1, 1]]
 _SCALE3 = [[2, 0, 0, 0], [0, 2, 0, 0], [0, 0, 2, 0], [0, 0, 0, 1]]
+_REFLECT3 = [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, -1, 0], [0, 0, 0, 1]]
 _SHEAR3 = [[1, 1, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]
 _PERSP3 = [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 1, 0, 1]]
 
@@ -578,10 +579,10 @@ INVARIANTS: tuple[Invariant, ...] = (
               "a point of a conic and the tangent there map to a point of the image conic and its tangent",
               _c_tangent, _v_tangency),
     # 3D
-    Invariant("length-3d", "length", "euclidean3", "the distance between two points", _c_points(2, 3), _v_dist,
+    Invariant("length-3d", "length", "isometry3", "the distance between two points", _c_points(2, 3), _v_dist,
               (_SCALE3, [0, 0, 0, 1, 2, 2])),
     Invariant("volume", "volume", "euclidean3", "the signed volume of a tetrahedron", _c_points(4, 3), _v_volume,
-              (_SCALE3, [0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1])),
+              (_REFLECT3, [0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1])),
     Invariant("angle-3d", "angle", "similarity3", "the angle between two planes", _c_lines(2, 3), _v_cos2,
               (_SHEAR3, [1, 0, 0, 0, 0, 1, 0, 0])),
     Invariant("length-ratio-3d", "ratio of lengths", "similarity3", "the ratio of two distances",

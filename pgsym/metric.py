@@ -94,6 +94,9 @@ def absolute_dual_quadric() -> ImmutableMatrix:
     """The absolute dual quadric ``Q*∞ = diag(1, 1, 1, 0)``: planes ``π``, ``σ`` are perpendicular iff ``πᵀQ*∞σ = 0``.
 
     Its dual is the absolute conic ``Ω∞`` on the plane at infinity, the identity form on directions.
+    This is the matrix the formulas here use; the same object as a
+    :class:`~pgsym.quadrics.DualQuadric` (which knows how it transforms, ``Q*' = H Q* Hᵀ``) is
+    :meth:`DualQuadric.absolute() <pgsym.quadrics.DualQuadric.absolute>`.
 
     >>> absolute_dual_quadric()
     Matrix([

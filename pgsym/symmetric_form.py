@@ -17,20 +17,63 @@ True
 
 from __future__ import annotations
 
+import itertools
 from collections.abc import Sequence
 from typing import Any, ClassVar, TypeVar
 
 import sympy
 from sympy import Expr, ImmutableMatrix, Integer, Matrix, Rational
 
-from .errors import InvalidCoordinatesError, ZeroVectorError
-from .exact import all_zero, canonical_coords, format_entry, is_zero, latex
+from .errors import DegenerateConicError, InvalidCoordinatesError, UndecidableError, ZeroVectorError
+from .exact import all_zero, canonical_coords, format_entry, is_zero, latex, sign
 from .kinds import Kind
 from .matrices import exact_matrix, proportional, rank
 
-__all__ = ["SymmetricForm"]
+__all__ = ["SymmetricForm", "roots_on_line"]
 
 _F = TypeVar("_F", bound="SymmetricForm")
+
+
+def _conjugate_normalised(u: Sequence[Expr], v: Sequence[Expr], disc: Expr) -> tuple[Expr, ...]:
+    """The vector ``u + v √disc`` (rational u, v, disc not a rational square), scaled so that its last
+    nonzero coordinate is 1: dividing by ``u_k + v_k √disc`` is multiplying by its conjugate over the
+    nonzero rational ``u_k² − v_k² disc``."""
+    root = sympy.sqrt(disc)
+    k = max(i for i in range(len(u)) if u[i] != 0 or v[i] != 0)
+    norm = u[k] ** 2 - v[k] ** 2 * disc
+    return tuple(sympy.expand((u[i] * u[k] - v[i] * v[k] * disc + (v[i] * u[k] - u[i] * v[k]) * root) / norm)
+                 for i in range(len(u)))
+
+
+def roots_on_line(a: Expr, b: Expr, c: Expr, p: Sequence[Expr], q: Sequence[Expr]) -> tuple[tuple[Expr, ...], ...]:
+    """The zeros ``s p + t q`` of the binary form ``a s² + 2b st + c t²`` (not identically zero), exactly.
+
+    Two coordinate tuples when the discriminant ``b² − ac`` is nonzero (irrational or complex
+    coordinates when it is not a rational square), one (the double zero) when it vanishes. The
+    common kernel of conic ∩ line, quadric ∩ line and the splitting of a plane or line pair.
+
+    >>> roots_on_line(1, 0, -2, (1, 0), (0, 1))          # s² − 2t² = 0: s/t = ±√2
+    ((sqrt(2), 1), (-sqrt(2), 1))
+    >>> roots_on_line(1, -1, 1, (1, 0), (0, 1))          # (s − t)²: the double zero s = t
+    ((1, 1),)
+    """
+    a, b, c = (sympy.sympify(e) for e in (a, b, c))
+    p, q = tuple(sympy.sympify(e) for e in p), tuple(sympy.sympify(e) for e in q)
+    if is_zero(a):
+        if is_zero(b):  # c t² = 0: the double zero t = 0
+            return (tuple(p),)
+        pairs = [(Integer(1), Integer(0)), (c, -2 * b)]
+        return tuple(tuple(sympy.expand(s * pi + t * qi) for pi, qi in zip(p, q, strict=True)) for s, t in pairs)
+    disc = sympy.expand(b**2 - a * c)
+    u = [sympy.expand(-b * pi + a * qi) for pi, qi in zip(p, q, strict=True)]
+    if is_zero(disc):
+        return (tuple(u),)
+    # the zeros (-b ± √disc) p + a q, i.e. coordinates u_i ± v_i √disc
+    v = list(p)
+    root = sympy.sqrt(disc)
+    if not root.is_Rational and all(e.is_Rational for e in (*u, *v, disc)):
+        return tuple(_conjugate_normalised(u, [sg * vi for vi in v], disc) for sg in (1, -1))
+    return tuple(tuple(sympy.expand(ui + sg * root * vi) for ui, vi in zip(u, v, strict=True)) for sg in (1, -1))
 
 
 class SymmetricForm(Kind):
@@ -96,6 +139,62 @@ class SymmetricForm(Kind):
         if not self.is_degenerate:
             return self.size
         return rank(self._matrix)
+
+    def signature(self) -> tuple[int, int]:
+        """The numbers ``(p, n)`` of positive and negative eigenvalues, ordered so that ``p ≥ n`` (scale-free).
+
+        Decided exactly for real numeric entries (algebraic numbers included): the eigenvalues of
+        a real symmetric matrix are real, so Descartes' rule of signs on the characteristic
+        polynomial counts them exactly. Symbolic or non-real entries raise
+        :class:`~pgsym.errors.UndecidableError`.
+
+        >>> from pgsym.quadrics import Quadric
+        >>> Quadric.sphere((0, 0, 0), 1).signature(), Quadric([[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, -1, 0],
+        ...                                                     [0, 0, 0, -1]]).signature()
+        ((3, 1), (2, 2))
+        """
+        coeffs = Matrix(self._matrix).charpoly().all_coeffs()
+        try:
+            signs = [sign(sympy.expand(c)) for c in coeffs]
+        except UndecidableError as err:
+            raise UndecidableError(f"the signature of {self!r} needs real numeric entries: {err}") from err
+
+        def changes(seq: list[int]) -> int:
+            nz = [x for x in seq if x != 0]
+            return sum(1 for x, y in itertools.pairwise(nz) if x != y)
+
+        deg = len(signs) - 1
+        positive = changes(signs)
+        negative = changes([sg * (-1) ** (deg - i) for i, sg in enumerate(signs)])
+        return (max(positive, negative), min(positive, negative))
+
+    def _split(self) -> tuple[tuple[Expr, ...], tuple[Expr, ...]]:
+        """The two linear factors of a form of rank ≤ 2, ``xᵀ M x = (aᵀx)(bᵀx)`` up to scale (a = b for rank 1).
+
+        A symmetric matrix of rank r has a non-singular r×r principal block ``B`` (rows and columns
+        ``S``); then ``M = U B⁻¹ Uᵀ`` with ``U`` the columns ``S`` of ``M``, so the form is the binary
+        form ``adj(B)`` in ``y = Uᵀ x``, which factors over ``ℚ(√disc)``.
+        """
+        m, n = self._matrix, self.size
+        r = self.rank
+        if r > 2:
+            raise DegenerateConicError(
+                f"{self!r} has rank {r}: only a form of rank 2 (two hyperplanes) or 1 (a double one) splits into "
+                "linear factors"
+            )
+        if r == 1:
+            i = next(k for k in range(n) if not is_zero(m[k, k]))
+            col = tuple(m[:, i])
+            return col, col
+        i, j = next((i, j) for i in range(n) for j in range(i + 1, n)
+                    if not is_zero(m[i, i] * m[j, j] - m[i, j] ** 2))
+        u, v = tuple(m[:, i]), tuple(m[:, j])
+        # the binary form adj(B) = [[m_jj, -m_ij], [-m_ij, m_ii]] in (s, t) = (uᵀx, vᵀx); its zeros (s, t) = (α, β)
+        # give the factor β uᵀx − α vᵀx, i.e. the hyperplane β u − α v; the zeros are those of the form's dual
+        zeros = roots_on_line(m[j, j], -m[i, j], m[i, i], (Integer(1), Integer(0)), (Integer(0), Integer(1)))
+        planes = [tuple(sympy.expand(beta * ui - alpha * vi) for ui, vi in zip(u, v, strict=True))
+                  for alpha, beta in zeros]
+        return planes[0], planes[-1]
 
     def _form(self, u: Sequence[Expr], v: Sequence[Expr]) -> Expr:
         """The bilinear form ``uᵀ M v``, expanded."""

@@ -27,14 +27,32 @@ from typing import Any, ClassVar
 import sympy
 from sympy import Expr, ImmutableMatrix, Matrix
 
-from .errors import CollinearPointsError, DimensionError, ObjectTypeError, SingularTransformationError
+from .errors import (
+    CollinearPointsError,
+    DimensionError,
+    InputLimitError,
+    ObjectTypeError,
+    SingularTransformationError,
+)
 from .exact import latex
 from .homogeneous import _format_entry, is_zero
 from .kinds import Kind, object_classes
+from .limits import MAX_EXPONENT
 from .matrices import adjugate, exact_matrix, expanded, proportional
 from .projective_plane import Point, collinear
 
-__all__ = ["Transformation", "adjugate", "as_exact_matrix", "homography_from_points"]
+__all__ = [
+    "MAX_POWER",
+    "Transformation",
+    "adjugate",
+    "as_exact_matrix",
+    "homography_from_points",
+    "homography_from_points_and_conics",
+]
+
+MAX_POWER = 4096
+"""The largest ``|n|`` that ``H ** n`` accepts for a numeric matrix: the entries grow about n-fold in
+digits, so a larger power is a request for a number too long to write (symbolic matrices: ``MAX_EXPONENT``)."""
 
 
 def as_exact_matrix(matrix: Any, what: str = "a transformation matrix") -> ImmutableMatrix:
@@ -187,6 +205,52 @@ class Transformation(Kind, kind="transformation"):
             raise DimensionError(f"cannot compose a transformation of P^{self.dim} with one of P^{other.dim}")
         return type(self)(expanded(self._matrix * other._matrix))
 
+    def __pow__(self, n: int) -> Transformation:
+        """``H ** n``: the n-fold composition; ``H ** 0`` the identity, ``H ** -n`` the inverse's power.
+
+        Computed by repeated squaring (the inverse by the adjugate). ``n`` must be an integer
+        (a float or fraction raises :class:`~pgsym.errors.ObjectTypeError`); ``|n|`` is at most
+        :data:`MAX_POWER` (:data:`pgsym.limits.MAX_EXPONENT` for symbolic matrices), else
+        :class:`~pgsym.errors.InputLimitError`.
+
+        >>> R = Transformation([[0, -1, 0], [1, 0, 0], [0, 0, 1]])       # a quarter turn
+        >>> R ** 4 == Transformation.identity(), R ** -1 == R ** 3, (R ** 2).matrix[0, 0]
+        (True, True, -1)
+        """
+        if isinstance(n, bool) or not isinstance(n, (numbers.Integral, sympy.Integer)):
+            raise ObjectTypeError(f"a transformation is raised to integer powers only, got {type(n).__name__} {n!r}")
+        n = int(n)
+        limit = MAX_EXPONENT if self._matrix.free_symbols else MAX_POWER
+        if abs(n) > limit:
+            raise InputLimitError(f"H ** {n}: the power is limited to |n| ≤ {limit} (the entries grow with n)")
+        base = Matrix(self.adjugate if n < 0 else self._matrix)
+        result = Matrix.eye(self._matrix.rows)
+        n = abs(n)
+        while n:
+            if n & 1:
+                result = Matrix(expanded(result * base))
+            n >>= 1
+            if n:
+                base = Matrix(expanded(base * base))
+        return type(self)(result)
+
+    def fixed_points(self) -> tuple[Any, ...]:
+        """The fixed points, one eigenspace per eigenvalue (:func:`pgsym.fixed_points.fixed_points`).
+
+        >>> G = Transformation([[1, 0, 2], [0, -1, 0], [0, 0, 1]])     # glide reflection: no finite fixed point
+        >>> [(f.eigenvalue, f.basis) for f in G.fixed_points()]
+        [(-1, (Point(0, 1, 0),)), (1, (Point(1, 0, 0),))]
+        """
+        from .fixed_points import fixed_points
+
+        return fixed_points(self)
+
+    def fixed_hyperplanes(self) -> tuple[Any, ...]:
+        """The fixed lines (P²) or planes (P³): :func:`~pgsym.fixed_points.fixed_lines` / ``fixed_planes``."""
+        from .fixed_points import fixed_lines, fixed_planes
+
+        return fixed_lines(self) if self.dim == 2 else fixed_planes(self)
+
     def __matmul__(self, other: Any) -> Any:
         if isinstance(other, Transformation):
             return self.compose(other)
@@ -308,3 +372,49 @@ def homography_from_points(src: list[Point], dst: list[Point]) -> Transformation
             raise DimensionError(f"a homography of P² is fixed by exactly four Point correspondences, got {pts!r}")
     A, B = _basis_map(list(src), "source"), _basis_map(list(dst), "destination")
     return Transformation(expanded(B * adjugate(A)))
+
+
+def homography_from_points_and_conics(src: list[Point], dst: list[Point], conic: Any, image: Any) -> Transformation:
+    """The homography that maps the conic ``conic`` onto ``image`` and three of its points ``src`` to ``dst``.
+
+    The points must lie on their (non-degenerate) conics. **There is exactly one solution**: a
+    homography that maps C to C' maps the tangents at ``a``, ``b`` to the tangents at ``a'``, ``b'``,
+    so it maps their meet ``P = (C a) × (C b)``, the pole of the chord ``ab``, to ``P'``. The four points
+    ``a, b, c, P`` are in general position (``P`` lies on neither the chord nor, since ``c ≠ a, b``, the
+    lines ``ac``, ``bc``; three points of a conic are never collinear), so the four pairs fix one
+    homography (:func:`homography_from_points`); it maps C onto C', because C is the only conic
+    through ``a, b, c`` that touches the lines ``Pa`` and ``Pb`` at ``a`` and ``b``.
+
+    Named errors: :class:`~pgsym.errors.NotOnConicError` for a point off its conic,
+    :class:`~pgsym.errors.DegenerateConicError` for a degenerate conic,
+    :class:`~pgsym.errors.CoincidentPointsError` for repeated points.
+
+    >>> from pgsym.conics import Conic
+    >>> C = Conic.circle(0, 0, 1)
+    >>> H = homography_from_points_and_conics([Point(1, 0), Point(0, 1), Point(-1, 0)],
+    ...                                       [Point(0, 1), Point(-1, 0), Point(0, -1)], C, C)
+    >>> H == Transformation([[0, -1, 0], [1, 0, 0], [0, 0, 1]])          # the quarter turn
+    True
+    """
+    from .conics import Conic
+    from .errors import CoincidentPointsError, DegenerateConicError, NotOnConicError
+
+    quads = []
+    for pts, C, side in ((src, conic, "source"), (dst, image, "image")):
+        if not isinstance(C, Conic):
+            raise ObjectTypeError(f"the {side} conic must be a Conic, got {type(C).__name__} {C!r}")
+        if not isinstance(pts, (list, tuple)) or len(pts) != 3 or not all(isinstance(p, Point) for p in pts):
+            raise DimensionError(f"three Points on the {side} conic are needed, got {pts!r}")
+        if C.is_degenerate:
+            raise DegenerateConicError(f"the {side} conic {C!r} is degenerate: it has no tangents at every point")
+        for i, p in enumerate(pts):
+            if not C.contains(p):
+                raise NotOnConicError(f"{side} point {i + 1}, {p!r}, does not lie on the {side} conic {C!r}")
+        for (i, p), (j, q) in combinations(enumerate(pts), 2):
+            if p == q:
+                raise CoincidentPointsError(f"{side} points {i + 1} and {j + 1} coincide ({p!r})")
+        a, b, _ = pts
+        pole = Point._from_exact(tuple(sympy.expand(e) for e in Matrix(C.polar(a).coords).cross(
+            Matrix(C.polar(b).coords))))
+        quads.append([*pts, pole])
+    return homography_from_points(quads[0], quads[1])

@@ -92,3 +92,17 @@ def affine_matrices(draw, bound: int = 5) -> list[list[int]]:
         if a * d - b * c == 0:
             a, b, c, d = 1, 0, 0, 1
     return [[a, b, draw(integers(bound))], [c, d, draw(integers(bound))], [0, 0, 1]]
+
+
+@st.composite
+def invertible_matrices(draw, n: int = 3, bound: int = 4) -> list[list[int]]:
+    """Non-singular integer n×n matrices with entries up to ``bound`` (a homography of P^(n-1))."""
+    from sympy import Matrix
+
+    m = [[draw(integers(bound)) for _ in range(n)] for _ in range(n)]
+    if Matrix(m).det() == 0:  # a shifted diagonal keeps the example instead of rejecting it
+        for i in range(n):
+            m[i][i] += 2 * bound + 1
+    if Matrix(m).det() == 0:
+        m = [[int(i == j) for j in range(n)] for i in range(n)]
+    return m

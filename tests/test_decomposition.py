@@ -7,7 +7,7 @@ import sympy
 from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
-from pgsym.decomposition import decompose
+from pgsym.decomposition import affine_decomposition, decompose
 from pgsym.errors import DecompositionError, SingularTransformationError
 
 small = st.integers(min_value=-5, max_value=5)
@@ -74,3 +74,56 @@ def test_symbolic_matrix_is_refused():
     a = sympy.Symbol("a")
     with pytest.raises(DecompositionError):
         decompose([[a, 1, 0], [0, 1, 0], [0, 0, 1]])
+
+
+# -- A = R(θ) R(−φ) D R(φ) ---------------------------------------------------------------------------------
+def test_affine_decomposition_recovers_known_factors():
+    # φ with cos 3/5, sin 4/5; D = diag(5, 1): S = R(−φ) D R(φ) = [[61, −48], [−48, 89]] / 25
+    # (61/25 = 9/5 + 16/25, −48/25 = −12/5 + 12/25, 89/25 = 16/5 + 9/25; trace 6, det 5).
+    # θ a quarter turn: A = [[0, −1], [1, 0]] S = [[48, −89], [61, −48]] / 25
+    A = sympy.Matrix([[48, -89], [61, -48]]) / 25
+    d = affine_decomposition(A)
+    assert (d.lambda1, d.lambda2) == (5, 1)
+    assert (d.cos_theta, d.sin_theta) == (0, 1)
+    # the axes are fixed up to a half turn: φ or φ + π
+    assert (d.cos_phi, d.sin_phi) in {(sympy.Rational(3, 5), sympy.Rational(4, 5)),
+                                      (sympy.Rational(-3, 5), sympy.Rational(-4, 5))}
+    assert d.verify() and d.product() == A
+
+
+def test_affine_decomposition_axis_aligned_and_reflections():
+    d = affine_decomposition([[3, 0, 1], [0, 2, 2], [0, 0, 1]])
+    assert (d.lambda1, d.lambda2, d.cos_theta, d.sin_theta, d.cos_phi, d.sin_phi) == (3, 2, 1, 0, 1, 0)
+    assert list(d.t) == [1, 2]
+    # the swap [[0, 1], [1, 0]]: AᵀA = I, det −1, so λ = (1, −1) and R(θ) = A diag(1, −1) = [[0, −1], [1, 0]]
+    d = affine_decomposition([[0, 1], [1, 0]])
+    assert (d.lambda1, d.lambda2, d.cos_theta, d.sin_theta) == (1, -1, 0, 1) and d.verify()
+    # a scaled last row is divided out: 2·(x ↦ 3x) is still the scaling by 3
+    assert affine_decomposition([[6, 0, 0], [0, 6, 0], [0, 0, 2]]).D == sympy.diag(3, 3)
+
+
+def test_affine_decomposition_errors():
+    with pytest.raises(DecompositionError):
+        affine_decomposition([[1, 0, 0], [0, 1, 0], [1, 0, 1]])       # projective
+    with pytest.raises(SingularTransformationError):
+        affine_decomposition([[1, 2], [2, 4]])
+    with pytest.raises(DecompositionError):
+        affine_decomposition([[sympy.Symbol("a"), 0], [0, 1]])
+    with pytest.raises(DecompositionError):
+        affine_decomposition([[sympy.I, 0], [0, 1]])
+    with pytest.raises(DecompositionError):
+        affine_decomposition(sympy.eye(4))
+
+
+@settings(max_examples=10, deadline=None)
+@given(small, small, small, small, small, small)
+def test_affine_decomposition_multiplies_back(a, b, c, e, tx, ty):
+    A = sympy.Matrix([[a, b], [c, e]])
+    assume(A.det() != 0)
+    d = affine_decomposition([[a, b, tx], [c, e, ty], [0, 0, 1]])
+    assert d.verify() and list(d.t) == [tx, ty]
+    # λ1 λ2 = det A, λ1 > 0, and λ2 has the sign of det A
+    from pgsym.exact import is_zero, sign
+
+    assert is_zero(sympy.radsimp(d.lambda1 * d.lambda2 - A.det()))
+    assert sign(d.lambda1) == 1 and sign(d.lambda2) == sign(A.det())

@@ -24,6 +24,7 @@ from pgsym.hierarchy import (
     EUCLIDEAN_2D,
     EUCLIDEAN_3D,
     ISOMETRY_2D,
+    ISOMETRY_3D,
     PROJECTIVE_2D,
     PROJECTIVE_3D,
     SIMILARITY_2D,
@@ -45,7 +46,7 @@ nonzero = rationals.filter(lambda f: f != 0)
 
 EXPECTED_DOF = {
     "euclidean2": 3, "isometry2": 3, "similarity2": 4, "affine2": 6, "projective2": 8,
-    "euclidean3": 6, "similarity3": 7, "affine3": 12, "projective3": 15,
+    "euclidean3": 6, "isometry3": 6, "similarity3": 7, "affine3": 12, "projective3": 15,
 }
 
 
@@ -194,8 +195,31 @@ def test_classify_3d(a, b, c, k):
     assert classify(SIMILARITY_3D.element(k, a, b, c, 0, 0, 0)) is SIMILARITY_3D
 
 
+@settings(max_examples=15, deadline=None)
+@given(rationals, rationals, rationals, nonzero, st.integers(1, 5))
+def test_classify_improper_3d(a, b, c, k, scale):
+    # R diag(1, 1, −1): orthogonal with det −1, so an isometry but no rigid motion; k times it a similarity
+    assume(abs(k) != 1)
+    M = ISOMETRY_3D.element(a, b, c, 1, 2, 3, component=1)
+    assert Transformation(M.matrix[:3, :3]).det < 0
+    assert classify(M) is ISOMETRY_3D and classify(Transformation(scale * M.matrix)) is ISOMETRY_3D
+    assert classify(SIMILARITY_3D.element(k, a, b, c, 0, 0, 0, component=1)) is SIMILARITY_3D
+    # the float classifier agrees
+    import numpy as np
+
+    assert classify(np.array(M.matrix.tolist(), dtype=float)) is ISOMETRY_3D
+
+
 def test_classify_3d_by_hand():
-    assert classify(sympy.diag(1, 1, -1, 1)) is AFFINE_3D  # a reflection is no rigid motion
+    # the mirror z = 0: AᵀA = I and det A = −1, an improper isometry, neither rigid motion nor merely affine
+    assert classify(sympy.diag(1, 1, -1, 1)) is ISOMETRY_3D
+    # the point reflection x ↦ −x (det −1 in 3D) with a translation; twice it (scale 2) is a similarity
+    assert classify([[-1, 0, 0, 5], [0, -1, 0, 0], [0, 0, -1, 0], [0, 0, 0, 1]]) is ISOMETRY_3D
+    assert classify([[-2, 0, 0, 5], [0, -2, 0, 0], [0, 0, -2, 0], [0, 0, 0, 1]]) is SIMILARITY_3D
+    # an improper isometry written with w = −1: A/w = diag(−1, −1, 1), det +1 — a half turn, a rigid motion
+    assert classify(sympy.diag(1, 1, -1, -1)) is EUCLIDEAN_3D
+    assert ISOMETRY_3D.contains(sympy.diag(1, 1, -1, 1)) and not EUCLIDEAN_3D.contains(sympy.diag(1, 1, -1, 1))
+    assert SIMILARITY_3D.contains(sympy.diag(1, 1, -1, 1))
     assert classify([[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 1, 1]]) is PROJECTIVE_3D
     assert classify(sympy.diag(2, 1, 1, 1)) is AFFINE_3D
 

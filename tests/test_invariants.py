@@ -170,7 +170,9 @@ def test_summary_table_2d():
 def test_summary_table_3d():
     rows = summary_table(3)
     assert [(r["class"], r["dof"]) for r in rows] == [("Projective", 15), ("Affine", 12), ("Similarity", 7),
-                                                     ("Euclidean (rigid motion)", 6)]
+                                                     ("Isometry", 6), ("Euclidean (rigid motion)", 6)]
+    # improper isometries keep lengths; only the rigid motions keep the signed volume
+    assert rows[3]["invariants"] == ["length"] and rows[4]["invariants"] == ["volume"]
     assert "the plane at infinity π∞" in rows[1]["invariants"]
 
 

@@ -85,3 +85,13 @@ def test_importing_the_classifier_loads_no_sympy_and_exact_classification_loads_
         "print('numpy' in sys.modules)\n"
     )
     assert subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout == "False\n"
+
+
+def test_improper_maps_of_space_agree_with_the_exact_classifier():
+    import sympy
+
+    # mirror z = 0 (isometry), a point reflection scaled by 3 (similarity), the mirror with w = −1 (a half turn)
+    for M, key in ((np.diag([1.0, 1, -1, 1]), "isometry3"), (np.diag([-3.0, -3, -3, 1]), "similarity3"),
+                   (np.diag([1.0, 1, -1, -1]), "euclidean3")):
+        assert classify_matrix(M) == key
+        assert classify(sympy.Matrix(M.astype(int).tolist())).key == key

@@ -10,7 +10,7 @@ import pytest
 import sympy
 from hypothesis import assume, given, settings
 from hypothesis import strategies as st
-from strategies import homogeneous_triples, lines, points
+from strategies import homogeneous_triples, invertible_matrices, lines, points
 
 from pgsym.errors import DimensionError, ObjectTypeError, PgsymError, SingularTransformationError
 from pgsym.projective_plane import Line, Point, collinear, concurrent, cross, incident, join, meet
@@ -353,7 +353,7 @@ def test_every_kind_declares_its_space():
 
     spaces = {kind: getattr(cls, "ambient_dim", None) for kind, cls in object_classes().items()}
     assert spaces == {"point1": 1, "point": 2, "line": 2, "conic": 2, "dual_conic": 2, "point3": 3,
-                      "plane": 3, "line3": 3, "quadric": 3, "transformation": None}
+                      "plane": 3, "line3": 3, "quadric": 3, "dual_quadric": 3, "transformation": None}
 
 
 def test_a_transformation_names_what_it_acts_on():
@@ -403,3 +403,111 @@ def test_the_one_coercion_rejects_the_same_bad_inputs_everywhere(name, bad, erro
     with pytest.raises(expected) as info:
         build(bad)
     assert isinstance(info.value, PgsymError)
+
+
+# -- powers --------------------------------------------------------------------------------------------
+def test_powers_by_hand():
+    from pgsym.errors import InputLimitError
+
+    # a translation by (1, 2) raised to 5 is the translation by (5, 10); to −2 the translation by (−2, −4)
+    T = Transformation([[1, 0, 1], [0, 1, 2], [0, 0, 1]])
+    assert (T**5).matrix == sympy.Matrix([[1, 0, 5], [0, 1, 10], [0, 0, 1]])
+    assert T**-2 == Transformation([[1, 0, -2], [0, 1, -4], [0, 0, 1]])
+    assert T**0 == Transformation.identity(2) and (T**0).dim == 2
+    # a quarter turn has order 4; a 3D half turn about z squares to the identity
+    R = Transformation([[0, -1, 0], [1, 0, 0], [0, 0, 1]])
+    assert R**4 == Transformation.identity() and R**2 == Transformation([[-1, 0, 0], [0, -1, 0], [0, 0, 1]])
+    assert Transformation(sympy.diag(-1, -1, 1, 1)) ** 2 == Transformation.identity(3)
+    for bad in (1.5, sympy.Rational(1, 2), True, "2"):
+        with pytest.raises(ObjectTypeError):
+            T**bad
+    with pytest.raises(InputLimitError):
+        T ** (10**9)
+    t = sympy.Symbol("t")
+    with pytest.raises(InputLimitError):
+        Transformation([[1, t, 0], [0, 1, 0], [0, 0, 1]]) ** 1000
+    # symbolic shear: (x, y) ↦ (x + t y, y) raised to 3 is the shear by 3t
+    assert Transformation([[1, t, 0], [0, 1, 0], [0, 0, 1]]) ** 3 == Transformation([[1, 3 * t, 0], [0, 1, 0],
+                                                                                     [0, 0, 1]])
+
+
+@settings(max_examples=25, deadline=None)
+@given(invertible_matrices(3, 3), st.integers(-4, 4), st.integers(-4, 4))
+def test_powers_add_exponents(m, a, b):
+    H = Transformation(m)
+    assert (H**a) @ (H**b) == H ** (a + b)
+    assert H ** (-a) == (H**a).inverse()
+
+
+@settings(max_examples=10, deadline=None)
+@given(invertible_matrices(4, 2), st.integers(-3, 3))
+def test_powers_in_space(m, a):
+    H = Transformation(m)
+    assert (H**a) @ H == H ** (a + 1)
+
+
+# -- three points and a conic ----------------------------------------------------------------------------
+CIRCLE_25 = [(5, 0), (0, 5), (-5, 0), (0, -5), (3, 4), (4, 3), (-3, 4), (-4, -3), (3, -4), (-4, 3)]
+
+
+def test_homography_from_points_and_conics_by_hand():
+    from pgsym.conics import Conic
+    from pgsym.transformations import homography_from_points_and_conics as hpc
+
+    # the unit circle to itself, (1, 0), (0, 1), (−1, 0) to (0, 1), (−1, 0), (0, −1): the quarter turn
+    C = Conic.circle(0, 0, 1)
+    H = hpc([Point(1, 0), Point(0, 1), Point(-1, 0)], [Point(0, 1), Point(-1, 0), Point(0, -1)], C, C)
+    assert H == Transformation([[0, -1, 0], [1, 0, 0], [0, 0, 1]])
+    # (1, 0) ↔ (0, 1) and (−1, 0) ↦ (0, −1): the reflection in the line y = x
+    H = hpc([Point(1, 0), Point(0, 1), Point(-1, 0)], [Point(0, 1), Point(1, 0), Point(0, -1)], C, C)
+    assert H == Transformation([[0, 1, 0], [1, 0, 0], [0, 0, 1]])
+    # the unit circle onto the parabola X² = YW with (0, −1), (0, 1), (1, 0) ↦ (0, 0), (0, 1, 0), (1, 1):
+    # (x, y, w) ↦ (x, y + w, w − y) does it, since x² − (y + w)(w − y) = x² + y² − w², and
+    # (0, −1, 1) ↦ (0, 0, 2), (0, 1, 1) ↦ (0, 2, 0), (1, 0, 1) ↦ (1, 1, 1); being unique, it is the answer
+    P = Conic.from_coefficients(1, 0, 0, 0, -1, 0)
+    src, dst = [Point(0, -1), Point(0, 1), Point(1, 0)], [Point(0, 0), Point(0, 1, 0), Point(1, 1)]
+    assert hpc(src, dst, C, P) == Transformation([[1, 0, 0], [0, 1, 1], [0, -1, 1]])
+
+
+def test_homography_from_points_and_conics_with_surds():
+    from pgsym.conics import Conic
+    from pgsym.transformations import homography_from_points_and_conics as hpc
+
+    r = sympy.sqrt(2)
+    C = Conic.circle(0, 0, r)  # x² + y² = 2 through (1, 1), (−1, 1), (√2, 0)
+    src = [Point(1, 1), Point(-1, 1), Point(r, 0)]
+    G = Transformation([[1, 2, 0], [0, 1, 1], [1, 0, 2]])
+    H = hpc(src, [G(p) for p in src], C, G(C))
+    assert H == G
+
+
+@settings(max_examples=15, deadline=None)
+@given(invertible_matrices(3, 3), st.lists(st.sampled_from(CIRCLE_25), min_size=3, max_size=3, unique=True))
+def test_homography_from_points_and_conics_is_the_unique_one(m, pts):
+    from pgsym.conics import Conic
+    from pgsym.transformations import homography_from_points_and_conics as hpc
+
+    G, C = Transformation(m), Conic.circle(0, 0, 5)
+    src = [Point(*p) for p in pts]
+    assert hpc(src, [G(p) for p in src], C, G(C)) == G
+
+
+def test_homography_from_points_and_conics_errors():
+    from pgsym.conics import Conic
+    from pgsym.errors import CoincidentPointsError, DegenerateConicError, NotOnConicError
+    from pgsym.transformations import homography_from_points_and_conics as hpc
+
+    C = Conic.circle(0, 0, 1)
+    on = [Point(1, 0), Point(0, 1), Point(-1, 0)]
+    with pytest.raises(NotOnConicError):
+        hpc([Point(1, 0), Point(0, 1), Point(2, 0)], on, C, C)
+    with pytest.raises(CoincidentPointsError):
+        hpc([Point(1, 0), Point(1, 0), Point(-1, 0)], on, C, C)
+    with pytest.raises(DegenerateConicError):
+        hpc(on, on, C, Conic.from_coefficients(1, 0, -1, 0, 0, 0))
+    with pytest.raises(DimensionError):
+        hpc(on[:2], on[:2], C, C)
+    with pytest.raises(ObjectTypeError):
+        hpc(on, on, C, "circle")
+    with pytest.raises(DimensionError):
+        hpc(5, on, C, C)

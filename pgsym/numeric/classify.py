@@ -3,7 +3,7 @@
 The numeric half of :func:`pgsym.hierarchy.classify`, which calls :func:`classify_matrix` for
 float input (NumPy arrays, lists of floats) or whenever a tolerance is given. The answer is
 the key of the smallest class (``"euclidean2"``, ``"isometry2"``, ``"similarity2"``,
-``"affine2"``, ``"projective2"``; ``"euclidean3"``, ``"similarity3"``, ``"affine3"``,
+``"affine2"``, ``"projective2"``; ``"euclidean3"``, ``"isometry3"``, ``"similarity3"``, ``"affine3"``,
 ``"projective3"``), which :func:`pgsym.hierarchy.class_by_key` turns into the class; this
 module imports neither SymPy nor the exact core.
 
@@ -35,7 +35,7 @@ __all__ = ["classify_matrix"]
 
 _KEYS = {
     3: ("euclidean2", "isometry2", "similarity2", "affine2", "projective2"),
-    4: ("euclidean3", "similarity3", "affine3", "projective3"),
+    4: ("euclidean3", "isometry3", "similarity3", "affine3", "projective3"),
 }
 
 
@@ -49,6 +49,8 @@ def classify_matrix(H: Any, tol: float | None = None) -> str:
 
     >>> classify_matrix(np.diag([1.0, -1, 1]))                       # a reflection
     'isometry2'
+    >>> classify_matrix(np.diag([1.0, 1, -1, 1]))                    # a mirror of space
+    'isometry3'
     >>> classify_matrix([[1.0, 0, 0], [0, 1, 0], [1e-3, 0, 1]])     # a projective row
     'projective2'
     """
@@ -86,10 +88,6 @@ def classify_matrix(H: Any, tol: float | None = None) -> str:
     # the similarity ratio r = √g α / |w|; an isometry when |r² − 1| ≤ tol (computed in logarithms)
     log_r2 = math.log(g) + 2 * (math.log(alpha) - math.log(omega))
     isometry = abs(log_r2) < 1 and abs(math.expm1(log_r2)) <= tol
-    if n == 3:
-        if not isometry:
-            return "similarity2"
-        return "euclidean2" if proper else "isometry2"
-    if not proper:
-        return "affine3"
-    return "euclidean3" if isometry else "similarity3"
+    if not isometry:
+        return keys[2]
+    return keys[0] if proper else keys[1]
