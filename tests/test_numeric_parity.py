@@ -233,6 +233,11 @@ def test_tangent_planes_of_one_sphere_at_many_points():
     t = np.linspace(0, 6, 1001)
     on = np.c_[5 * np.cos(t), 5 * np.sin(t), np.zeros_like(t), np.ones_like(t)]
     assert np.allclose(pn.tangent_plane(sphere, on)[:, :2], on[:, :2])
+    # in any units: the same points times 1e200 or 1e-200 (|x|² over- or underflows; the test is scale-free)
+    for s in (1e200, 1e-200):
+        assert np.allclose(pn.tangent_plane(sphere, on * s) / s, pn.tangent_plane(sphere, on))
+        with pytest.raises(NotOnQuadricError):
+            pn.tangent_plane(sphere, np.array([[3.0, 3, 0, 1]]) * s)
 
 
 # -- harmonic conjugates -------------------------------------------------------------------------------

@@ -119,8 +119,10 @@ def _harmonic_kernel_p1(ins: list[np.ndarray], o: np.ndarray, ws: list[np.ndarra
         np.multiply(ac, b[..., i], out=oi)
         np.multiply(bc, a[..., i], out=t)
         np.add(oi, t, out=oi)
-    coincident = (ab == 0) | (ac == 0) | (bc == 0)
-    if coincident.any():  # two equal points: no conjugate (the formula would give A or B)
+    np.multiply(ab, ac, out=t)
+    np.multiply(t, bc, out=t)
+    if not t.all():  # a zero bracket (or an underflow, sorted out here): two equal points have no conjugate
+        coincident = (ab == 0) | (ac == 0) | (bc == 0)
         o[coincident] = 0
 
 

@@ -31,7 +31,17 @@ from typing import Any
 import numpy as np
 
 from ..errors import DegenerateConicError, DimensionError, NotOnConicError, NotOnQuadricError
-from ._arrays import DEGENERATE, as_float_array, check_option, construction, rowwise
+from ._arrays import (
+    DEGENERATE,
+    NONFINITE,
+    as_float_array,
+    block_finite,
+    check_option,
+    construction,
+    degenerate_result,
+    nonfinite_result,
+    rowwise,
+)
 from .tolerances import INCIDENT_RTOL
 
 __all__ = ["form_value", "polar", "tangent_at", "tangent_plane"]
@@ -57,6 +67,28 @@ def _inputs(forms: Any, points: Any, axis: int, function: str, sizes: tuple[int,
             f"{function}: with axis={axis} the forms must be component-major ({k}, {k}, ...), got shape {q.shape}"
         )
     return [(q.reshape(k * k, *q.shape[2:]), k * k, "forms"), (x, k, "points")], k
+
+
+def _one_form(forms: Any, points: Any, axis: int, function: str) -> tuple[np.ndarray, np.ndarray] | None:
+    """``(C, x)`` when there is one form and a C-contiguous ``(N, k)`` batch of points: one BLAS product serves."""
+    if axis != -1 or not isinstance(points, np.ndarray) or points.ndim != 2 or not points.flags.c_contiguous:
+        return None
+    q = as_float_array(forms, "forms", function)
+    k = points.shape[1]
+    if q.shape != (k, k) or points.dtype != np.float64 or k not in (3, 4):
+        return None
+    return q, points
+
+
+def _checked(result: np.ndarray, function: str, nonfinite: str, inputs: list[np.ndarray]) -> Any:
+    """The policy on a result computed in one call: one dot product decides the common, finite case."""
+    check_option(nonfinite, NONFINITE, "nonfinite", function)
+    with np.errstate(over="ignore"):  # squares beyond 1e308 are a false alarm that the full test clears
+        finite_sum = block_finite(result)
+    if finite_sum:
+        return (result, np.ones(result.shape[0], bool)) if nonfinite == "mask" else result
+    finite = np.isfinite(result) if result.ndim == 1 else np.isfinite(result).all(axis=-1)
+    return nonfinite_result(result, finite, nonfinite, function, [np.atleast_2d(a) for a in inputs])
 
 
 def _single(q: np.ndarray) -> bool:
@@ -111,6 +143,12 @@ def form_value(forms: Any, points: Any, *, out: np.ndarray | None = None, axis: 
     >>> form_value(np.diag([1.0, 1, 1, -4]), [[2.0, 0, 0, 1], [0, 0, 0, 1]])   # the sphere of radius 2
     array([ 0., -4.])
     """
+    one = _one_form(forms, points, axis, "form_value") if out is None else None
+    if one is not None:
+        q, x = one
+        with np.errstate(over="ignore", invalid="ignore"):  # reported by name in _checked
+            value = np.einsum("ij,ij->i", x @ q, x)
+        return _checked(value, "form_value", nonfinite, [q.reshape(-1), x])
     inputs, k = _inputs(forms, points, axis, "form_value", (3, 4))
     return rowwise(_value_kernel(k), "form_value", inputs, None, out, axis, 2, nonfinite)
 
@@ -132,9 +170,22 @@ def polar(
            [ 1.,  0.,  0.]]), array([False,  True]))
     """
     check_option(degenerate, DEGENERATE, "degenerate", "polar")
-    inputs, k = _inputs(forms, points, axis, "polar", (3, 4))
     what = "are vertices of their degenerate form (C x = 0), which have no polar"
-    return construction(_polar_kernel(k), "polar", inputs, k, out, axis, 1, nonfinite, degenerate,
+    return _polars("polar", forms, points, out, axis, nonfinite, degenerate, what)
+
+
+def _polars(function: str, forms: Any, points: Any, out: Any, axis: int, nonfinite: str, degenerate: str,
+            what: str, sizes: tuple[int, ...] = (3, 4)) -> Any:
+    """``C x`` under both policies: one BLAS product for one form and a plain batch, else block by block."""
+    one = _one_form(forms, points, axis, function) if out is None else None
+    if one is not None and one[1].shape[1] in sizes:
+        q, x = one
+        with np.errstate(over="ignore", invalid="ignore"):  # reported by name in _checked
+            product = x @ q.T
+        value = _checked(product, function, nonfinite, [q.reshape(-1), x])
+        return degenerate_result(value, degenerate, -1, function, DegenerateConicError, what)
+    inputs, k = _inputs(forms, points, axis, function, sizes)
+    return construction(_polar_kernel(k), function, inputs, k, out, axis, 1, nonfinite, degenerate,
                         DegenerateConicError, what)
 
 
@@ -143,19 +194,12 @@ def _tangent(
     degenerate: str, rtol: float,
 ) -> Any:
     check_option(degenerate, DEGENERATE, "degenerate", function)
-    inputs, size = _inputs(forms, points, axis, function, (k,))
-    value = construction(_polar_kernel(size), function, inputs, k, out, axis, 1, nonfinite, degenerate,
-                         DegenerateConicError, "are vertices of their degenerate form (C x = 0), with no tangent")
+    what = "are vertices of their degenerate form (C x = 0), with no tangent"
+    value = _polars(function, forms, points, out, axis, nonfinite, degenerate, what, (k,))
     values, ok = value if isinstance(value, tuple) else (value, None)
     planes = np.moveaxis(values, axis, -1)
-    x = np.broadcast_to(np.moveaxis(inputs[1][0], axis, -1), planes.shape)
-    # x on the form ⇔ x lies on its own polar: |x · Cx| ≤ rtol |x| |Cx|, each scaled by a power of two first
-    with np.errstate(invalid="ignore"):
-        xs = x * np.ldexp(1.0, -np.frexp(np.max(np.abs(x), axis=-1, keepdims=True))[1])
-        ps = planes * np.ldexp(1.0, -np.frexp(np.nan_to_num(np.max(np.abs(planes), axis=-1, keepdims=True)))[1])
-        dot = np.abs(np.einsum("...i,...i->...", xs, ps))
-        bound = rtol * np.sqrt(np.einsum("...i,...i->...", xs, xs) * np.einsum("...i,...i->...", ps, ps))
-        off = dot > bound  # NaN rows (masked already) compare False
+    x = np.broadcast_to(np.moveaxis(as_float_array(points, "points", function), axis, -1), planes.shape)
+    off = _off(x, planes, rtol)
     if off.any():
         if degenerate == "raise":
             first = tuple(int(i) for i in np.argwhere(off)[0]) if off.ndim else ()
@@ -169,6 +213,29 @@ def _tangent(
         planes[off] = np.nan
         ok = ~off if ok is None else ok & ~off
     return (values, np.asarray(ok)) if ok is not None else values
+
+
+def _off(x: np.ndarray, planes: np.ndarray, rtol: float) -> np.ndarray:
+    """Rows where ``x`` is not on its own polar: ``(x · Cx)² > rtol² |x|² |Cx|²`` (so x is off the form).
+
+    Squares beyond float64's safe range (overflow, underflow) are recomputed on the rows scaled by powers of two.
+    NaN rows (masked already) compare False.
+    """
+    with np.errstate(invalid="ignore", over="ignore", under="ignore"):
+        dot = np.einsum("...i,...i->...", x, planes)
+        xx = np.einsum("...i,...i->...", x, x)
+        pp = np.einsum("...i,...i->...", planes, planes)
+        off = dot * dot > (rtol * rtol) * (xx * pp)
+        unsafe = ~((xx > 2.0**-480) & (xx < 2.0**480) & (pp > 2.0**-480) & (pp < 2.0**480)) & ~np.isnan(pp)
+        if unsafe.any():
+            xs, ps = x[unsafe], planes[unsafe]
+            xs = xs * np.ldexp(1.0, -np.frexp(np.max(np.abs(xs), axis=-1, keepdims=True))[1])
+            big = np.max(np.abs(ps), axis=-1, keepdims=True)
+            ps = ps * np.ldexp(1.0, -np.frexp(np.where(big > 0, big, 1.0))[1])
+            d = np.einsum("...i,...i->...", xs, ps)
+            norms = np.einsum("...i,...i->...", xs, xs) * np.einsum("...i,...i->...", ps, ps)
+            off[unsafe] = d * d > (rtol * rtol) * norms
+    return off
 
 
 def tangent_at(
