@@ -4,7 +4,8 @@ Each case times a :mod:`pgsym.numeric` kernel against the obvious NumPy code for
 where geometer has the construction, against geometer (a benchmark-only dependency, pinned in
 requirements.txt). The obvious NumPy code follows the textbook: Plücker matrices as ``(N, 4, 4)`` stacks
 multiplied with ``@`` (``X = L π``, ``π = L* X``, ``L M* = X πᵀ``), one ``X @ Qᵀ`` for the polars of one
-quadric, ``einsum`` for ``xᵀ Q x``, ``np.cross`` for the P² harmonic conjugate and for complex joins.
+quadric (bare, and — case ``..._checked`` — with the kernel's checks: finite, no vertex, on the quadric),
+``einsum`` for ``xᵀ Q x``, ``np.cross`` for the P² harmonic conjugate and for complex joins.
 
 Cases: ``intersect_plane_1e6``, ``plane_through_point_1e6``, ``meet_lines_1e6``, ``plane_through_lines_1e6``,
 ``tangent_plane_1e6_points_one_sphere``, ``polar_1e6_points_one_quadric``, ``form_value_1e6_points_one_quadric``,
@@ -87,6 +88,20 @@ def np_harmonic_p2(a: np.ndarray, b: np.ndarray, c: np.ndarray) -> np.ndarray:
     return alpha[:, None] * a - beta[:, None] * b
 
 
+def np_tangent_checked(Q: np.ndarray, x: np.ndarray, rtol: float = 1e-10) -> np.ndarray:
+    """The obvious NumPy code with the kernel's contract: finite planes, no vertex, every point on the quadric."""
+    planes = x @ Q.T
+    if not np.isfinite(planes).all():
+        raise ValueError("non-finite")
+    pp = (planes**2).sum(axis=1)
+    if not pp.all():
+        raise ValueError("a vertex")
+    dot = (x * planes).sum(axis=1)
+    if (dot**2 > rtol**2 * (x**2).sum(axis=1) * pp).any():
+        raise ValueError("off the quadric")
+    return planes
+
+
 def proportional_rows(u: np.ndarray, v: np.ndarray) -> bool:
     """Every row of u is a multiple of the row of v (checked on the normalised rows, sign-free)."""
     un = u / np.linalg.norm(u, axis=1, keepdims=True)
@@ -153,6 +168,8 @@ def main() -> None:
         lambda: geometer.join(gL, gM), "join(LineCollection, LineCollection)")
     run("tangent_plane_1e6_points_one_sphere", lambda: pn.tangent_plane(sphere, on_sphere),
         lambda: on_sphere @ sphere.T, lambda: geo_sphere.tangent(at=geo_on), "Quadric.tangent(at=PointCollection)")
+    run("tangent_plane_1e6_points_one_sphere_checked", lambda: pn.tangent_plane(sphere, on_sphere),
+        lambda: np_tangent_checked(sphere, on_sphere))
     run("polar_1e6_points_one_quadric", lambda: pn.polar(Q, on_sphere), lambda: on_sphere @ Q.T)
     run("form_value_1e6_points_one_quadric", lambda: pn.form_value(Q, on_sphere),
         lambda: np.einsum("ni,ij,nj->n", on_sphere, Q, on_sphere))

@@ -321,6 +321,12 @@ def degenerate_result(
         return value
     result, finite = value if isinstance(value, tuple) else (value, None)
     components = np.moveaxis(result, axis, -1)
+    if degenerate == "raise" and components.dtype.kind == "f" and components.size:
+        # one sum of squares a row (faster than any()): all positive or NaN proves no row zero; an underflow
+        # to 0 of a tiny row only sends the call to the exact test below
+        with np.errstate(under="ignore", over="ignore", invalid="ignore"):
+            if np.einsum("...i,...i->...", components, components).all():
+                return value
     zero = ~components.any(axis=-1)  # a NaN row (masked as non-finite) is not zero
     if degenerate == "raise":
         if zero.any():

@@ -226,8 +226,10 @@ def _off(x: np.ndarray, planes: np.ndarray, rtol: float) -> np.ndarray:
         xx = np.einsum("...i,...i->...", x, x)
         pp = np.einsum("...i,...i->...", planes, planes)
         off = dot * dot > (rtol * rtol) * (xx * pp)
-        unsafe = ~((xx > 2.0**-480) & (xx < 2.0**480) & (pp > 2.0**-480) & (pp < 2.0**480)) & ~np.isnan(pp)
-        if unsafe.any():
+        lo, hi = 2.0**-480, 2.0**480
+        safe = xx.size == 0 or (xx.min() > lo and xx.max() < hi and pp.min() > lo and pp.max() < hi)  # NaN: not safe
+        unsafe = None if safe else ~((xx > lo) & (xx < hi) & (pp > lo) & (pp < hi)) & ~np.isnan(pp)
+        if unsafe is not None and unsafe.any():
             xs, ps = x[unsafe], planes[unsafe]
             xs = xs * np.ldexp(1.0, -np.frexp(np.max(np.abs(xs), axis=-1, keepdims=True))[1])
             big = np.max(np.abs(ps), axis=-1, keepdims=True)
