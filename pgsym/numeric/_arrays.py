@@ -37,6 +37,7 @@ __all__ = [
     "block_finite",
     "construction",
     "degenerate_result",
+    "no_zero_row",
     "nonfinite_result",
     "rowwise",
 ]
@@ -81,6 +82,25 @@ def block_finite(block: np.ndarray) -> bool:
         if not math.isfinite(abs(dot(c, c))):
             return False
     return True
+
+
+_WEIGHTS = np.sqrt(np.array([2.0, 3, 5, 7, 11, 13]))  # rationally independent: only a zero row can miss all
+
+
+def no_zero_row(rows: np.ndarray) -> bool:
+    """True when no row (last axis) of ``rows`` is the zero vector; False may be a false alarm.
+
+    One matrix–vector product with the weights ``√2, √3, √5, …``: a zero row gives 0, a nonzero row gives 0
+    only by accident (the weights are rationally independent, so never for integer rows) or by underflow,
+    and then the caller's exact test decides. Several times faster than ``rows.any(axis=-1)``.
+
+    >>> no_zero_row(np.array([[1.0, -1, 0], [0, 0, 2]])), no_zero_row(np.array([[1.0, 2], [0, 0]]))
+    (True, False)
+    """
+    if rows.size == 0:
+        return True
+    with np.errstate(under="ignore", over="ignore", invalid="ignore"):
+        return bool(np.dot(rows, _WEIGHTS[: rows.shape[-1]]).all())
 
 
 def check_option(value: str, allowed: Sequence[str], name: str, function: str) -> None:
@@ -321,12 +341,8 @@ def degenerate_result(
         return value
     result, finite = value if isinstance(value, tuple) else (value, None)
     components = np.moveaxis(result, axis, -1)
-    if degenerate == "raise" and components.dtype.kind == "f" and components.size:
-        # one sum of squares a row (faster than any()): all positive or NaN proves no row zero; an underflow
-        # to 0 of a tiny row only sends the call to the exact test below
-        with np.errstate(under="ignore", over="ignore", invalid="ignore"):
-            if np.einsum("...i,...i->...", components, components).all():
-                return value
+    if degenerate == "raise" and components.shape[-1] <= len(_WEIGHTS) and no_zero_row(components):
+        return value  # no row is zero (a false alarm of the quick test goes on to the exact one below)
     zero = ~components.any(axis=-1)  # a NaN row (masked as non-finite) is not zero
     if degenerate == "raise":
         if zero.any():

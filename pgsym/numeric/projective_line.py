@@ -22,7 +22,15 @@ from typing import Any
 import numpy as np
 
 from ..errors import DimensionError, UndefinedCrossRatioError
-from ._arrays import DEGENERATE, as_numeric_arrays, check_option, construction, nonfinite_result, rowwise
+from ._arrays import (
+    DEGENERATE,
+    as_numeric_arrays,
+    check_option,
+    degenerate_result,
+    no_zero_row,
+    nonfinite_result,
+    rowwise,
+)
 from .tolerances import INCIDENT_RTOL
 
 __all__ = ["bracket", "cross_ratio", "cross_ratio_homogeneous", "harmonic_conjugate"]
@@ -201,8 +209,17 @@ def harmonic_conjugate(
             f"got an array of shape {first.shape}"
         )
     k = first.shape[axis]
-    kernel, n_scratch = (_harmonic_kernel_p1, 4) if k == 2 else (_harmonic_kernel_p2(rtol), 10)
+    formula, n_scratch = (_harmonic_kernel_p1, 4) if k == 2 else (_harmonic_kernel_p2(rtol), 10)
+    zero_seen = []
+
+    def kernel(ins: list[np.ndarray], o: np.ndarray, ws: list[np.ndarray]) -> None:
+        formula(ins, o, ws)
+        if not zero_seen and not no_zero_row(o):  # in cache: a zero row, or a false alarm
+            zero_seen.append(True)
+
     what = "are not three distinct (and, in P², collinear) points, which have no harmonic conjugate"
     inputs = [(a, k, "a"), (b, k, "b"), (c, k, "c")]
-    return construction(kernel, "harmonic_conjugate", inputs, k, out, axis, n_scratch, nonfinite, degenerate,
-                        UndefinedCrossRatioError, what, complex_ok=True)
+    value = rowwise(kernel, "harmonic_conjugate", inputs, k, out, axis, n_scratch, nonfinite, complex_ok=True)
+    if not zero_seen and degenerate == "raise":  # no row can be zero: the policy has nothing to do
+        return value
+    return degenerate_result(value, degenerate, axis, "harmonic_conjugate", UndefinedCrossRatioError, what)
