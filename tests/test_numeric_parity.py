@@ -34,7 +34,7 @@ from pgsym.projective_line import Point1, cross_ratio, harmonic_conjugate
 from pgsym.projective_plane import join
 from pgsym.quadrics import Quadric
 from pgsym.space import Point3, plane_through
-from tests.strategies import homogeneous_vectors, integers, planes, points, points3
+from tests.strategies import forms_through_a_point, lines3, planes, point1s, points, points3, symmetric_forms
 
 SETTINGS = settings(max_examples=40, deadline=None)
 
@@ -47,10 +47,6 @@ def proportional(u, v) -> bool:
     """u ∼ v: both nonzero and of rank one together (exact for the small integers of these tests)."""
     u, v = np.asarray(u, dtype=complex), np.asarray(v, dtype=complex)
     return bool(np.abs(u).max() > 0 and np.abs(v).max() > 0 and np.linalg.matrix_rank(np.stack([u, v])) == 1)
-
-
-def lines3():
-    return st.tuples(points3(), points3()).filter(lambda ab: ab[0] != ab[1]).map(lambda ab: Line3.join(*ab))
 
 
 # -- lines of space ------------------------------------------------------------------------------------
@@ -147,22 +143,8 @@ def test_meet_of_lines_by_hand():
 # -- conics and quadrics -------------------------------------------------------------------------------
 
 
-def symmetric(k: int):
-    entries = st.lists(integers(5), min_size=k * (k + 1) // 2, max_size=k * (k + 1) // 2)
-
-    def build(values):
-        M = sympy.zeros(k, k)
-        it = iter(values)
-        for i in range(k):
-            for j in range(i, k):
-                M[i, j] = M[j, i] = next(it)
-        return M
-
-    return entries.map(build).filter(lambda M: M.det() != 0)
-
-
 @SETTINGS
-@given(symmetric(3), st.lists(points(), min_size=1, max_size=5))
+@given(symmetric_forms(3), st.lists(points(), min_size=1, max_size=5))
 def test_conic_value_and_polar_are_the_exact_ones(M, pts):
     C = Conic(M)
     X = np.array([floats(p) for p in pts])
@@ -174,7 +156,7 @@ def test_conic_value_and_polar_are_the_exact_ones(M, pts):
 
 
 @SETTINGS
-@given(symmetric(4), st.lists(points3(), min_size=1, max_size=5))
+@given(symmetric_forms(4), st.lists(points3(), min_size=1, max_size=5))
 def test_quadric_value_and_polar_are_the_exact_ones(M, pts):
     Q = Quadric(M)
     X = np.array([floats(p) for p in pts])
@@ -186,21 +168,8 @@ def test_quadric_value_and_polar_are_the_exact_ones(M, pts):
     assert np.array_equal(pn.polar(np.moveaxis(np.stack([Qf] * len(pts)), 0, -1), X.T, axis=0).T, pn.polar(Qf, X))
 
 
-@st.composite
-def quadric_through(draw, k: int):
-    """A symmetric integer form with a given integer point X on it: Q' = X_j² Q − (XᵀQX) e_j e_jᵀ."""
-    M = draw(symmetric(k))
-    X = draw(homogeneous_vectors(k, True, integers(6)))
-    j = max(range(k), key=lambda i: abs(X[i]))
-    v = sympy.Matrix(X)
-    value = (v.T * M * v)[0]
-    Q = X[j] ** 2 * M
-    Q[j, j] -= value  # Xᵀ Q' X = X_j² XᵀQX − XᵀQX X_j² = 0
-    return Q, X
-
-
 @SETTINGS
-@given(st.lists(quadric_through(4), min_size=1, max_size=4))
+@given(st.lists(forms_through_a_point(4), min_size=1, max_size=4))
 def test_tangent_planes_of_a_batch_of_quadrics(rows):
     Q = np.array([np.array(M.tolist(), dtype=float) for M, _ in rows])
     X = np.array([x for _, x in rows], dtype=float)
@@ -241,10 +210,6 @@ def test_tangent_planes_of_one_sphere_at_many_points():
 
 
 # -- harmonic conjugates -------------------------------------------------------------------------------
-
-
-def point1s():
-    return homogeneous_vectors(2, True, integers(9)).map(lambda t: Point1(*t))
 
 
 @SETTINGS
