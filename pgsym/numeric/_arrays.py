@@ -37,6 +37,7 @@ __all__ = [
     "block_finite",
     "construction",
     "degenerate_result",
+    "finite_and_no_zero_row",
     "no_zero_row",
     "nonfinite_result",
     "rowwise",
@@ -101,6 +102,23 @@ def no_zero_row(rows: np.ndarray) -> bool:
         return True
     with np.errstate(under="ignore", over="ignore", invalid="ignore"):
         return bool(np.dot(rows, _WEIGHTS[: rows.shape[-1]]).all())
+
+
+def finite_and_no_zero_row(rows: np.ndarray) -> bool:
+    """True when every entry of ``rows`` is finite and no row is zero; False may be a false alarm.
+
+    Both from one matrix–vector product ``v = rows · (√2, √3, …)``: NaN and ±inf in a row make its entry of
+    ``v`` NaN or infinite (the weights are nonzero), a zero row makes it 0. Then a sum of ``v`` (NaN and inf
+    propagate; an overflow is a false alarm) and ``v.all()`` decide, over a vector ``k`` times shorter.
+
+    >>> finite_and_no_zero_row(np.array([[1.0, 2], [3, 4]])), finite_and_no_zero_row(np.array([[1.0, np.inf]]))
+    (True, False)
+    """
+    if rows.size == 0:
+        return True
+    with np.errstate(under="ignore", over="ignore", invalid="ignore"):
+        v = np.dot(rows, _WEIGHTS[: rows.shape[-1]])
+        return math.isfinite(np.sum(v)) and bool(v.all())
 
 
 def check_option(value: str, allowed: Sequence[str], name: str, function: str) -> None:

@@ -40,7 +40,7 @@ from ._arrays import (
     check_option,
     construction,
     degenerate_result,
-    no_zero_row,
+    finite_and_no_zero_row,
     nonfinite_result,
     rowwise,
 )
@@ -95,7 +95,7 @@ def _blocked_product(q: np.ndarray, x: np.ndarray) -> tuple[np.ndarray, bool]:
         for start in range(0, n, _BLOCK):
             block = result[start : start + _BLOCK]
             np.matmul(x[start : start + _BLOCK], qt, out=block)
-            if clean and not (block_finite(block) and no_zero_row(block)):
+            if clean and not finite_and_no_zero_row(block):
                 clean = False
     return result, clean
 
