@@ -283,3 +283,19 @@ def test_complex_input_is_refused_by_name_where_it_makes_no_sense():
     assert pn.harmonic_conjugate([1, 1j], [1, -1j], [1, 0]).dtype == complex  # a complex kernel
     with pytest.raises(NonNumericError):
         pn.join(I, I, out=np.empty(3))  # a real out for a complex result
+
+
+def test_empty_batches_and_the_component_major_layout():
+    lines, planes_, points_ = np.zeros((0, 6)), np.zeros((0, 4)), np.zeros((0, 4))
+    for f, args in [(pn.intersect_plane, (lines, planes_)), (pn.plane_through_point, (lines, points_)),
+                    (pn.meet_lines, (lines, lines)), (pn.plane_through_lines, (lines, lines)),
+                    (pn.polar, (np.eye(4), points_)), (pn.tangent_plane, (np.eye(4), points_)),
+                    (pn.form_value, (np.eye(4), points_)),
+                    (pn.harmonic_conjugate, (np.zeros((0, 2)), np.zeros((0, 2)), np.zeros((0, 2))))]:
+        assert np.asarray(f(*args)).shape[0] == 0
+    # (k, N) in, (k, N) out, the same numbers as the (N, k) layout: the x-axis against x = 3 and the plane y = 1
+    L = np.array([[0.0, 0, -1, 0, 0, 0]] * 2)
+    P = np.array([[1.0, 0, 0, -3], [0, 1, 0, -1]])
+    assert np.array_equal(pn.intersect_plane(L.T, P.T, axis=0).T, pn.intersect_plane(L, P))
+    out = np.empty((4, 2))
+    assert pn.plane_through_point(L.T, np.array([[0.0, 1, 0, 1]] * 2).T, axis=0, out=out) is out
