@@ -283,6 +283,8 @@ def test_complex_input_is_refused_by_name_where_it_makes_no_sense():
     assert pn.harmonic_conjugate([1, 1j], [1, -1j], [1, 0]).dtype == complex  # a complex kernel
     with pytest.raises(NonNumericError):
         pn.join(I, I, out=np.empty(3))  # a real out for a complex result
+    with pytest.raises(NonNumericError):
+        pn.join([[1, 2], [3]], I)  # ragged input is no array, complex kernel or not
 
 
 def test_empty_batches_and_the_component_major_layout():

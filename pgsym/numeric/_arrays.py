@@ -170,18 +170,29 @@ def as_float_array(x: Any, name: str, function: str) -> np.ndarray:
     """
     if isinstance(x, np.ndarray) and x.dtype == np.float64:
         return x
-    if np.iscomplexobj(x):  # casting would drop the imaginary parts (NumPy only warns): refuse by name
-        raise NonNumericError(
-            f"{function}: {name} holds complex numbers, and {function} works on real coordinates only; "
-            f"the kernels that take complex arrays are {', '.join(COMPLEX_KERNELS)}"
-        )
     try:
-        return np.asarray(x, dtype=np.float64)
+        a = np.asarray(x)
+        complex_input = a.dtype.kind == "c"
+        if not complex_input:
+            return np.asarray(a, dtype=np.float64)
     except (TypeError, ValueError) as err:
         raise NonNumericError(
             f"{function}: {name} must be an array of real numbers, got {type(x).__name__}; "
             "exact pgsym objects convert with pgsym.numeric.to_array"
         ) from err
+    # casting would drop the imaginary parts (NumPy only warns): refuse by name
+    raise NonNumericError(
+        f"{function}: {name} holds complex numbers, and {function} works on real coordinates only; "
+        f"the kernels that take complex arrays are {', '.join(COMPLEX_KERNELS)}"
+    )
+
+
+def _is_complex(x: Any) -> bool:
+    """True for complex input; False for anything else, including what as_float_array will refuse by name."""
+    try:
+        return bool(np.iscomplexobj(x))
+    except (TypeError, ValueError):
+        return False
 
 
 def as_numeric_arrays(inputs: Sequence[tuple[Any, str]], function: str, complex_ok: bool) -> list[np.ndarray]:
@@ -190,7 +201,7 @@ def as_numeric_arrays(inputs: Sequence[tuple[Any, str]], function: str, complex_
     >>> [a.dtype.name for a in as_numeric_arrays([([1, 2], "p"), ([1j, 0], "q")], "join", True)]
     ['complex128', 'complex128']
     """
-    if complex_ok and any(np.iscomplexobj(x) for x, _ in inputs):
+    if complex_ok and any(_is_complex(x) for x, _ in inputs):
         out = []
         for x, name in inputs:
             try:
