@@ -49,7 +49,8 @@ processor cache; pass ``out=`` to reuse an output array.
    degeneracy exactly (every minor is 0), as the exact core does; the SVD constructions decide
    it by numerical rank (:data:`~pgsym.numeric.tolerances.RANK_EPS`).
 8. The joins and meets of lines (:func:`join`, :func:`meet`, :func:`plucker_join`,
-   :func:`plucker_meet`) return the zero vector for coincident input by default
+   :func:`plucker_meet`, and :func:`meet_lines` / :func:`plane_through_lines` of two lines of space, for which
+   skew lines are degenerate too) return the zero vector for coincident input by default
    (``degenerate="zero"``, tested by :func:`is_zero_vector`), as the bare formulas
    :func:`cross` and :func:`triple_cross` always do; they accept ``degenerate="raise"``
    (:class:`~pgsym.errors.CoincidentPointsError`, :class:`~pgsym.errors.CoincidentLinesError`,
