@@ -8,9 +8,12 @@ from __future__ import annotations
 
 from fractions import Fraction
 
+import sympy
 from hypothesis import strategies as st
 
 from pgsym import Line, Plane, Point, Point3
+from pgsym.plucker import Line3
+from pgsym.projective_line import Point1
 
 small = st.integers(min_value=-12, max_value=12)
 nonzero_rational = st.fractions(min_value=-9, max_value=9, max_denominator=7).filter(lambda f: f != 0)
@@ -106,3 +109,44 @@ def invertible_matrices(draw, n: int = 3, bound: int = 4) -> list[list[int]]:
     if Matrix(m).det() == 0:
         m = [[int(i == j) for j in range(n)] for i in range(n)]
     return m
+
+
+# -- lines of space, points of P¹, symmetric forms (the numeric parity tests) --
+
+
+def lines3() -> st.SearchStrategy:
+    """Lines of P³ (Plücker) joining two distinct points, ideal ones included."""
+    return st.tuples(points3(), points3()).filter(lambda ab: ab[0] != ab[1]).map(lambda ab: Line3.join(*ab))
+
+
+def symmetric_forms(k: int) -> st.SearchStrategy:
+    """Non-singular symmetric k×k SymPy matrices with integer entries up to 5."""
+    entries = st.lists(integers(5), min_size=k * (k + 1) // 2, max_size=k * (k + 1) // 2)
+
+    def build(values):
+        M = sympy.zeros(k, k)
+        it = iter(values)
+        for i in range(k):
+            for j in range(i, k):
+                M[i, j] = M[j, i] = next(it)
+        return M
+
+    return entries.map(build).filter(lambda M: M.det() != 0)
+
+
+@st.composite
+def forms_through_a_point(draw, k: int):
+    """A symmetric integer form with a given integer point X on it: Q' = X_j² Q − (XᵀQX) e_j e_jᵀ."""
+    M = draw(symmetric_forms(k))
+    X = draw(homogeneous_vectors(k, True, integers(6)))
+    j = max(range(k), key=lambda i: abs(X[i]))
+    v = sympy.Matrix(X)
+    value = (v.T * M * v)[0]
+    Q = X[j] ** 2 * M
+    Q[j, j] -= value  # Xᵀ Q' X = X_j² XᵀQX − XᵀQX X_j² = 0
+    return Q, X
+
+
+def point1s() -> st.SearchStrategy:
+    """Points of P¹ with integer coordinates up to 9, a third of them ideal."""
+    return homogeneous_vectors(2, True, integers(9)).map(lambda t: Point1(*t))

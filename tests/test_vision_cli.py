@@ -112,13 +112,38 @@ def test_rectify_affine_and_metric(keystone_png, tmp_path):
     assert cv2.imread(str(out2), cv2.IMREAD_GRAYSCALE).shape == (80, 100)
 
 
+def test_rectify_from_five_orthogonal_pairs(keystone_png, tmp_path):
+    path, _ = keystone_png
+    H = np.array([[2.0, 0.3, 20.0], [0.1, 1.8, 15.0], [0.004, 0.002, 1.0]])  # the fixture's world → image map
+
+    def image(*world):
+        q = np.c_[np.array(world, float), np.ones(len(world))] @ H.T
+        return q[:, :2] / q[:, 2:]
+
+    # five right angles of the 40 × 40 board: two corners, the diagonals, and two mid-lines against sides
+    world_pairs = [(((0, 0), (39, 0)), ((0, 0), (0, 39))), (((39, 39), (0, 39)), ((39, 39), (39, 0))),
+                   (((0, 0), (39, 39)), ((39, 0), (0, 39))), (((0, 0), (39, 0)), ((19.5, 0), (19.5, 39))),
+                   (((0, 19.5), (39, 19.5)), ((0, 0), (0, 39)))]
+    text = "; ".join(" ".join(f"{x:.2f},{y:.2f}" for x, y in image(*segment))  # argument lists: 500 characters
+                     for pair in world_pairs for segment in pair)
+    out = tmp_path / "orthogonal.png"
+    result = run("rectify", str(path), "--method", "orthogonal", "--lines", text, "--size", "100x80", "--out", str(out))
+    assert result.returncode == 0, result.stderr
+    assert "orthogonal" in result.stdout
+    assert cv2.imread(str(out), cv2.IMREAD_GRAYSCALE).shape == (80, 100)
+    eight = "; ".join(text.split("; ")[:8])
+    result = run("rectify", str(path), "--method", "orthogonal", "--lines", eight, "--out", str(out))
+    assert result.returncode == 2 and "at least ten" in result.stderr
+
+
 def test_help_texts_document_the_commands():
     from click.testing import CliRunner
 
     from pgsym.cli import main
 
     for command, words in (("harris", ["--k", "--sigma", "--threshold", "--min-distance", "corners.csv", "Example"]),
-                           ("rectify", ["--points", "--size", "--method", "--lines", "affine", "metric", "Example"])):
+                           ("rectify", ["--points", "--size", "--method", "--lines", "affine", "metric", "orthogonal",
+                                        "Example"])):
         result = CliRunner().invoke(main, [command, "--help"])
         assert result.exit_code == 0
         for word in words:

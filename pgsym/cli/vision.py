@@ -152,13 +152,15 @@ def _write_harris(folder: Path, files: dict[str, object]) -> None:
 @click.argument("image", type=click.Path(dir_okay=False, path_type=Path))
 @click.option("--out", "out", required=True, type=click.Path(path_type=Path),
               help="Output image file (.png recommended); replaced if it exists.")
-@click.option("--method", type=click.Choice(["points", "affine", "metric"]), default="points", show_default=True,
-              help="points: four points to a rectangle; affine: two parallel pairs; metric: plus two right angles.")
+@click.option("--method", type=click.Choice(["points", "affine", "metric", "orthogonal"]), default="points",
+              show_default=True,
+              help="points: four points to a rectangle; affine: two parallel pairs; metric: plus two right angles; "
+                   "orthogonal: five or more right angles alone.")
 @click.option("--points", "points", type=POINTS, default=None,
               help='Four image points "x1,y1 x2,y2 x3,y3 x4,y4": top-left, top-right, bottom-right, bottom-left '
                    "of a world rectangle (method points).")
 @click.option("--lines", "lines", type=LINES, default=None,
-              help='Image lines, two points each, separated by ";" (methods affine and metric; see below).')
+              help='Image lines, two points each, separated by ";" (methods affine, metric, orthogonal; see below).')
 @click.option("--size", "size", type=SIZE, default=None,
               help="Output size WIDTHxHEIGHT, e.g. 400x300 (required for points; default for the other "
                    "methods: the input size).")
@@ -176,7 +178,11 @@ def rectify_command(image: Path, out: Path, method: str, points, lines, size) ->
       followed by "C; C'; D; D'" with C perpendicular to C' and D to D' in the
       world (e.g. two sides and the two diagonals of a square). Right angles and
       length ratios come out right (the plane up to a similarity).
-    For affine and metric the whole input image is scaled to fit --size.
+    --method orthogonal: --lines holds ten or more lines, "C1; C1'; ...; C5; C5'",
+      each line perpendicular to the next in the world (five or more pairs, in
+      several directions and places). They fix the image of the dual conic C*∞
+      and rectify in one step, up to a similarity (Hartley & Zisserman 2.7.5).
+    For affine, metric and orthogonal the whole input image is scaled to fit --size.
     Coordinates are pixels: x = column, y = row, origin at the top-left pixel.
 
     \b
@@ -215,6 +221,7 @@ def _rectifying_homography(shape, method, points, lines, size):  # type: ignore[
         fit_to_size,
         line_through,
         metric_rectification,
+        metric_rectification_from_orthogonal_pairs,
         rectangle_homography,
         vanishing_line,
     )
@@ -232,15 +239,24 @@ def _rectifying_homography(shape, method, points, lines, size):  # type: ignore[
     if lines is None:
         raise click.UsageError(f"--method {method} needs --lines")
     if points is not None:
-        raise click.UsageError("--points belongs to the method points, not to affine or metric")
-    wanted = 4 if method == "affine" else 8
-    if len(lines) != wanted:
-        raise click.BadParameter(f"--method {method} takes {wanted} lines, got {len(lines)}", param_hint="'--lines'")
+        raise click.UsageError(f"--points belongs to the method points, not to {method}")
+    if method == "orthogonal":
+        if len(lines) < 10 or len(lines) % 2:
+            raise click.BadParameter(f"--method orthogonal takes an even number of lines, at least ten (five "
+                                     f"perpendicular pairs), got {len(lines)}", param_hint="'--lines'")
+    else:
+        wanted = 4 if method == "affine" else 8
+        if len(lines) != wanted:
+            raise click.BadParameter(f"--method {method} takes {wanted} lines, got {len(lines)}",
+                                     param_hint="'--lines'")
     h, w = shape
     centre = ((w - 1) / 2, (h - 1) / 2)
     ls = [line_through(p, q) for p, q in lines]
     parallel = [(ls[0], ls[1]), (ls[2], ls[3])]
-    if method == "affine":
+    if method == "orthogonal":
+        pairs = list(zip(ls[0::2], ls[1::2], strict=True))
+        H = metric_rectification_from_orthogonal_pairs(pairs, reference=centre, scale=max(w, h) / 2)
+    elif method == "affine":
         H = affine_rectification(vanishing_line(*parallel), reference=centre)
     else:
         H = metric_rectification(parallel, [(ls[4], ls[5]), (ls[6], ls[7])], reference=centre)

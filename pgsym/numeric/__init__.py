@@ -49,11 +49,19 @@ processor cache; pass ``out=`` to reuse an output array.
    degeneracy exactly (every minor is 0), as the exact core does; the SVD constructions decide
    it by numerical rank (:data:`~pgsym.numeric.tolerances.RANK_EPS`).
 8. The joins and meets of lines (:func:`join`, :func:`meet`, :func:`plucker_join`,
-   :func:`plucker_meet`) return the zero vector for coincident input by default
+   :func:`plucker_meet`, and :func:`meet_lines` / :func:`plane_through_lines` of two lines of space, for which
+   skew lines are degenerate too) return the zero vector for coincident input by default
    (``degenerate="zero"``, tested by :func:`is_zero_vector`), as the bare formulas
    :func:`cross` and :func:`triple_cross` always do; they accept ``degenerate="raise"``
    (:class:`~pgsym.errors.CoincidentPointsError`, :class:`~pgsym.errors.CoincidentLinesError`,
    :class:`~pgsym.errors.DependentPlanesError`) and ``"mask"`` as well.
+
+**Complex input.** The kernels whose formulas are polynomial without conjugation — :func:`cross`,
+:func:`join`, :func:`meet`, :func:`incident`, :func:`is_zero_vector`, :func:`bracket` and
+:func:`harmonic_conjugate` — accept complex arrays and then compute in complex128 (the circular points
+``I = (1, i, 0)``, ``J = (1, −i, 0)`` and the lines through them). Every other kernel measures (angles,
+distances) or decides with a real tolerance, and refuses complex input with
+:class:`~pgsym.errors.NonNumericError` rather than dropping the imaginary parts.
 
 The check costs one BLAS dot product of each output block with itself while the block is
 in cache (NaN and inf propagate into a sum of squares); only when it is not finite is
@@ -96,8 +104,17 @@ from .metric import (
 )
 from .nullspace import nullspace_svd, numeric_rank, plane_through_numeric, point_on_planes_numeric
 from .plane import cross, incident, is_zero_vector, join, meet
-from .plucker import klein_form, plucker_join, plucker_meet
-from .projective_line import bracket, cross_ratio, cross_ratio_homogeneous
+from .plucker import (
+    intersect_plane,
+    klein_form,
+    meet_lines,
+    plane_through_lines,
+    plane_through_point,
+    plucker_join,
+    plucker_meet,
+)
+from .projective_line import bracket, cross_ratio, cross_ratio_homogeneous, harmonic_conjugate
+from .quadrics import form_value, polar, tangent_at, tangent_plane
 from .space import plane_through, point_on_planes, triple_cross
 from .svd import SVDSteps, svd_steps
 from .transform import (
@@ -122,20 +139,26 @@ __all__ = [
     "cross_ratio",
     "cross_ratio_homogeneous",
     "dehomogenize",
+    "form_value",
     "from_array",
+    "harmonic_conjugate",
     "homogenize",
     "incident",
+    "intersect_plane",
     "is_ideal",
     "is_perpendicular",
     "is_zero_vector",
     "join",
     "klein_form",
     "meet",
+    "meet_lines",
     "nullspace_svd",
     "numeric_rank",
     "orthogonal_projection",
     "plane_through",
+    "plane_through_lines",
     "plane_through_numeric",
+    "plane_through_point",
     "plucker_join",
     "plucker_meet",
     "point_distance",
@@ -143,8 +166,11 @@ __all__ = [
     "point_on_planes",
     "point_on_planes_numeric",
     "point_plane_distance",
+    "polar",
     "reflect",
     "svd_steps",
+    "tangent_at",
+    "tangent_plane",
     "to_array",
     "transform_conics",
     "transform_dual_conics",

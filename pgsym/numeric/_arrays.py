@@ -27,14 +27,18 @@ from ..errors import DimensionError, NonFiniteError, NonNumericError, OptionErro
 
 __all__ = [
     "CHUNK",
+    "COMPLEX_KERNELS",
     "DEGENERATE",
     "NONFINITE",
     "ZERO_OR_DEGENERATE",
     "OptionError",
     "as_float_array",
+    "as_numeric_arrays",
     "block_finite",
     "construction",
     "degenerate_result",
+    "finite_and_no_zero_row",
+    "no_zero_row",
     "nonfinite_result",
     "rowwise",
 ]
@@ -49,6 +53,11 @@ DEGENERATE = ("raise", "mask")
 """The values of a construction's ``degenerate=`` option: raise the named error, or return ``(values, ok)``."""
 
 ZERO_OR_DEGENERATE = ("zero", *DEGENERATE)
+
+COMPLEX_KERNELS = ("cross", "join", "meet", "incident", "is_zero_vector", "bracket", "harmonic_conjugate")
+"""The kernels that accept complex arrays (the circular points I, J and other complex points): their formulas
+are polynomial, without conjugation, so they hold over ℂ as they do over ℝ. Every other kernel measures
+(distances, angles, orientations) or decides by a real tolerance, and refuses complex input by name."""
 """The ``degenerate=`` values of the joins and meets, whose default ``"zero"`` returns the zero vector."""
 
 Kernel = Callable[[list[np.ndarray], np.ndarray, list[np.ndarray]], None]
@@ -65,14 +74,51 @@ def block_finite(block: np.ndarray) -> bool:
     >>> block_finite(np.ones((4, 3))), block_finite(np.array([[1.0, np.nan]]).T)
     (True, False)
     """
+    dot = np.vdot if block.dtype.kind == "c" else np.dot  # Σ |x|² for complex blocks
     if block.flags.c_contiguous:
         flat = block.reshape(-1)
-        return math.isfinite(np.dot(flat, flat))
+        return math.isfinite(abs(dot(flat, flat)))
     for i in range(block.shape[-1]):  # component-major layout: each component is contiguous
         c = block[..., i]
-        if not math.isfinite(np.dot(c, c)):
+        if not math.isfinite(abs(dot(c, c))):
             return False
     return True
+
+
+_WEIGHTS = np.sqrt(np.array([2.0, 3, 5, 7, 11, 13]))  # rationally independent: only a zero row can miss all
+
+
+def no_zero_row(rows: np.ndarray) -> bool:
+    """True when no row (last axis) of ``rows`` is the zero vector; False may be a false alarm.
+
+    One matrix–vector product with the weights ``√2, √3, √5, …``: a zero row gives 0, a nonzero row gives 0
+    only by accident (the weights are rationally independent, so never for integer rows) or by underflow,
+    and then the caller's exact test decides. Several times faster than ``rows.any(axis=-1)``.
+
+    >>> no_zero_row(np.array([[1.0, -1, 0], [0, 0, 2]])), no_zero_row(np.array([[1.0, 2], [0, 0]]))
+    (True, False)
+    """
+    if rows.size == 0:
+        return True
+    with np.errstate(under="ignore", over="ignore", invalid="ignore"):
+        return bool(np.dot(rows, _WEIGHTS[: rows.shape[-1]]).all())
+
+
+def finite_and_no_zero_row(rows: np.ndarray) -> bool:
+    """True when every entry of ``rows`` is finite and no row is zero; False may be a false alarm.
+
+    Both from one matrix–vector product ``v = rows · (√2, √3, …)``: NaN and ±inf in a row make its entry of
+    ``v`` NaN or infinite (the weights are nonzero), a zero row makes it 0. Then a sum of ``v`` (NaN and inf
+    propagate; an overflow is a false alarm) and ``v.all()`` decide, over a vector ``k`` times shorter.
+
+    >>> finite_and_no_zero_row(np.array([[1.0, 2], [3, 4]])), finite_and_no_zero_row(np.array([[1.0, np.inf]]))
+    (True, False)
+    """
+    if rows.size == 0:
+        return True
+    with np.errstate(under="ignore", over="ignore", invalid="ignore"):
+        v = np.dot(rows, _WEIGHTS[: rows.shape[-1]])
+        return math.isfinite(np.sum(v)) and bool(v.all())
 
 
 def check_option(value: str, allowed: Sequence[str], name: str, function: str) -> None:
@@ -125,12 +171,47 @@ def as_float_array(x: Any, name: str, function: str) -> np.ndarray:
     if isinstance(x, np.ndarray) and x.dtype == np.float64:
         return x
     try:
-        return np.asarray(x, dtype=np.float64)
+        a = np.asarray(x)
+        complex_input = a.dtype.kind == "c"
+        if not complex_input:
+            return np.asarray(a, dtype=np.float64)
     except (TypeError, ValueError) as err:
         raise NonNumericError(
             f"{function}: {name} must be an array of real numbers, got {type(x).__name__}; "
             "exact pgsym objects convert with pgsym.numeric.to_array"
         ) from err
+    # casting would drop the imaginary parts (NumPy only warns): refuse by name
+    raise NonNumericError(
+        f"{function}: {name} holds complex numbers, and {function} works on real coordinates only; "
+        f"the kernels that take complex arrays are {', '.join(COMPLEX_KERNELS)}"
+    )
+
+
+def _is_complex(x: Any) -> bool:
+    """True for complex input; False for anything else, including what as_float_array will refuse by name."""
+    try:
+        return bool(np.iscomplexobj(x))
+    except (TypeError, ValueError):
+        return False
+
+
+def as_numeric_arrays(inputs: Sequence[tuple[Any, str]], function: str, complex_ok: bool) -> list[np.ndarray]:
+    """The inputs as float64 arrays, or all as complex128 when ``complex_ok`` and one of them is complex.
+
+    >>> [a.dtype.name for a in as_numeric_arrays([([1, 2], "p"), ([1j, 0], "q")], "join", True)]
+    ['complex128', 'complex128']
+    """
+    if complex_ok and any(_is_complex(x) for x, _ in inputs):
+        out = []
+        for x, name in inputs:
+            try:
+                out.append(np.asarray(x, dtype=np.complex128))
+            except (TypeError, ValueError) as err:
+                raise NonNumericError(
+                    f"{function}: {name} must be an array of real or complex numbers, got {type(x).__name__}"
+                ) from err
+        return out
+    return [as_float_array(x, name, function) for x, name in inputs]
 
 
 def _move(a: np.ndarray, k: int, axis: int, name: str, function: str) -> np.ndarray:
@@ -159,6 +240,7 @@ def rowwise(
     axis: int,
     n_scratch: int,
     nonfinite: str = "raise",
+    complex_ok: bool = False,
 ) -> np.ndarray | tuple[np.ndarray, np.ndarray]:
     """Run ``kernel`` over broadcast rows of ``inputs`` block by block, writing into ``out``.
 
@@ -178,22 +260,25 @@ def rowwise(
            [2., 3.]])
     """
     check_option(nonfinite, NONFINITE, "nonfinite", function)
-    arrays = [_move(as_float_array(x, name, function), k, axis, name, function) for x, k, name in inputs]
+    numeric = as_numeric_arrays([(x, name) for x, _, name in inputs], function, complex_ok)
+    arrays = [_move(a, k, axis, name, function) for a, (_, k, name) in zip(numeric, inputs, strict=True)]
+    dtype = arrays[0].dtype if arrays else np.dtype(np.float64)
     batch = np.broadcast_shapes(*(a.shape[:-1] for a in arrays))
     full = batch if k_out is None else (*batch, k_out)
     if out is None:
         if k_out is None or axis in (-1, len(full) - 1):
-            result = np.empty(full)
+            result = np.empty(full, dtype)
             o = result
         else:
             shape = list(batch)
             position = axis if axis >= 0 else len(full) + axis
             shape.insert(position, k_out)
-            result = np.empty(shape)
+            result = np.empty(shape, dtype)
             o = np.moveaxis(result, position, -1)
     else:
-        if not isinstance(out, np.ndarray) or out.dtype != np.float64 or not out.flags.writeable:
-            raise NonNumericError(f"{function}: out must be a writeable float64 ndarray, got {type(out).__name__}")
+        if not isinstance(out, np.ndarray) or out.dtype != dtype or not out.flags.writeable:
+            raise NonNumericError(f"{function}: out must be a writeable {dtype.name} ndarray, got {type(out).__name__}"
+                                  + (f" of {out.dtype.name}" if isinstance(out, np.ndarray) else ""))
         result = out
         o = out if k_out is None else _move(out, k_out, axis, "out", function)
         if o.shape != full:
@@ -210,6 +295,7 @@ def rowwise(
                 -1,
                 n_scratch,
                 nonfinite,
+                complex_ok,
             )
             if nonfinite == "mask":
                 tmp, finite = tmp
@@ -227,7 +313,7 @@ def rowwise(
         o_rows = _flat(o, k_out)
         if o_rows is None or any(f is None for f in flat):  # strides do not allow a flat view: one block
             with np.errstate(over="ignore", invalid="ignore"):
-                kernel(views, o, [np.empty(batch) for _ in range(n_scratch)])
+                kernel(views, o, [np.empty(batch, dtype) for _ in range(n_scratch)])
             finite = np.isfinite(o) if k_out is None else np.isfinite(o).all(axis=-1)
             checked = nonfinite_result(o, finite, nonfinite, function, arrays)  # fills o's bad rows in mask mode
             return (result, checked[1]) if nonfinite == "mask" else result
@@ -236,7 +322,7 @@ def rowwise(
     if rows == 0:  # an empty batch: an empty result (and an empty mask)
         return (result, np.ones(batch, bool)) if nonfinite == "mask" else result
     block = min(CHUNK, rows)
-    scratch = [np.empty(block) for _ in range(n_scratch)]
+    scratch = [np.empty(block, dtype) for _ in range(n_scratch)]
     suspect = []
     with np.errstate(over="ignore", invalid="ignore"):  # overflow and NaN are reported below, by name
         for start in range(0, rows, block):
@@ -284,6 +370,8 @@ def degenerate_result(
         return value
     result, finite = value if isinstance(value, tuple) else (value, None)
     components = np.moveaxis(result, axis, -1)
+    if degenerate == "raise" and components.shape[-1] <= len(_WEIGHTS) and no_zero_row(components):
+        return value  # no row is zero (a false alarm of the quick test goes on to the exact one below)
     zero = ~components.any(axis=-1)  # a NaN row (masked as non-finite) is not zero
     if degenerate == "raise":
         if zero.any():
@@ -311,6 +399,7 @@ def construction(
     degenerate: str,
     error: type[Exception],
     what: str,
+    complex_ok: bool = False,
 ) -> np.ndarray | tuple[np.ndarray, np.ndarray]:
     """:func:`rowwise`, then :func:`degenerate_result`: a construction under both policies of :mod:`pgsym.numeric`.
 
@@ -323,5 +412,5 @@ def construction(
     """
     if degenerate != "zero":  # the default of the joins costs no check
         check_option(degenerate, ZERO_OR_DEGENERATE, "degenerate", function)
-    value = rowwise(kernel, function, inputs, k_out, out, axis, n_scratch, nonfinite)
+    value = rowwise(kernel, function, inputs, k_out, out, axis, n_scratch, nonfinite, complex_ok)
     return degenerate_result(value, degenerate, axis, function, error, what)

@@ -27,7 +27,7 @@ from typing import Any
 import numpy as np
 
 from ..errors import CoincidentLinesError, CoincidentPointsError, DimensionError
-from ._arrays import as_float_array, construction, rowwise
+from ._arrays import as_numeric_arrays, construction, rowwise
 from .conditioning import require_finite
 from .tolerances import INCIDENT_RTOL
 
@@ -61,7 +61,7 @@ def cross(
            [-1.,  0.],
            [ 0.,  0.]])
     """
-    return rowwise(_cross_kernel, "cross", [(u, 3, "u"), (v, 3, "v")], 3, out, axis, 1, nonfinite)
+    return rowwise(_cross_kernel, "cross", [(u, 3, "u"), (v, 3, "v")], 3, out, axis, 1, nonfinite, complex_ok=True)
 
 
 def join(
@@ -81,7 +81,7 @@ def join(
     """
     error, what = CoincidentPointsError, "are pairs of coincident points, which fix no line"
     return construction(_cross_kernel, "join", [(p, 3, "p"), (q, 3, "q")], 3, out, axis, 1, nonfinite, degenerate,
-                        error, what)
+                        error, what, complex_ok=True)
 
 
 def meet(
@@ -95,10 +95,16 @@ def meet(
 
     >>> meet([1.0, -1, 0], [1.0, -1, 3])
     array([-3., -3.,  0.])
+
+    Complex arrays are accepted (so are they by :func:`cross` and :func:`join`): the circular points
+    ``I = (1, i, 0)``, ``J = (1, −i, 0)`` span the line at infinity, ``I × J = (0, 0, −2i)``.
+
+    >>> join([1, 1j, 0], [1, -1j, 0])
+    array([0.+0.j, 0.+0.j, 0.-2.j])
     """
     error, what = CoincidentLinesError, "are pairs of equal lines, which meet in no single point"
     return construction(_cross_kernel, "meet", [(l, 3, "l"), (m, 3, "m")], 3, out, axis, 1, nonfinite, degenerate,
-                        error, what)
+                        error, what, complex_ok=True)
 
 
 def incident(x: Any, y: Any, *, rtol: float = INCIDENT_RTOL, axis: int = -1) -> np.ndarray:
@@ -112,9 +118,16 @@ def incident(x: Any, y: Any, *, rtol: float = INCIDENT_RTOL, axis: int = -1) -> 
     array([ True, False])
     >>> incident([1.0, 1, 1], [1.0, -1, 1e-12]), incident([1.0, 1, 1], [1.0, -1, 1e-12], rtol=0)
     (array(True), array(False))
+
+    Complex coordinates are accepted: the dot product is bilinear (no conjugation), as incidence is,
+    and the norms are the Hermitian ones. ``I = (1, i, 0)`` lies on the line at infinity and on the
+    isotropic line ``x + i y = 0`` (``1·1 + i·i = 0``); ``J = (1, −i, 0)`` does not (``1 + (−i)(i) = 2``).
+
+    >>> incident([[1, 1j, 0], [1, 1j, 0], [1, -1j, 0]], [[0, 0, 1], [1, 1j, 0], [1, 1j, 0]]).tolist()
+    [True, True, False]
     """
-    a = require_finite(as_float_array(x, "x", "incident"), "x", "incident")
-    b = require_finite(as_float_array(y, "y", "incident"), "y", "incident")
+    a, b = as_numeric_arrays([(x, "x"), (y, "y")], "incident", complex_ok=True)
+    a, b = require_finite(a, "x", "incident"), require_finite(b, "y", "incident")
     if a.ndim == 0 or b.ndim == 0 or a.shape[axis] != b.shape[axis]:
         raise DimensionError(
             f"incident: x and y need the same number of homogeneous coordinates along axis {axis}, "
@@ -123,10 +136,11 @@ def incident(x: Any, y: Any, *, rtol: float = INCIDENT_RTOL, axis: int = -1) -> 
     a, b = np.moveaxis(a, axis, -1), np.moveaxis(b, axis, -1)
     # each vector scaled by the power of two nearest its largest entry (exact, and projectively nothing),
     # so that no square overflows or underflows
-    a = np.ldexp(a, -np.frexp(np.max(np.abs(a), axis=-1, keepdims=True))[1])
-    b = np.ldexp(b, -np.frexp(np.max(np.abs(b), axis=-1, keepdims=True))[1])
+    a = a * np.ldexp(1.0, -np.frexp(np.max(np.abs(a), axis=-1, keepdims=True))[1])
+    b = b * np.ldexp(1.0, -np.frexp(np.max(np.abs(b), axis=-1, keepdims=True))[1])
     dot = np.einsum("...i,...i->...", a, b)
-    bound = rtol * np.sqrt(np.einsum("...i,...i->...", a, a) * np.einsum("...i,...i->...", b, b))
+    square_a = np.einsum("...i,...i->...", a, a.conj()).real
+    bound = rtol * np.sqrt(square_a * np.einsum("...i,...i->...", b, b.conj()).real)
     return np.asarray(np.abs(dot) <= bound)
 
 
@@ -138,5 +152,6 @@ def is_zero_vector(x: Any, *, atol: float = 0.0, axis: int = -1) -> np.ndarray:
     >>> is_zero_vector(join([[1.0, 2, 1], [1, 2, 1]], [[2.0, 4, 2], [0, 0, 1]]))
     array([ True, False])
     """
-    a = np.moveaxis(require_finite(as_float_array(x, "x", "is_zero_vector"), "x", "is_zero_vector"), axis, -1)
+    (a,) = as_numeric_arrays([(x, "x")], "is_zero_vector", complex_ok=True)
+    a = np.moveaxis(require_finite(a, "x", "is_zero_vector"), axis, -1)
     return np.asarray(np.all(np.abs(a) <= atol, axis=-1))

@@ -16,6 +16,11 @@ plane) at three levels of knowledge about the world (Hartley & Zisserman, §2.7)
   ``[[S, 0], [0ᵀ, 0]]`` with ``S = K Kᵀ`` symmetric positive definite; each
   orthogonal pair ``(l, m)`` gives one linear equation ``(l1 m1, l1 m2 + l2 m1, l2 m2) · (s11, s12, s22) = 0``;
   the upgrade is ``[[K, 0], [0ᵀ, 1]]⁻¹``. The result is the world up to a similarity.
+- :func:`metric_rectification_from_orthogonal_pairs`: five (or more) pairs of lines orthogonal in the
+  world, in the original image, and nothing else (H&Z §2.7.5). Each pair gives one linear equation
+  ``lᵀ C*∞′ m = 0`` in the six coefficients of the image ``C*∞′ = H C*∞ Hᵀ`` of the dual conic; five
+  pairs fix it up to scale, and its eigendecomposition ``U diag(λ1, λ2, 0) Uᵀ`` gives the world-to-image
+  map ``U diag(√λ1, √λ2, 1)`` up to a similarity, whose inverse rectifies in one step.
 
 Lines are homogeneous 3-vectors ``(a, b, c)`` for ``a x + b y + c = 0`` in pixel
 coordinates; :func:`line_through` builds them from two points. Joins, meets and the
@@ -50,9 +55,11 @@ from .homography import apply_homography, dlt_homography
 __all__ = [
     "affine_rectification",
     "apply_homography",
+    "dual_conic_from_orthogonal_pairs",
     "fit_to_size",
     "line_through",
     "metric_rectification",
+    "metric_rectification_from_orthogonal_pairs",
     "metric_upgrade",
     "rectangle_homography",
     "transform_lines",
@@ -228,6 +235,110 @@ def metric_rectification(
             raise DimensionError("each orthogonal pair must hold exactly two lines")
         mapped.append(tuple(transform_lines(HP, [_line(v)])[0] for v in pair))
     return metric_upgrade(mapped) @ HP
+
+
+def _orthogonality_row(l: np.ndarray, m: np.ndarray) -> list[float]:
+    """The coefficients of ``lᵀ C m`` in ``(c11, c12, c22, c13, c23, c33)`` of a symmetric ``C``."""
+    return [l[0] * m[0], l[0] * m[1] + l[1] * m[0], l[1] * m[1], l[0] * m[2] + l[2] * m[0],
+            l[1] * m[2] + l[2] * m[1], l[2] * m[2]]
+
+
+def dual_conic_from_orthogonal_pairs(orthogonal_pairs: Sequence[Any]) -> np.ndarray:
+    """The image ``C*∞′`` of the dual conic at infinity from five or more pairs of lines orthogonal in the world.
+
+    Each pair ``(l, m)`` gives ``lᵀ C*∞′ m = 0``, linear in the six coefficients of the symmetric ``C*∞′``;
+    the least-squares null vector of the stacked equations (the right singular vector of the smallest
+    singular value) is ``C*∞′`` up to scale. Returned with unit Frobenius norm and its two largest
+    eigenvalues positive. Fewer than five independent equations raise
+    :class:`~pgsym.errors.DegenerateConfigurationError`.
+
+    >>> # perpendicular pairs of an undistorted image: C*∞′ is diag(1, 1, 0) itself, up to scale
+    >>> pairs = [([1, 0, 0], [0, 1, 0]), ([1, 0, -2], [0, 1, -1]), ([1, 1, 0], [1, -1, 0]),
+    ...          ([1, 1, -3], [1, -1, 1]), ([1, 2, 0], [2, -1, 1])]
+    >>> C = dual_conic_from_orthogonal_pairs(pairs)
+    >>> (np.round(C * np.sqrt(2), 12) + 0.0).tolist()
+    [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 0.0]]
+    """
+    rows = []
+    for pair in orthogonal_pairs:
+        if len(pair) != 2:
+            raise DimensionError("each orthogonal pair must hold exactly two lines")
+        l, m = (_line(v) for v in pair)
+        l, m = l / np.linalg.norm(l), m / np.linalg.norm(m)
+        rows.append(_orthogonality_row(l, m))
+    if len(rows) < 5:
+        raise DimensionError(
+            f"metric rectification from orthogonal pairs alone needs at least five pairs, got {len(rows)}"
+        )
+    _, sv, Vt = np.linalg.svd(np.array(rows), full_matrices=True)
+    if sv[4] <= 1e-9 * sv[0]:
+        raise DegenerateConfigurationError(
+            "the orthogonal line pairs give fewer than five independent constraints on C*∞′: use pairs in "
+            "several directions and at several places (e.g. sides and diagonals of squares in different places)"
+        )
+    c = Vt[-1]
+    C = np.array([[c[0], c[1], c[3]], [c[1], c[2], c[4]], [c[3], c[4], c[5]]])
+    eig = np.linalg.eigvalsh(C)
+    if eig[-1] + eig[0] < 0:  # the two eigenvalues of largest size must be positive
+        C = -C
+    return C / np.linalg.norm(C)
+
+
+def metric_rectification_from_orthogonal_pairs(
+    orthogonal_pairs: Sequence[Any], reference: Sequence[float] = (0.0, 0.0), scale: float = 1.0
+) -> np.ndarray:
+    """A rectifying homography up to a similarity, in one step, from five or more orthogonal line pairs.
+
+    The lines are taken in the coordinates ``(x − reference) / scale`` (pass the image centre and
+    about half the image size: the six coefficients of ``C*∞′`` are then of comparable size, which
+    conditions the null space), and the result is composed back, so it maps pixels. ``C*∞′`` from
+    :func:`dual_conic_from_orthogonal_pairs` has the eigendecomposition ``U diag(λ1, λ2, λ3) Uᵀ``
+    with ``λ1 ≥ λ2 > 0`` and ``λ3 ≈ 0`` (it is ``0`` for exact data: ``C*∞′`` has rank 2); then
+    ``C*∞′ ≈ G C*∞ Gᵀ`` with ``G = U diag(√λ1, √λ2, 1)``, and ``H = G⁻¹ = diag(1/√λ1, 1/√λ2, 1) Uᵀ``.
+    ``H`` is oriented so that the reference point stays on the positive side (``w > 0``) and the
+    image is not mirrored there. Pairs whose ``C*∞′`` is not positive semi-definite (``λ2 ≤ 0``:
+    the lines are not orthogonal in any world) raise :class:`~pgsym.errors.DegenerateConfigurationError`.
+
+    >>> Hw = np.array([[1.0, 0.3, 0], [0.1, 1.2, 0], [0.001, 0.002, 1]])   # world → image
+    >>> img = lambda *pts: apply_homography(Hw, pts)
+    >>> pairs = []
+    >>> for x, y, plus in [(0, 0, 1), (100, 20, 1), (20, 100, 0), (60, 40, 0), (90, 90, 0)]:   # "+" or "x" shapes
+    ...     a, b, c, d = img([x, y], [x + 1, y], [x, y + 1], [x + 1, y + 1])
+    ...     pairs.append((line_through(a, b), line_through(a, c)) if plus else (line_through(a, d), line_through(b, c)))
+    >>> H = metric_rectification_from_orthogonal_pairs(pairs, reference=(150, 100), scale=150)
+    >>> r = apply_homography(H, img([0, 0], [100, 0], [100, 100], [0, 100]))
+    >>> e1, e2 = r[1] - r[0], r[3] - r[0]
+    >>> round(float(e1 @ e2 / (e1 @ e1)), 9) + 0.0, round(float(np.linalg.norm(e1) / np.linalg.norm(e2)), 9)
+    (0.0, 1.0)
+    """
+    ref = require_finite(np.asarray(reference, dtype=np.float64), "reference", "metric_rectification")
+    s = float(require_finite(np.asarray(scale, dtype=np.float64), "scale", "metric_rectification"))
+    if ref.shape != (2,) or not s > 0:
+        raise DimensionError(f"reference is a point (x, y) and scale a positive number, got {reference!r}, {scale!r}")
+    T = np.array([[1 / s, 0, -ref[0] / s], [0, 1 / s, -ref[1] / s], [0, 0, 1]])  # pixels → conditioned coordinates
+    T_lines = np.array([[s, 0, 0], [0, s, 0], [ref[0], ref[1], 1]])  # lines: l′ = T⁻ᵀ l
+    conditioned = []
+    for pair in orthogonal_pairs:
+        if len(pair) != 2:
+            raise DimensionError("each orthogonal pair must hold exactly two lines")
+        conditioned.append(tuple(T_lines @ _line(v) for v in pair))
+    C = dual_conic_from_orthogonal_pairs(conditioned)
+    lam, U = np.linalg.eigh(C)  # ascending: λ3 ≈ 0 first, then λ2, λ1
+    if lam[1] <= 1e-9 * lam[2]:
+        raise DegenerateConfigurationError(
+            "the orthogonal line pairs are inconsistent: the image of the dual conic C*∞ they give is not "
+            f"positive semi-definite of rank 2 (eigenvalues {np.round(lam / lam[2], 6).tolist()}); check that each "
+            "pair really is orthogonal in the world"
+        )
+    H = np.diag([1 / np.sqrt(lam[2]), 1 / np.sqrt(lam[1]), 1.0]) @ U[:, [2, 1, 0]].T @ T
+    centre = np.array([ref[0], ref[1], 1.0])
+    w = H[2] @ centre
+    if w < 0:
+        H = -H
+        w = -w
+    if np.linalg.det(H) / w**3 < 0:  # the Jacobian at the reference point: undo a mirror image
+        H = np.diag([1.0, -1.0, 1.0]) @ H
+    return H
 
 
 def rectangle_homography(image_points: Any, size: tuple[int, int]) -> np.ndarray:

@@ -156,6 +156,9 @@ P3 = np.array([[1.0, 2, 1], [3, -1, 2]])
 L3 = np.array([[1.0, -1, 0], [0, 1, -2]])
 P4 = np.array([[1.0, 2, 3, 1], [0, 1, -1, 2]])
 H3 = np.array([[2.0, 1, 0], [0, 1, 3], [1, 1, 4]])
+# two lines through the origin O and two others through O as well: each pair meets in O
+LINES3 = pn.plucker_join([0.0, 0, 0, 1], np.array([[1.0, 2, 3, 1], [0, 1, -1, 2]]))
+MEETING3 = pn.plucker_join([0.0, 0, 0, 1], np.array([[1.0, 0, 0, 1], [0, 0, 1, 1]]))
 H4 = np.array([[2.0, 1, 0, 0], [0, 1, 3, 0], [1, 1, 4, 0], [0, 0, 1, 1]])
 
 # name → (function, the valid arguments, keyword arguments): each array argument is spoiled in turn.
@@ -202,7 +205,19 @@ NUMERIC = {
     "point_line_distance": (pn.point_line_distance, [P3, L3], {}),
     "point_plane_distance": (pn.point_plane_distance, [P4, P4[::-1].copy()], {}),
     "reflect": (pn.reflect, [P3, L3], {}),
+    "form_value": (pn.form_value, [np.diag([1.0, 1, -1]), P3], {}),
+    "polar": (pn.polar, [np.diag([1.0, 1, -1]), P3], {}),
+    "tangent_at": (pn.tangent_at, [np.diag([1.0, 1, -25]), np.array([[3.0, 4, 1], [5, 0, 1]])], {}),
+    "tangent_plane": (pn.tangent_plane, [np.diag([1.0, 1, 1, -1]), np.array([[1.0, 0, 0, 1], [0, 0.6, 0.8, 1]])], {}),
+    "harmonic_conjugate": (
+        pn.harmonic_conjugate, [np.array([[0.0, 1], [-1, 1]]), np.array([4.0, 1]), np.array([1.0, 1])], {}
+    ),
+    "intersect_plane": (pn.intersect_plane, [LINES3, np.array([[1.0, 0, 0, -3], [0, 0, 1, -5]])], {}),
+    "plane_through_point": (pn.plane_through_point, [LINES3, np.array([[0.0, 0, 1, 1], [1, 0, 0, 1]])], {}),
+    "meet_lines": (pn.meet_lines, [LINES3, MEETING3], {}),
+    "plane_through_lines": (pn.plane_through_lines, [LINES3, MEETING3], {}),
 }
+FORMS = {"form_value", "polar", "tangent_at", "tangent_plane"}  # one form (a matrix) serves the batch
 # a constant, an error class, a result class; to_array takes exact objects
 NOT_KERNELS = {"CHUNK", "OptionError", "SVDSteps", "to_array"}
 
@@ -213,6 +228,9 @@ IMAGE = np.zeros((16, 16), np.float32)
 IMAGE[4:12, 4:12] = 1
 LINES = np.array([[[1.0, 0, 0], [1, 0, -1]], [[0.0, 1, 0], [0, 1, -1]]])  # two pairs of parallel lines
 RIGHT = np.array([[[1.0, 0, 0], [0, 1, 0]], [[1, -2, 0], [1, 2, -2]]])  # sides and diagonals of x' = 2x
+# five right angles of an undistorted image: "+" at (0, 0) and (2, 1), "x" at (0, 0), (3, 0) and (1, 2)
+FIVE_RIGHT = np.array([[[1.0, 0, 0], [0, 1, 0]], [[1, 0, -2], [0, 1, -1]], [[1, 1, 0], [1, -1, 0]],
+                       [[1, 1, -3], [1, -1, -3]], [[1, 1, -3], [1, -1, 1]]])
 
 VISION = {
     "apply_homography": (homography.apply_homography, [HB, SQUARE], {}),
@@ -228,6 +246,10 @@ VISION = {
     "line_through": (rectify.line_through, [np.array([0.0, 1]), np.array([2.0, 1])], {}),
     "metric_rectification": (rectify.metric_rectification, [LINES, RIGHT, np.array([0.0, 0])], {}),
     "metric_upgrade": (rectify.metric_upgrade, [RIGHT], {}),
+    "dual_conic_from_orthogonal_pairs": (rectify.dual_conic_from_orthogonal_pairs, [FIVE_RIGHT], {}),
+    "metric_rectification_from_orthogonal_pairs": (
+        rectify.metric_rectification_from_orthogonal_pairs, [FIVE_RIGHT, np.array([1.0, 1]), 2.0], {}
+    ),
     "rectangle_homography": (rectify.rectangle_homography, [QUAD * 10, np.array([11.0, 6])], {}),
     "transform_lines": (rectify.transform_lines, [HB, L3], {}),
     "vanishing_line": (rectify.vanishing_line, [LINES[0], LINES[1]], {}),
@@ -276,7 +298,7 @@ MASKED = [(name, f, args, kw, i) for name, f, args, kw, i in CASES
 def _row(name, j, a):
     """One object of argument ``j`` (the matrix of a transform stays whole: one H for all points)."""
     a = np.asarray(a, dtype=np.float64)
-    return a if (name.startswith("transform") and j == 0) or a.ndim == 1 else a[0]
+    return a if ((name.startswith("transform") or name in FORMS) and j == 0) or a.ndim == 1 else a[0]
 
 
 @pytest.mark.parametrize("bad", BAD, ids=["nan", "inf", "-inf"])
