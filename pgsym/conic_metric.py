@@ -31,7 +31,7 @@ from .errors import DegenerateConfigurationError, DegenerateConicError, InvalidC
 from .exact import Scalar, is_zero, sign, to_exact
 from .homogeneous import require
 from .matrices import adjugate, proportional
-from .metric import rotation
+from .metric import rotation, squared_distance
 from .projective_plane import Line, Point, cross, join, line_at_infinity
 from .transformations import Transformation
 
@@ -41,11 +41,14 @@ __all__ = [
     "axes",
     "center",
     "conic_from_foci",
+    "cos_intersection_angle",
     "ellipse",
     "foci",
     "hyperbola",
     "parabola",
+    "radius",
     "semi_axes",
+    "squared_radius",
 ]
 
 CONIC_TYPES = (
@@ -192,13 +195,16 @@ def _principal(conic: Conic) -> list[tuple[tuple[Expr, Expr], Expr]]:
 
 
 def semi_axes(conic: Conic) -> tuple[Expr, Expr]:
-    """``(a, b)``: the semi-major and semi-minor axis of a real ellipse, or the transverse and conjugate
-    semi-axis of a hyperbola (``x²/a² − y²/b² = 1`` in its own frame), exact (square roots).
+    """``(a, b)``: the semi-major and semi-minor axis of a real ellipse (``(r, r)`` for a circle), or the
+    transverse and conjugate semi-axis of a hyperbola (``x²/a² − y²/b² = 1`` in its own frame), exact.
 
     >>> semi_axes(Conic.from_coefficients(1, 0, 4, 0, 0, -4)), semi_axes(Conic.from_coefficients(1, 0, -1, 0, 0, -2))
     ((2, 1), (sqrt(2), sqrt(2)))
     """
     conic = _real(conic, "semi_axes")
+    if affine_type(conic) == "circle":
+        r = radius(conic)
+        return r, r
     (_, s1), (_, s2) = _principal(conic)
     return sympy.sqrt(s1), sympy.sqrt(s2 if sign(s2) > 0 else sympy.radsimp(-s2))
 
@@ -357,3 +363,39 @@ def conic_from_foci(f1: Point, f2: Point, a: Scalar) -> Conic:
             "them (the segment F1F2, counted twice); take 2a larger (ellipse) or smaller (hyperbola)"
         )
     return C
+
+
+def squared_radius(circle: Conic) -> Expr:
+    """``r²`` of a real circle: for ``a(x² + y²) + 2dx + 2ey + f = 0`` it is ``(d² + e² − af)/a²``.
+
+    Anything but a real circle (an ellipse, an imaginary or a point circle) raises
+    :class:`~pgsym.errors.DegenerateConfigurationError` naming its type.
+
+    >>> squared_radius(Conic.circle(1, 2, 3)), radius(Conic.from_coefficients(2, 0, 2, 0, 0, -1))
+    (9, sqrt(2)/2)
+    """
+    circle = _real(circle, "radius")
+    kind = affine_type(circle)
+    if kind != "circle":
+        raise DegenerateConfigurationError(f"the conic {circle!r} is a {kind}, not a real circle: it has no radius")
+    m = circle.matrix
+    a, d, e, f = m[0, 0], m[0, 2], m[1, 2], m[2, 2]
+    return sympy.radsimp(sympy.expand(d * d + e * e - a * f) / (a * a))
+
+
+def radius(circle: Conic) -> Expr:
+    """The radius of a real circle, exact (a square root where ``r²`` is not a square); see :func:`squared_radius`."""
+    return sympy.sqrt(squared_radius(circle))
+
+
+def cos_intersection_angle(c1: Conic, c2: Conic) -> Expr:
+    """The cosine of the angle at which two circles cross: ``(r₁² + r₂² − d²) / (2 r₁ r₂)``, ``d`` the distance
+    of the centres (the angle between the radii to a common point, which equals the angle between the tangents
+    there). ``0`` means the circles are orthogonal; a value outside [−1, 1] means they do not meet in real points.
+
+    >>> cos_intersection_angle(Conic.circle(0, 0, 1), Conic.circle(1, 1, 1))     # r₁ = r₂ = 1, d² = 2
+    0
+    """
+    r1, r2 = squared_radius(c1), squared_radius(c2)
+    d2 = squared_distance(center(c1), center(c2))
+    return sympy.radsimp((r1 + r2 - d2) / (2 * sympy.sqrt(r1 * r2)))

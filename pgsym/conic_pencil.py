@@ -29,9 +29,9 @@ returned is checked exactly (:func:`pgsym.exact.is_zero`) to lie on both conics.
 from __future__ import annotations
 
 import sympy
-from sympy import Expr, Matrix
+from sympy import Expr, Matrix, Rational  # noqa: F401 (Rational: doctest)
 
-from .conics import Conic
+from .conics import Conic, conic_through  # noqa: F401 (conic_through: doctest)
 from .errors import (
     CollinearPointsError,
     DegenerateConfigurationError,
@@ -39,11 +39,11 @@ from .errors import (
     DimensionError,
     UndecidableError,
 )
-from .exact import algebraic_normal_form, is_zero
+from .exact import Scalar, algebraic_normal_form, is_zero, to_exact
 from .homogeneous import require
 from .projective_plane import Line, Point, collinear, join
 
-__all__ = ["conics_through_tangent", "degenerate_members", "intersect_conics"]
+__all__ = ["conic_from_cross_ratio", "conics_through_tangent", "degenerate_members", "intersect_conics"]
 
 _T = sympy.Dummy("t")
 
@@ -240,3 +240,35 @@ def conics_through_tangent(points: tuple[Point, Point, Point, Point], line: Line
         if not any(conic == f for f in found):  # a double root gives one conic
             found.append(conic)
     return tuple(found)
+
+
+def conic_from_cross_ratio(cr: Scalar, a: Point, b: Point, c: Point, d: Point) -> Conic:
+    """Steiner's conic: the points ``x`` from which ``a, b, c, d`` are seen under the cross-ratio ``cr``.
+
+    The lines ``x∨a, …, x∨d`` have the cross-ratio ``[xac][xbd] / ([xad][xbc])`` (the convention of
+    :func:`~pgsym.projective_line.cross_ratio`), and ``[xac] = (a×c)ᵀx``. So the locus is the member
+
+        (a×c)(b×d)ᵀ + (b×d)(a×c)ᵀ − cr · ((a×d)(b×c)ᵀ + (b×c)(a×d)ᵀ)
+
+    of the pencil of conics through the four points: Steiner's theorem says the cross-ratio is
+    constant along each conic of the pencil, and every conic through ``a, b, c, d`` arises for one
+    value. At ``cr = 0`` and ``cr = 1`` the member is the line pair ``ac, bd`` and ``ab, cd``
+    (returned as such). No three of the points may be collinear (:class:`CollinearPointsError`).
+
+    >>> a, b, c, d = Point(0, 1), Point(0, -1), Point(3, 1, 2), Point(3, -1, 2)
+    >>> conic_from_cross_ratio(Rational(1, 3), a, b, c, d) == conic_through(a, b, c, d, Point(-3, 1, 2))
+    True
+    """
+    points = (a, b, c, d)
+    for p in points:
+        require(p, Point, "conic_from_cross_ratio")
+    for i, j, k in ((0, 1, 2), (0, 1, 3), (0, 2, 3), (1, 2, 3)):
+        if collinear(points[i], points[j], points[k]):
+            raise CollinearPointsError(
+                f"conic_from_cross_ratio: {points[i]!r}, {points[j]!r}, {points[k]!r} are collinear; the conics "
+                "through four points need no three of them on a line"
+            )
+    k = to_exact(cr)
+    first = Conic.from_lines(join(a, c), join(b, d)).matrix
+    second = Conic.from_lines(join(a, d), join(b, c)).matrix
+    return Conic(first - k * second).canonical()

@@ -242,3 +242,21 @@ def test_foci_are_where_tangents_from_I_and_J_meet(coefficients):
     meets = [meet(s, t) for s in C.tangents_from(I_) for t in C.tangents_from(J_)]
     for f in foci(C):
         assert any(f == m for m in meets)
+
+
+def test_radius_and_intersection_angle_of_circles() -> None:
+    from pgsym.conic_metric import cos_intersection_angle, radius, squared_radius
+
+    # (x − 1)² + (y − 2)² = 9 → x² + y² − 2x − 4y − 4 = 0: d = −1, e = −2, f = −4, r² = 1 + 4 + 4 = 9
+    assert squared_radius(Conic.from_coefficients(1, 0, 1, -2, -4, -4)) == 9
+    # 2x² + 2y² − 1 = 0: r² = (0 + 0 + 2)/4 = 1/2
+    assert radius(Conic.from_coefficients(2, 0, 2, 0, 0, -1)) == sqrt(2) / 2
+    assert semi_axes(Conic.circle(0, 0, 3)) == (3, 3)
+    # unit circles with centres 1 apart: (1 + 1 − 1)/(2·1·1) = 1/2, they cross at 60°
+    assert cos_intersection_angle(Conic.circle(0, 0, 1), Conic.circle(1, 0, 1)) == Rational(1, 2)
+    # r = 3 and r = 4 with centres 5 apart: (9 + 16 − 25)/24 = 0, orthogonal
+    assert cos_intersection_angle(Conic.circle(0, 0, 3), Conic.circle(5, 0, 4)) == 0
+    with pytest.raises(DegenerateConfigurationError):
+        radius(Conic.from_coefficients(1, 0, 4, 0, 0, -4))      # an ellipse
+    with pytest.raises(DegenerateConfigurationError):
+        radius(Conic.from_coefficients(1, 0, 1, 0, 0, 1))       # x² + y² + 1 = 0 has no real point

@@ -323,3 +323,35 @@ def _resultant_matches(C1: Conic, C2: Conic, points) -> bool:
 ])
 def test_multiplicities_agree_with_the_resultant(C1, C2):
     assert _resultant_matches(C1, C2, intersect_conics(C1, C2))
+
+
+# -- Steiner's conic: a constant cross-ratio seen from the conic ------------------------------------
+
+def test_conic_from_cross_ratio_by_hand() -> None:
+    from pgsym.conic_pencil import conic_from_cross_ratio
+
+    a, b, c, d = Point(0, 1), Point(0, -1), Point(1, 0), Point(-1, 0)
+    # seen from e = (3/5, 4/5) on the unit circle: [eac] = det[[3,4,5],[0,1,1],[1,0,1]] = 3·1 − 4·(−1) + 5·(−1) = 2,
+    # [ebd] = det[[3,4,5],[0,−1,1],[−1,0,1]] = 3·(−1) − 4·1 + 5·(−1) = −12,
+    # [ead] = det[[3,4,5],[0,1,1],[−1,0,1]] = 3·1 − 4·1 + 5·1 = 4,
+    # [ebc] = det[[3,4,5],[0,−1,1],[1,0,1]] = 3·(−1) − 4·(−1) + 5·1 = 6
+    # cross-ratio 2·(−12)/(4·6) = −1: the four points are harmonic on the circle
+    assert conic_from_cross_ratio(-1, a, b, c, d) == Conic.circle(0, 0, 1)
+    # cr = 0 and cr = 1 are the line pairs ac ∪ bd and ab ∪ cd
+    assert conic_from_cross_ratio(0, a, b, c, d) == Conic.from_lines(Line(1, 1, -1), Line(1, 1, 1))
+    assert conic_from_cross_ratio(1, a, b, c, d) == Conic.from_lines(Line(1, 0, 0), Line(0, 1, 0))
+    with pytest.raises(CollinearPointsError):
+        conic_from_cross_ratio(2, a, b, Point(0, 5), d)
+
+
+@given(st.lists(st.tuples(integers(6), integers(6)), min_size=5, max_size=5, unique=True))
+@settings(max_examples=40, deadline=None)
+def test_steiner_the_cross_ratio_seen_from_the_conic_gives_it_back(coords) -> None:
+    from pgsym.conic_pencil import conic_from_cross_ratio
+    from pgsym.projective_line import cross_ratio_lines
+    from pgsym.projective_plane import join
+
+    a, b, c, d, e = (Point(*xy) for xy in coords)
+    assume(not any(collinear(*trio) for trio in itertools.combinations((a, b, c, d, e), 3)))
+    cr = cross_ratio_lines(join(e, a), join(e, b), join(e, c), join(e, d))
+    assert conic_from_cross_ratio(cr, a, b, c, d) == conic_through(a, b, c, d, e)
