@@ -20,7 +20,7 @@ import pgsym
 ROOT = Path(pgsym.__file__).parent
 
 # layer of a module, by its dotted name below pgsym ("" = the package itself)
-BASE = {"errors", "limits", "kinds", "atomic", "csv_cells", "ring", "_lazy"}
+BASE = {"errors", "limits", "kinds", "atomic", "csv_cells", "ring", "escaping", "_lazy"}
 LAYERS = ["base", "core", "numeric", "vision", "proofs", "exercises", "cli"]
 # which layers each layer may import (at load or lazily)
 ALLOWED = {

@@ -116,7 +116,7 @@ def test_deprecated_flags_still_work_with_a_message(tmp_path):
 
 def test_clean_replaces_exactly_the_unsafe_code_points():
     # clean() is a single regular expression; compare it with the definition, code point by code point
-    from pgsym.exercises._text import REPLACEMENT, clean
+    from pgsym.escaping import REPLACEMENT, clean
 
     def unsafe(o: int) -> bool:
         return ((o < 32 and chr(o) not in "\n\t") or 0x7F <= o < 0xA0 or 0x202A <= o <= 0x202E

@@ -187,7 +187,7 @@ def check_command(ctx: click.Context, manifest: str, answers: str, out: str | No
     """Grade the answers of every student against the manifest, naming the common mistakes."""
     from ..atomic import Terminated, write_new_folder
     from ..csv_cells import csv_text
-    from ..exercises._text import clean
+    from ..escaping import clean
     from ..exercises.grading import grade_rows, read_answer_file, results_csv, summary
     from ..exercises.sheets import load_manifest_data
 

@@ -21,7 +21,7 @@ from __future__ import annotations
 from collections.abc import Mapping
 
 from ..csv_cells import csv_text
-from ._text import one_line
+from ..escaping import one_line
 from .grading import Result, summary
 
 __all__ = ["CANVAS_COLUMNS", "canvas_csv"]

@@ -2,7 +2,7 @@
 
 Browsers render MathML Core themselves (Chromium since 109, Firefox, Safari), so the pages need no
 JavaScript, no MathJax copy and no network: they work right after ``pip install pgsym``. The LaTeX of
-an exercise (already restricted by :func:`~pgsym.exercises._text.math_is_safe`) is converted by the
+an exercise (already restricted by :func:`~pgsym.escaping.math_is_safe`) is converted by the
 pure-Python ``latex2mathml``; its result is parsed and kept only if every element and attribute is
 plain MathML from :data:`ELEMENTS` / :data:`ATTRIBUTES` (``\\text{<b>}`` passes through the converter
 unescaped, so this check is what keeps user text from becoming markup). Anything else is shown as the

@@ -20,7 +20,7 @@ import html
 import json
 from collections.abc import Callable, Sequence
 
-from ._text import html_escape, md_escape, tex_escape
+from ..escaping import html_escape, md_escape, tex_escape
 from .model import Sheet
 
 TITLE = "Answer key table"

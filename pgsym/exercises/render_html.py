@@ -1,7 +1,7 @@
 """HTML renderer: one self-contained page per sheet, math as MathML made at generation time.
 
-Names, ids and titles go through :func:`~pgsym.exercises._text.html_escape` and exercise text through
-:func:`~pgsym.exercises._text.to_html` with :func:`~pgsym.exercises.html_math.mathml`: no user text
+Names, ids and titles go through :func:`~pgsym.escaping.html_escape` and exercise text through
+:func:`~pgsym.escaping.to_html` with :func:`~pgsym.exercises.html_math.mathml`: no user text
 becomes a tag or an entity, and the pages hold no script at all, so they open offline right after
 ``pip install pgsym`` (browsers render MathML themselves).
 
@@ -22,7 +22,7 @@ import shutil
 from functools import lru_cache
 from pathlib import Path
 
-from ._text import html_escape, one_line, to_html
+from ..escaping import html_escape, one_line, to_html
 from .errors import MathJaxMissingError
 from .html_math import mathml
 from .model import KIND_HINTS, Sheet

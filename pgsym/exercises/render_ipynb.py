@@ -1,8 +1,8 @@
 """Jupyter notebook renderer: one notebook per sheet in which students type answers and check them
 with pgsym (against salted digests, so the notebook does not reveal the key).
 
-Markdown cells are escaped like the Markdown pages (:func:`~pgsym.exercises._text.md_escape`,
-:func:`~pgsym.exercises._text.to_md`); the JSON itself is written by ``json.dumps``, and the code
+Markdown cells are escaped like the Markdown pages (:func:`~pgsym.escaping.md_escape`,
+:func:`~pgsym.escaping.to_md`); the JSON itself is written by ``json.dumps``, and the code
 cells hold only labels and digests pgsym made.
 
 >>> import json
@@ -17,7 +17,7 @@ from __future__ import annotations
 import json
 from typing import Any
 
-from ._text import md_escape
+from ..escaping import md_escape
 from .answers import answer_digest
 from .model import KIND_HINTS, Sheet
 from .render_md import to_md  # the cached conversion

@@ -1,7 +1,7 @@
 """Markdown/MyST renderer: one page per sheet, solutions in dropdown admonitions on request.
 
-Names, ids and titles go through :func:`~pgsym.exercises._text.md_escape`, exercise text through
-:func:`~pgsym.exercises._text.to_md`: no user text becomes a role, directive, link, HTML or math.
+Names, ids and titles go through :func:`~pgsym.escaping.md_escape`, exercise text through
+:func:`~pgsym.escaping.to_md`: no user text becomes a role, directive, link, HTML or math.
 
 >>> from pgsym.exercises.sheets import build_sheet
 >>> page = render_sheet(build_sheet(["join"], "s1", "Ada", 1), solutions=True)
@@ -13,8 +13,8 @@ from __future__ import annotations
 
 from functools import lru_cache
 
-from ._text import md_escape
-from ._text import to_md as _to_md
+from ..escaping import md_escape
+from ..escaping import to_md as _to_md
 from .model import KIND_HINTS, Exercise, Sheet
 
 # the answer key repeats every text of the sheets: convert each text once

@@ -5,7 +5,7 @@ quiz: every attempt draws a variant. Numbers are asked in canonical form (homoge
 primitive integers with the first nonzero entry positive), since Cloze compares each field on its own;
 integer fields are NUMERICAL, fractions SHORTANSWER in lowest terms, choices MULTICHOICE.
 
-Exercise text goes through :func:`~pgsym.exercises._text.to_moodle`: HTML-escaped, with the Cloze
+Exercise text goes through :func:`~pgsym.escaping.to_moodle`: HTML-escaped, with the Cloze
 characters ``{ } ~ = # :`` (and ``$ [ ] \\`` of Moodle's TeX filter) as numeric entities, so the only
 Cloze fields are the ones made here from the answer key; question names are XML-escaped text.
 
@@ -22,7 +22,7 @@ from collections.abc import Sequence
 from fractions import Fraction
 from xml.sax.saxutils import escape
 
-from ._text import one_line, to_moodle
+from ..escaping import one_line, to_moodle
 from .model import Answer, Exercise, Sheet
 
 

@@ -10,8 +10,8 @@ entry positive): an integer is a ``numerical_question`` (exact), a single other 
 ``short_answer_question``, a multiple-choice part a ``multiple_choice_question`` and several parts a
 ``fill_in_multiple_blanks_question`` with one blank per part.
 
-Question text is HTML made by :func:`~pgsym.exercises._text.to_html` (math as ``\\(...\\)``, which Canvas
-typesets) carried as escaped text; names and titles go through :func:`~pgsym.exercises._text.xml_escape`.
+Question text is HTML made by :func:`~pgsym.escaping.to_html` (math as ``\\(...\\)``, which Canvas
+typesets) carried as escaped text; names and titles go through :func:`~pgsym.escaping.xml_escape`.
 The zip is byte-reproducible (fixed timestamps, fixed order).
 
 >>> import io, zipfile
@@ -30,7 +30,7 @@ import zipfile
 from collections.abc import Sequence
 from fractions import Fraction
 
-from ._text import one_line, to_html, xml_escape
+from ..escaping import one_line, to_html, xml_escape
 from .model import KIND_HINTS, Exercise, Part, Sheet
 
 __all__ = ["QTI_NAMESPACE", "render_package"]

@@ -5,7 +5,7 @@ Korean, Arabic, Hebrew, Devanagari, Thai, …): luaotfload falls back to the fon
 right-to-left runs are set right to left, so ``pdftotext`` gives every name back exactly.
 
 User text never reaches TeX as code: names, ids and titles go through
-:func:`~pgsym.exercises._text.tex_escape`, exercise text through :func:`~pgsym.exercises._text.to_tex`
+:func:`~pgsym.escaping.tex_escape`, exercise text through :func:`~pgsym.escaping.to_tex`
 (math only from an allowed set of commands). TeX itself runs confined (:func:`compile_pdf`): shell
 escape off (``-no-shell-escape``), kpathsea's paranoid ``openin_any=p`` and ``openout_any=p`` (no
 absolute paths, no ``..``, no dot files), inside a fresh temporary folder, in its own process group
@@ -29,7 +29,7 @@ import time
 from collections.abc import Sequence
 from pathlib import Path
 
-from ._text import one_line, tex_escape, to_tex
+from ..escaping import one_line, tex_escape, to_tex
 from .errors import TeXFailedError, TeXMissingError
 from .model import KIND_HINTS, Exercise, Sheet
 

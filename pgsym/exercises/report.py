@@ -24,7 +24,7 @@ from collections.abc import Iterable, Mapping
 from pathlib import Path
 from typing import Any
 
-from ._text import html_escape, one_line
+from ..escaping import html_escape, one_line
 from .grading import Result
 from .mistakes import MISTAKE_CLASSES
 

@@ -18,8 +18,8 @@ from pathlib import Path
 from typing import Any
 
 from ..errors import PgsymError
+from ..escaping import one_line
 from ..limits import MAX_NAME_CHARS
-from ._text import one_line
 from .errors import ManifestError, RosterError, UnknownTopicError
 from .mistakes import MAX_MISTAKES
 from .model import Answer, Mistake, Sheet

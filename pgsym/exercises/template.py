@@ -21,7 +21,7 @@ from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any
 
-from ._text import one_line
+from ..escaping import one_line
 from .errors import TemplateError, UnknownTopicError
 from .model import Answer, Exercise, Mistake, Part
 from .reading import read_user_text

@@ -14,6 +14,8 @@ from enum import StrEnum
 from fractions import Fraction
 from typing import Any
 
+from ..escaping import md_code, md_escape, tex_escape
+
 __all__ = ["Certificate", "Condition", "Counterexample", "Status", "Verdict"]
 
 
@@ -40,44 +42,16 @@ _STATUS_MARK = {Status.PROVED: "✔ proved", Status.FALSE: "✘ false", Status.U
 _STATUS_LATEX = {s: rf"\text{{{s.value}}}" for s in Status}
 
 
-# the escaping of plain text, as in pgsym.exercises._text (which this layer may not import)
-_MD_SPECIAL = set("\\`*_{}[]<>&$|~!#")
-_TEX_SPECIAL = {"\\": r"\textbackslash{}", "&": r"\&", "%": r"\%", "$": r"\$", "#": r"\#", "_": r"\_",
-                "{": r"\{", "}": r"\}", "~": r"\textasciitilde{}", "^": r"\textasciicircum{}"}
+# the engine's few math symbols as LaTeX commands; everything else is escaped as plain text
 _TEX_MATH = {"≠": r"$\neq$", "×": r"$\times$", "·": r"$\cdot$", "∧": r"$\wedge$", "−": "-", "λ": r"$\lambda$",
              "ᵀ": r"$^{\top}$", "…": r"\dots{}", "²": r"$^2$", "³": r"$^3$", "¹": r"$^1$", "⁶": r"$^6$",
              "ℚ": r"$\mathbb{Q}$", "ℤ": r"$\mathbb{Z}$", "∞": r"$\infty$", "′": "'", "—": "---", "–": "--"}
-
-
-def _md(text: str) -> str:
-    """Plain text as Markdown showing exactly these characters (inline syntax backslash-escaped)."""
-    return "".join("\\" + c if c in _MD_SPECIAL else c for c in " ".join(str(text).splitlines()))
-
-
-def _code(text: str) -> str:
-    """Text as one inline code span, fenced by more backticks than the longest run it holds.
-
-    >>> _code("a`b")
-    '`` a`b ``'
-    """
-    runs = re.findall(r"`+", text)
-    fence = "`" * (max((len(r) for r in runs), default=0) + 1)
-    pad = " " if runs else ""
-    return f"{fence}{pad}{text}{pad}{fence}"
+_TEX_MATH_SPLIT = re.compile("([" + "".join(_TEX_MATH) + "])")
 
 
 def _tex(text: str) -> str:
-    """Plain text as pdfLaTeX source: specials escaped, the engine's few math symbols as commands, other
-    characters outside Latin-1 as '?'."""
-    out = []
-    for c in " ".join(str(text).splitlines()):
-        if c in _TEX_SPECIAL:
-            out.append(_TEX_SPECIAL[c])
-        elif c in _TEX_MATH:
-            out.append(_TEX_MATH[c])
-        else:
-            out.append(c if (" " <= c <= "~") or ("\u00a0" <= c <= "\u00ff") else "?")
-    return "".join(out)
+    """Plain text as pdfLaTeX source (:func:`~pgsym.escaping.tex_escape`), the engine's math symbols as commands."""
+    return "".join(_TEX_MATH.get(piece) or tex_escape(piece) for piece in _TEX_MATH_SPLIT.split(str(text)))
 
 
 def _short(text: str, limit: int = 90) -> str:
@@ -312,8 +286,8 @@ class Verdict:
         >>> print(Verdict("x", "50% *of* A_1", "unknown").to_markdown(timing=False).splitlines()[0])
         **50% \\*of\\* A\\_1** (`x`): **? unknown**
         """
-        e = _md
-        lines = [f"**{e(self.title)}** ({_code(self.name)}): **{_STATUS_MARK[self.status]}**", ""]
+        e = md_escape
+        lines = [f"**{e(self.title)}** ({md_code(self.name)}): **{_STATUS_MARK[self.status]}**", ""]
         if self.statement and self.statement != self.title:
             lines += [f"*Claim.* {e(self.statement)}", ""]
         if self.constructions:
@@ -327,7 +301,7 @@ class Verdict:
             if self.certificate.normalisation:
                 lines += [f"*Normalisation:* {e(self.certificate.normalisation)}", ""]
             lines.append(f"*Certificate* ({e(self.certificate.method)}, in {e(self.certificate.ring)}):")
-            lines += [f"- {_code(_short(s, 160))}" for s in self.certificate.steps[:8]]
+            lines += [f"- {md_code(_short(s, 160))}" for s in self.certificate.steps[:8]]
             if len(self.certificate.steps) > 8:
                 lines.append(f"- … and {len(self.certificate.steps) - 8} more polynomials, each reduced to 0")
             lines += [f"- {e(self.identity_size())}", ""]

@@ -32,8 +32,8 @@ from click.testing import CliRunner
 from pgsym.cli import main
 from pgsym.csv_cells import csv_text, safe_cell
 from pgsym.errors import InputLimitError
+from pgsym.escaping import REPLACEMENT, math_is_safe, one_line
 from pgsym.exercises import html_math, render_html, render_ipynb, render_md, render_moodle, render_tex
-from pgsym.exercises._text import REPLACEMENT, math_is_safe, one_line
 from pgsym.exercises.errors import AnswersFileError, ManifestError, RosterError, TeXFailedError
 from pgsym.exercises.grading import read_answers
 from pgsym.exercises.model import Answer, Exercise, Part, Sheet

@@ -263,8 +263,12 @@ def md_escape(text: str) -> str:
     return _md_prose(one_line(text))
 
 
-def _md_code(text: str, line_start: bool) -> str:
-    """``text`` as one inline code span (line breaks as spaces), delimited by more backticks than it holds."""
+def md_code(text: str, line_start: bool = False) -> str:
+    """``text`` as one inline code span (line breaks as spaces), delimited by more backticks than it holds.
+
+    >>> md_code("a`b"), md_code("`x")
+    ('``a`b``', '`` `x ``')
+    """
     text = " ".join(text.split("\n"))
     fence = "`" * (max((len(run) for run in re.findall(r"`+", text)), default=0) + 1)
     # CommonMark strips one space at each end when both ends have one: add it when needed
@@ -277,7 +281,7 @@ def _md_code(text: str, line_start: bool) -> str:
 def _md_prose(text: str, line_start: bool = True) -> str:
     """Escape Markdown prose; ``line_start`` says whether ``text`` begins a line of the output."""
     if "\\" in text or "$" in text:
-        return _md_code(text, line_start)
+        return md_code(text, line_start)
     escaped = "".join("\\" + c if c in _MD_INLINE else c for c in text)
 
     def start(m: re.Match[str]) -> str:
