@@ -225,6 +225,10 @@ def _parse_arg(cur: _Line, depth: int) -> Any:
     if depth >= MAX_NESTING:
         raise StatementLimitError(f"parentheses nested more than {MAX_NESTING} deep", tok.line, tok.col)
     first = cur.peek()
+    if first.text == "(":
+        inner = _parse_arg(cur, depth + 1)
+        cur.expect(")")
+        return inner
     if first.kind == "name" and first.text in _OPERATIONS:
         call = _parse_expr(cur, depth + 1)
         cur.expect(")")
