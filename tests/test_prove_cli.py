@@ -130,3 +130,26 @@ def test_help_shows_an_example():
     result = _invoke("--help")
     assert result.exit_code == 0
     assert "points A B C D" in result.output and "prove collinear X Y Z" in result.output
+
+
+def test_discover_finds_and_proves_the_pappus_line():
+    result = CliRunner().invoke(main, ["discover", str(THEOREMS / "pappus.thm")])
+    assert result.exit_code == 0, result.output
+    assert "proved            X, Y, Z are collinear" in result.stdout
+    assert "by construction" not in result.stdout
+    result = CliRunner().invoke(main, ["discover", "--all", "--json", str(THEOREMS / "pappus.thm")])
+    rows = json.loads(result.stdout)
+    assert {"kind": "on", "objects": ["A", "join A D"], "text": "A lies on join A D",
+            "status": "by construction"} in rows
+
+
+def test_discover_bad_file_exits_2(tmp_path):
+    f = tmp_path / "bad.thm"
+    f.write_text("points A\npoint B = join A\n", encoding="utf-8")
+    result = CliRunner().invoke(main, ["discover", str(f)])
+    assert result.exit_code == 2 and f"Error: {f}:2:" in result.output
+
+
+def test_discover_help_shows_an_example():
+    result = CliRunner().invoke(main, ["discover", "--help"])
+    assert result.exit_code == 0 and "point P = meet (join A B) (join C D)" in result.output

@@ -23,7 +23,7 @@ from ..proofs.errors import StatementError, UnknownClaimError
 from ..proofs.verdicts import Status  # no SymPy: the statuses only
 from ._common import DecimalRange
 
-__all__ = ["prove_command"]
+__all__ = ["discover_command", "prove_command"]
 
 
 def _line(verdict) -> str:  # type: ignore[no-untyped-def]
@@ -135,3 +135,48 @@ def prove_command(names: tuple[str, ...], list_: bool, all_: bool, as_json: bool
     if bad:
         click.echo(f"not as expected: {', '.join(bad)}", err=True)
         sys.exit(1)
+
+
+_DISCOVER_EXAMPLE = """\b
+Example (quadrangle.thm):
+    points A B C D
+    point P = meet (join A B) (join C D)
+    point Q = meet (join A C) (join B D)
+    point R = meet (join A D) (join B C)
+    prove collinear A B P
+"""
+
+
+@click.command("discover", epilog=_DISCOVER_EXAMPLE)
+@click.argument("file")
+@click.option("--json", "as_json", is_flag=True, help="Print the relations as a JSON array.")
+@click.option("--timeout", type=DecimalRange(min=0, max=86400, min_open=True), default=5.0, show_default=True,
+              help="Seconds to prove each relation that does not hold by construction.")
+@click.option("--all", "all_", is_flag=True, help="Also list the relations that hold by construction.")
+def discover_command(file: str, as_json: bool, timeout: float, all_: bool) -> None:
+    """Find every incidence among the objects of a theorem file (FILE.thm), then prove each.
+
+    Relations (a point on a line, plane or conic; three collinear points; three concurrent lines; four
+    coplanar points; six points on a conic) are found on a random exact instance; those that do not hold
+    by construction are proved by the engine. Exit status 2 for a file that cannot be read.
+    """
+    from ..proofs.discovery import discover
+    from ..proofs.language import read_statement
+
+    try:
+        claim = read_statement(file)
+    except StatementError as err:
+        raise _BadFile(str(err)) from None
+    found = discover(claim, timeout=timeout)
+    shown = [r for r in found if all_ or not r.by_construction]
+    if as_json:
+        click.echo(json.dumps([{"kind": r.kind, "objects": list(r.objects), "text": r.text,
+                                "status": r.status} for r in shown], ensure_ascii=False, indent=1))
+        return
+    for r in shown:
+        click.echo(f"{r.status:16s}  {r.text}")
+    trivial = sum(r.by_construction for r in found)
+    click.echo(f"{len(found)} relations on a random instance: {trivial} by construction, "
+               f"{sum(r.status == 'proved' for r in found)} proved, "
+               f"{sum(r.status == 'false' for r in found)} false at a generic point, "
+               f"{sum(r.status == 'unknown' for r in found)} unknown", err=True)

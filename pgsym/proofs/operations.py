@@ -229,10 +229,6 @@ def _reciprocal(l: Any, m: Any) -> Any:
     return alg.dot(a, tuple(reversed(b)))
 
 
-def _minors3(rows: Sequence[Sequence[Any]]) -> tuple[Any, ...]:
-    return tuple(minor for _r, _c, minor in alg.minors(rows, 3))
-
-
 def _veronese(p: Sequence[Any]) -> tuple[Any, ...]:
     x, y, w = p
     return (x * x, x * y, y * y, x * w, y * w, w * w)
@@ -482,7 +478,7 @@ _TABLE = (
               core=_midpoint_core, same_kind=True, group="affine"),
     # conclusion quantities: zero exactly when the statement holds
     Operation("collinear3", (_POINT3,) * 3, "scalar",
-              lambda node, v, scalar: _minors3([tuple(col) for col in zip(*v, strict=True)]),
+              lambda node, v, scalar: tuple(m for _r, _c, m in alg.minors(alg.transpose(v), 3)),
               lambda n, d: f"3×3 minors of [{' '.join(n)}]", conclusion=True),
     Operation("on_line3", (_POINT3, ("line3",)), "scalar",
               lambda node, v, scalar: alg.matvec(_dual_plucker(v[1]), v[0]),
