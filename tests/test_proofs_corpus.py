@@ -83,11 +83,11 @@ def evaluate(claim, values: dict[str, Fraction]) -> dict[str, object]:
             v = sympy.Rational(node.data[0], node.data[1])
         elif op in ("join", "meet"):
             v = _cross(a[0], a[1])
-        elif op == "on_line":
+        elif op == "point_on_line":
             if _proportional(a[0], a[1]):
                 raise Undefined("the two points coincide")
             v = _vec(a[0]) + num(node.data[0]) * _vec(a[1])
-        elif op == "on_given_line":
+        elif op == "point_of_line":
             t = num(node.data[0])
             v = _cross(a[0], (1, t, t * t))
         elif op == "combine":
@@ -97,7 +97,7 @@ def evaluate(claim, values: dict[str, Fraction]) -> dict[str, object]:
         elif op == "conic_tangent_to":
             dual = conics.conic_through(*(_P(p) for p in a)).matrix
             v = dual.adjugate()
-        elif op in ("second_intersection", "conic_point"):
+        elif op in ("second_intersection", "point_on_conic"):
             conic = conics.Conic(a[0])
             p = _P(a[1])
             if op == "second_intersection":
@@ -126,10 +126,10 @@ def evaluate(claim, values: dict[str, Fraction]) -> dict[str, object]:
             if a[0].lies_in(plane):
                 raise Undefined("the line lies in the plane")
             v = _vec(a[0].intersect_plane(plane).coords)
-        elif op in ("cross_ratio2", "harmonic2"):
+        elif op in ("cross_ratio_collinear", "harmonic_conjugate_collinear"):
             objs = a
             p1 = _on_common_line(objs)
-            if op == "cross_ratio2":
+            if op == "cross_ratio_collinear":
                 v = projective_line.cross_ratio(*p1)
             else:
                 h = projective_line.harmonic_conjugate(*p1)

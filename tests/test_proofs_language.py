@@ -121,8 +121,9 @@ def test_midpoint_is_right_for_any_representatives():
 
 
 def test_every_new_operation_says_its_group():
-    for name in ("second_intersection", "conic_point", "conic_tangent_to", "line_meets_plane", "line_of_planes",
-                 "cross_ratio2", "harmonic2", "on_line", "on_given_line", "collinear3", "on_line3", "lines_meet",
+    for name in ("second_intersection", "point_on_conic", "conic_tangent_to", "line_meets_plane", "line_of_planes",
+                 "cross_ratio_collinear", "harmonic_conjugate_collinear", "point_on_line", "point_of_line",
+                 "collinear3", "on_line3", "lines_meet",
                  "on_conic", "tangent_to", "six_on_conic"):
         assert OPERATIONS[name].group == "projective"
     assert all(OPERATIONS[n].conclusion for n in ("collinear3", "on_line3", "lines_meet", "six_on_conic"))

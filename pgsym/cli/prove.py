@@ -150,7 +150,7 @@ Example (quadrangle.thm):
 @click.command("discover", epilog=_DISCOVER_EXAMPLE)
 @click.argument("file")
 @click.option("--json", "as_json", is_flag=True, help="Print the relations as a JSON array.")
-@click.option("--timeout", type=DecimalRange(min=0, max=86400, min_open=True), default=5.0, show_default=True,
+@click.option("--timeout", type=DecimalRange(min=0, max=86400, min_open=True), default=2.0, show_default=True,
               help="Seconds to prove each relation that does not hold by construction.")
 @click.option("--all", "all_", is_flag=True, help="Also list the relations that hold by construction.")
 def discover_command(file: str, as_json: bool, timeout: float, all_: bool) -> None:

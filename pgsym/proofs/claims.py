@@ -431,26 +431,37 @@ class Claim:
         if t is None:
             (t,) = self.params(f"{name}_t")
         t = _polynomial(t, self.parameters, f"parameter of {name}")
-        return self._construct("conic_point", name, (c, p), (t,))
+        return self._construct("point_on_conic", name, (c, p), (t,))
 
     def point_on_line(self, name: str, p: Any, q: Any = None, t: Any = None) -> Node:
-        """A point of a line with one parameter t (a new parameter ``X_t`` unless given).
+        """A point of the line PQ (points of P² or P³) with one parameter t: ``P + t Q``.
 
-        With two points P, Q (of P² or P³): ``P + t Q``, the points of the line PQ. With a line l of P²:
-        ``l × (1, t, t²)``, its meet with the tangents of a fixed conic, which sweep every point of l.
+        ``t`` defaults to a new parameter ``X_t``. Given a line l of P² instead of two points, this is
+        :meth:`point_of_line`.
 
         >>> c = Claim("x", "x")
         >>> c.point_on_line("X", c.free_point("P"), c.free_point("Q")).description
         'P + X_t·Q'
-        >>> c.point_on_line("Y", c.free_line("l")).conditions
+        """
+        if q is None:
+            return self.point_of_line(name, p, t)
+        if t is None:
+            (t,) = self.params(f"{name}_t")
+        t = _polynomial(t, self.parameters, f"parameter of {name}")
+        return self._construct("point_on_line", name, (p, q), (t,))
+
+    def point_of_line(self, name: str, l: Any, t: Any = None) -> Node:
+        """A point of a line l of P² with one parameter t: ``l × (1, t, t²)``, its meet with the tangents of a
+        fixed conic, which sweep every point of l (``t`` defaults to a new parameter ``X_t``).
+
+        >>> c = Claim("x", "x")
+        >>> c.point_of_line("Y", c.free_line("l")).conditions
         ['Y is a point of l']
         """
         if t is None:
             (t,) = self.params(f"{name}_t")
         t = _polynomial(t, self.parameters, f"parameter of {name}")
-        if q is None:
-            return self._construct("on_given_line", name, (p,), (t,))
-        return self._construct("on_line", name, (p, q), (t,))
+        return self._construct("point_of_line", name, (l,), (t,))
 
     def conic_tangent_to(self, name: str, *lines: Any) -> Node:
         """The conic tangent to five lines (the dual conic through them, turned back into a point conic).
@@ -481,11 +492,11 @@ class Claim:
         With ``A × C = λ_AC l`` on the common line l: ``λ_AC λ_BD / (λ_AD λ_BC)``, the P¹ cross-ratio of the
         points on that line (the same for every choice of coordinates on it).
         """
-        return self._construct("cross_ratio2", name, (a, b, c, d))
+        return self._construct("cross_ratio_collinear", name, (a, b, c, d))
 
     def harmonic_conjugate_collinear(self, name: str, a: Any, b: Any, c: Any) -> Node:
         """The harmonic conjugate of C with respect to A and B: collinear points (or concurrent lines) of P²."""
-        return self._construct("harmonic2", name, (a, b, c))
+        return self._construct("harmonic_conjugate_collinear", name, (a, b, c))
 
     def midpoint(self, name: str, a: Any, b: Any) -> Node:
         """The affine midpoint ``w_B A + w_A B`` of two finite points of P² (or P³), right for any representatives.
@@ -619,7 +630,7 @@ class Claim:
 
     def _conclude_quantity(self, op: str, args: Sequence[Any], text: str) -> None:
         """A conclusion through a quantity of the table that vanishes exactly when the statement holds."""
-        node = self._construct(op, f"_{op}{len(self.conclusions)}", args)
+        node = self._construct(op, f"_{op}{len(self.nodes)}", args)
         self._conclude("zero", (node,), text)
 
     def conclude_collinear3(self, a: Any, b: Any, c: Any) -> None:

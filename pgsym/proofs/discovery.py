@@ -33,7 +33,7 @@ import sympy
 
 from .. import ring as alg
 from .claims import Claim, Node
-from .operations import flat
+from .operations import OPERATIONS, flat
 from .verdicts import Verdict
 
 __all__ = ["MAX_SIX", "Relation", "discover"]
@@ -87,18 +87,30 @@ def _incident_by_construction(p: Node, x: Node) -> bool:
     """p lies on x (a line, plane or conic) because of how one of them was built."""
     if x.op in ("join", "plane_through", "conic_through") and p in x.args:
         return True
-    if p.op in ("meet", "point_on_planes", "on_given_line") and x in p.args:
+    if p.op == "line_meets_plane" and (p.args[1] is x or (p.args[0].op == "line_of_planes" and x in p.args[0].args)):
         return True
-    if p.op in ("second_intersection", "conic_point") and p.args[0] is x:
+    if p.op == "point_on_line" and x.op == "plane_through" and set(p.args) <= set(x.args):
         return True
-    if p.op == "on_line" and x.op == "join" and set(p.args) == set(x.args):
+    if p.op in ("meet", "point_on_planes", "point_of_line") and x in p.args:
         return True
-    return x.op == "polar" and p.kind == "point" and x.args[1] is p and p.op in ("second_intersection", "conic_point")
+    if p.op in ("second_intersection", "point_on_conic") and p.args[0] is x:
+        return True
+    if p.op == "point_on_line" and x.op == "join" and set(p.args) == set(x.args):
+        return True
+    on_conic = p.op in ("second_intersection", "point_on_conic")
+    return x.op == "polar" and p.kind == "point" and x.args[1] is p and on_conic
+
+
+def _on_line3_by_construction(c: Node, a: Node, b: Node) -> bool:
+    """c lies on the line AB of P³ by construction (a point of AB, or where the line AB meets a plane)."""
+    if c.op == "point_on_line" and set(c.args) == {a, b}:
+        return True
+    return c.op == "line_meets_plane" and c.args[0].op == "line3" and set(c.args[0].args) == {a, b}
 
 
 def _collinear_by_construction(pts: tuple[Node, ...], lines: list[Node]) -> bool:
     for a, b, c in itertools.permutations(pts):
-        if c.op == "on_line" and set(c.args) == {a, b}:
+        if c.op == "point_on_line" and set(c.args) == {a, b}:
             return True
     return any(all(_incident_by_construction(p, l) for p in pts) for l in lines)
 
@@ -112,6 +124,7 @@ def _relations(claim: Claim, values: dict[str, Any]) -> list[Relation]:
     pts, lines = by_kind.get("point", []), by_kind.get("line", [])
     pts3, planes, conics = by_kind.get("point3", []), by_kind.get("plane", []), by_kind.get("conic", [])
     v = values
+    names3 = {p.name for p in pts3}
     found: list[Relation] = []
 
     def distinct(objs: tuple[Node, ...]) -> bool:
@@ -135,7 +148,15 @@ def _relations(claim: Claim, values: dict[str, Any]) -> list[Relation]:
             by = any(all(_incident_by_construction(p, l) for l in trio) for p in pts)
             found.append(Relation("concurrent", tuple(l.name for l in trio),
                                   f"{', '.join(l.name for l in trio)} are concurrent", by))
+    for trio in itertools.combinations(pts3, 3):
+        if distinct(trio) and all(m == 0 for _r, _c, m in alg.minors(alg.transpose([v[p.name] for p in trio]), 3)):
+            by = any(_on_line3_by_construction(c, a, b) for a, b, c in itertools.permutations(trio))
+            found.append(Relation("collinear", tuple(p.name for p in trio),
+                                  f"{', '.join(p.name for p in trio)} are collinear", by))
+    collinear3 = {frozenset(r.objects) for r in found if r.kind == "collinear" and r.objects[0] in names3}
     for quad in itertools.combinations(pts3, 4):
+        if any(frozenset(t.name for t in trio) in collinear3 for trio in itertools.combinations(quad, 3)):
+            continue  # three collinear points are coplanar with any fourth
         if distinct(quad) and alg.det([v[p.name] for p in quad]) == 0:
             by = any(all(_incident_by_construction(p, e) for p in quad) for e in planes)
             found.append(Relation("coplanar", tuple(p.name for p in quad),
@@ -155,14 +176,14 @@ def _relations(claim: Claim, values: dict[str, Any]) -> list[Relation]:
 def _claim_for(claim: Claim, rel: Relation) -> Claim:
     c = Claim(f"{claim.name}: {rel.text}", rel.text)
     c.parameters = list(claim.parameters)
-    c.nodes = dict(claim.nodes)
+    c.nodes = {k: n for k, n in claim.nodes.items() if n.op in OPERATIONS and not n.operation.conclusion}
     c.hypotheses = list(claim.hypotheses)
     objs = [claim.nodes[n] for n in rel.objects]
     if rel.kind == "on":
         x = objs[1]
         (c.conclude_on_conic if x.kind == "conic" else c.conclude_incident)(*objs)
     elif rel.kind == "collinear":
-        c.conclude_collinear(*objs)
+        (c.conclude_collinear3 if objs[0].kind == "point3" else c.conclude_collinear)(*objs)
     elif rel.kind == "concurrent":
         c.conclude_concurrent(*objs)
     elif rel.kind == "coplanar":
@@ -172,11 +193,13 @@ def _claim_for(claim: Claim, rel: Relation) -> Claim:
     return c
 
 
-def discover(claim: Claim, *, timeout: float | None = 5.0, seed: int = 0, prove_them: bool = True) -> list[Relation]:
+def discover(claim: Claim, *, timeout: float | None = 2.0, seed: int = 0, prove_them: bool = True) -> list[Relation]:
     """Every relation among the claim's objects that holds on a random exact instance, each then proved.
 
     Relations that hold by construction are marked and not proved again; the others carry the engine's
-    verdict (``proved``, ``false`` when the instance was special, or ``unknown`` after ``timeout`` seconds).
+    verdict (``proved``, ``false`` when the instance was special, or ``unknown`` after ``timeout`` seconds
+    each). Relations implied by a collinear triple (four coplanar points, six points on a line pair) are
+    left out.
     The claim's own conclusions are not needed (and not used).
     """
     from .engine import prove

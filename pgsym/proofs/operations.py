@@ -13,8 +13,10 @@ calls it.
 ['A ≠ B']
 >>> OPERATIONS["apply"].result_kind(["matrix", "point3"])
 'point3'
->>> sorted(n for n, op in OPERATIONS.items() if not op.constructible)
+>>> sorted(n for n, op in OPERATIONS.items() if not op.constructible and not op.conclusion)
 ['const', 'free']
+>>> OPERATIONS["lines_meet"].conclusion     # a conclusion's quantity, built by Claim.conclude_lines_meet
+True
 """
 
 from __future__ import annotations
@@ -435,18 +437,18 @@ _TABLE = (
               lambda n, name, d: [f"{n[1]} ≠ {n[2]} ({name} is the second point of {n[0]} on the line {n[1]}{n[2]}; "
                                   f"{n[1]} must lie on {n[0]})"],
               core=_second_core),
-    Operation("conic_point", (("conic",), _POINT), "point", _conic_point,
+    Operation("point_on_conic", (("conic",), _POINT), "point", _conic_point,
               lambda n, d: f"second point of {n[0]} on the line through {n[1]} and (1, {d[0]}, {d[0]}²)",
               lambda n, name, d: [f"{name} is defined ({n[1]} lies on {n[0]}, the line through it is no tangent)"],
               core=_conic_point_core, coefficients=True),
-    Operation("on_line", (("point", "point3"), ("point", "point3")), 0,
+    Operation("point_on_line", (("point", "point3"), ("point", "point3")), 0,
               lambda node, v, scalar: tuple(a + scalar(node.data[0]) * b for a, b in zip(v[0], v[1], strict=True)),
               lambda n, d: f"{n[0]} + {d[0]}·{n[1]}", lambda n, name, d: [f"{n[0]} ≠ {n[1]}"],
               lambda node, value, args: [_pairs(args[0], args[1])],
               core=lambda node, a, exact: _vector(node.kind, (x + exact(node.data[0]) * y
                                                               for x, y in zip(a[0].coords, a[1].coords, strict=True))),
               same_kind=True, coefficients=True),
-    Operation("on_given_line", (_LINE,), "point",
+    Operation("point_of_line", (_LINE,), "point",
               lambda node, v, scalar: alg.cross(v[0], _moment(scalar(node.data[0]))),
               lambda n, d: f"{n[0]} × (1, {d[0]}, {d[0]}²)", lambda n, name, d: [f"{name} is a point of {n[0]}"],
               core=lambda node, a, exact: projective_plane.meet(
@@ -463,12 +465,12 @@ _TABLE = (
     Operation("line_of_planes", (_PLANE, _PLANE), "line3", _line_of_planes_formula,
               lambda n, d: f"({n[0]} {n[1]}ᵀ − {n[1]} {n[0]}ᵀ)*", lambda n, name, d: [f"{n[0]} ≠ {n[1]}"],
               core=lambda node, a, exact: plucker.Line3.meet(*a)),
-    Operation("cross_ratio2", (("point", "line"),) * 4, "ratio", _cross_ratio2,
+    Operation("cross_ratio_collinear", (("point", "line"),) * 4, "ratio", _cross_ratio2,
               lambda n, d: f"({n[0]}, {n[1]}; {n[2]}, {n[3]})",
               lambda n, name, d: [f"{n[0]} ≠ {n[3]}, {n[1]} ≠ {n[2]} and {n[0]} ≠ {n[1]} "
                                   f"({', '.join(n)} collinear or concurrent)"],
               lambda node, value, args: [[value[1]]], core=_cross_ratio2_core, same_kind=True),
-    Operation("harmonic2", (("point", "line"),) * 3, 0, _harmonic2,
+    Operation("harmonic_conjugate_collinear", (("point", "line"),) * 3, 0, _harmonic2,
               lambda n, d: f"harmonic conjugate of {n[2]} with respect to {n[0]}, {n[1]}",
               lambda n, name, d: [f"{', '.join(n)} are distinct ({', '.join(n)} collinear or concurrent)"],
               core=_harmonic2_core, same_kind=True),
@@ -479,23 +481,23 @@ _TABLE = (
     # conclusion quantities: zero exactly when the statement holds
     Operation("collinear3", (_POINT3,) * 3, "scalar",
               lambda node, v, scalar: tuple(m for _r, _c, m in alg.minors(alg.transpose(v), 3)),
-              lambda n, d: f"3×3 minors of [{' '.join(n)}]", conclusion=True),
+              lambda n, d: f"3×3 minors of [{' '.join(n)}]", constructible=False, conclusion=True),
     Operation("on_line3", (_POINT3, ("line3",)), "scalar",
               lambda node, v, scalar: alg.matvec(_dual_plucker(v[1]), v[0]),
-              lambda n, d: f"{n[1]}* {n[0]}", conclusion=True),
+              lambda n, d: f"{n[1]}* {n[0]}", constructible=False, conclusion=True),
     Operation("lines_meet", (("line3",), ("line3",)), "scalar",
               lambda node, v, scalar: (_reciprocal(v[0], v[1]),),
-              lambda n, d: f"reciprocal product of {n[0]} and {n[1]}", conclusion=True),
+              lambda n, d: f"reciprocal product of {n[0]} and {n[1]}", constructible=False, conclusion=True),
     Operation("on_conic", (_POINT, ("conic",)), "scalar",
               lambda node, v, scalar: (alg.dot(v[0], alg.matvec(v[1], v[0])),),
-              lambda n, d: f"{n[0]}ᵀ {n[1]} {n[0]}", conclusion=True),
+              lambda n, d: f"{n[0]}ᵀ {n[1]} {n[0]}", constructible=False, conclusion=True),
     Operation("tangent_to", (_LINE, ("conic",)), "scalar",
               lambda node, v, scalar: (alg.dot(v[0], alg.matvec(alg.adjugate(v[1]), v[0])),),
-              lambda n, d: f"{n[0]}ᵀ adj({n[1]}) {n[0]}", conclusion=True),
+              lambda n, d: f"{n[0]}ᵀ adj({n[1]}) {n[0]}", constructible=False, conclusion=True),
     Operation("six_on_conic", (("point", "line"),) * 6, "scalar",
               lambda node, v, scalar: (alg.det([_veronese(p) for p in v]),),
               lambda n, d: f"det of the 6×6 matrix of the quadratic monomials of {', '.join(n)}",
-              same_kind=True, conclusion=True),
+              same_kind=True, constructible=False, conclusion=True),
     Operation("formula", None, "formula", lambda node, v, scalar: node.data(*v),
               lambda n, d: f"{getattr(d, '__name__', 'f')}({', '.join(n)})", group=None),
 )
