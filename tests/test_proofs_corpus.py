@@ -11,6 +11,7 @@ reported as an expected failure naming the time limit: never "proved" wrongly, n
 
 from __future__ import annotations
 
+import itertools
 import time
 from fractions import Fraction
 from pathlib import Path
@@ -249,3 +250,25 @@ def test_random_claims_agree_with_exact_evaluation(program):
     if truth is None or verdict.status == "unknown":
         return
     assert verdict.proved == truth, f"{text}\n→ {verdict.status} ({verdict.reason}), exact evaluation: {truth}"
+
+
+_DISCOVERED = {"det": ("collinear", "concurrent", "coplanar"), "incident": ("on",)}
+
+
+@pytest.mark.parametrize("path", CORPUS, ids=[p.stem for p in CORPUS])
+def test_discovery_finds_the_conclusion_of_every_true_theorem(path):
+    # on a random instance, the theorem's own collinearity, concurrency, coplanarity or incidence is among
+    # the relations found (without proving them: the proofs are the test above)
+    from pgsym.proofs.discovery import discover
+
+    claim = read_statement(path)
+    found = discover(claim, prove_them=False)
+    relations = {(r.kind, frozenset(r.objects)) for r in found}
+    for c in claim.conclusions:
+        names = frozenset(a.name for a in c.args)
+        if c.kind not in _DISCOVERED or len(names) < len(c.args):
+            continue
+        hit = any((kind, names) in relations for kind in _DISCOVERED[c.kind])
+        if len(names) == 4:  # four points of P³ with three collinear are coplanar: discovery leaves that out
+            hit = hit or any(("collinear", frozenset(t)) in relations for t in itertools.combinations(names, 3))
+        assert hit == claim.expected, f"{c.text}: {'not ' if claim.expected else ''}found on a random instance"
