@@ -14,7 +14,16 @@ from __future__ import annotations
 
 from .._lazy import lazy_names
 from . import errors as _errors
-from .errors import NonPolynomialClaimError, UndefinedConstructionError, UnknownClaimError  # noqa: F401 (re-exported)
+from .errors import (  # noqa: F401 (re-exported)
+    NonPolynomialClaimError,
+    StatementError,
+    StatementKindError,
+    StatementLimitError,
+    StatementNameError,
+    StatementSyntaxError,
+    UndefinedConstructionError,
+    UnknownClaimError,
+)
 
 _LAZY = {
     "CATALOGUE": "catalogue",
@@ -23,6 +32,9 @@ _LAZY = {
     "prove": "catalogue",
     "prove_all": "catalogue",
     "Claim": "claims",
+    "discover": "discovery",
+    "parse_statement": "language",
+    "read_statement": "language",
     "PRIME": "engine",
     "Certificate": "verdicts",
     "Condition": "verdicts",
