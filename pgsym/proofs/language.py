@@ -55,8 +55,9 @@ Predicates of ``prove``: ``collinear`` (three points of P² or P³), ``concurren
 ``coplanar`` (four points of P³), ``on`` (point on line, plane, line3 or conic), ``tangent`` (line
 touching a conic), ``meet`` (two lines of P³ meet), ``conconic`` (six points on a conic, or six lines
 tangent to one), ``equal`` (two objects equal up to scale; two ratios, or a ratio and a number),
-``harmonic`` (A B C D: the cross-ratio is −1). Several ``prove`` lines must all hold. The Python API's
-``formula`` (an arbitrary function) and equation hypotheses (``assume_zero``) have no statement form.
+``harmonic`` (A B C D: the cross-ratio is −1). Several ``prove`` lines must all hold. Parts of the Python
+API with no statement form: ``formula`` (an arbitrary function), ``combine`` with given coefficients,
+equation hypotheses (``assume_zero``), exact (not projective) equality, ranks and degrees of freedom.
 
 Reading is bounded (:mod:`pgsym.limits`): the text, a line, a name, the number of objects and the
 nesting of parentheses. Every problem raises a :class:`~pgsym.proofs.errors.StatementError` subclass
