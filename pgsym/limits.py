@@ -32,6 +32,10 @@ __all__ = [
     "MAX_IMAGE_PIXELS",
     "MAX_NAME_CHARS",
     "MAX_NESTING",
+    "MAX_STATEMENT_BYTES",
+    "MAX_STATEMENT_LINE_CHARS",
+    "MAX_STATEMENT_NAME_CHARS",
+    "MAX_STATEMENT_OBJECTS",
     "read_bounded",
     "read_text_file",
 ]
@@ -62,6 +66,18 @@ MAX_IMAGE_BYTES = 200_000_000
 
 MAX_NAME_CHARS = 20_000
 """One roster field other than the id (a student's name), in characters."""
+
+MAX_STATEMENT_BYTES = 200_000
+"""A theorem in the statement language (``pgsym prove FILE``): bytes read."""
+
+MAX_STATEMENT_LINE_CHARS = 1000
+"""One line of a theorem in the statement language, in characters."""
+
+MAX_STATEMENT_NAME_CHARS = 40
+"""One name (of an object or parameter) in the statement language, in characters."""
+
+MAX_STATEMENT_OBJECTS = 400
+"""Objects (named or nested constructions) of one theorem in the statement language."""
 
 _CHUNK = 1 << 16
 

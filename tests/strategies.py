@@ -150,3 +150,33 @@ def forms_through_a_point(draw, k: int):
 def point1s() -> st.SearchStrategy:
     """Points of P¹ with integer coordinates up to 9, a third of them ideal."""
     return homogeneous_vectors(2, True, integers(9)).map(lambda t: Point1(*t))
+
+
+def statement_programs(draw) -> tuple[str, int]:
+    """A random theorem of the statement language (free points and lines, joins, meets, points on lines, and
+    one incidence, collinearity or concurrency conclusion), with a seed for evaluating it: (text, seed)."""
+    points = [f"P{i}" for i in range(draw(st.integers(3, 5)))]
+    lines = [f"l{i}" for i in range(draw(st.integers(0, 2)))]
+    text = [f"points {' '.join(points)}"] + ([f"lines {' '.join(lines)}"] if lines else [])
+    for i in range(draw(st.integers(1, 5))):
+        step = draw(st.sampled_from(["join", "meet", "on"] if len(lines) >= 2 else ["join", "on"]))
+        if step == "meet":
+            a, b = draw(st.lists(st.sampled_from(lines), min_size=2, max_size=2, unique=True))
+            name = f"X{i}"
+            text.append(f"point {name} = meet {a} {b}")
+            points.append(name)
+        else:
+            a, b = draw(st.lists(st.sampled_from(points), min_size=2, max_size=2, unique=True))
+            name = f"X{i}" if step == "on" else f"m{i}"
+            text.append(f"point {name} on line {a} {b}" if step == "on" else f"line {name} = join {a} {b}")
+            (points if step == "on" else lines).append(name)
+    kinds = ["collinear"] + (["concurrent"] if len(lines) >= 3 else []) + (["on"] if lines else [])
+    kind = draw(st.sampled_from(kinds))
+    if kind == "collinear":
+        args = draw(st.lists(st.sampled_from(points), min_size=3, max_size=3, unique=True))
+    elif kind == "concurrent":
+        args = draw(st.lists(st.sampled_from(lines), min_size=3, max_size=3, unique=True))
+    else:
+        args = [draw(st.sampled_from(points)), draw(st.sampled_from(lines))]
+    text.append(f"prove {kind} {' '.join(args)}")
+    return "\n".join(text) + "\n", draw(st.integers(0, 2**16))

@@ -245,7 +245,8 @@ def test_every_operation_of_the_table_has_formula_conditions_and_core_builder():
     for op in OPERATIONS.values():
         assert callable(op.formula) and callable(op.conditions) and callable(op.description), op.name
         # a user formula has no counterpart in the core, and a constant ratio is just a number
-        assert (op.core is None) == (op.name in ("formula", "const")), op.name
+        # (nor has a conclusion's quantity, e.g. the reciprocal product of two lines)
+        assert (op.core is None) == (op.name in ("formula", "const") or op.conclusion), op.name
         for kinds in op.arg_kinds or ():
             assert set(kinds) <= set(KINDS), op.name
         assert isinstance(op.result, int) or op.result in KINDS or op.name in ("free", "formula"), op.name
@@ -258,7 +259,7 @@ def test_the_builder_accepts_exactly_the_table_operations():
     from pgsym.proofs.operations import OPERATIONS, constructions
 
     accepted = set(constructions())
-    assert accepted == {n for n, op in OPERATIONS.items() if op.constructible} | {"apply_plane"}
+    assert accepted == {n for n, op in OPERATIONS.items() if op.constructible} | {"apply_plane", "tangent"}
     for name in accepted:
         assert callable(getattr(Claim, name)), name
     for name in ("free", "const", "frobnicate", "cross"):
@@ -311,11 +312,29 @@ def test_one_claim_with_every_operation_agrees_with_the_core():
     h = c.harmonic_conjugate("h", a, b, d)
     c.conclude_equal_ratio(c.cross_ratio("cr", a, b, d, h), -1)  # -1 is a constant ratio node
     c.formula("f", "scalar", alg.dot, l, A)
+    # the constructions and conclusions of the published theorems, on the circle x² + y² = w² through U
+    K0, U = c.conic("Kc", [[1, 0, 0], [0, 1, 0], [0, 0, -1]]), c.point("U", 1, 0)
+    S2, S3 = c.second_intersection("S2", K0, U, A), c.point_on_conic("S3", K0, U, s)
+    tangents = [c.line(f"t{i}", *v) for i, v in enumerate([(1, 0, -1), (0, 1, -1), (1, 0, 1), (0, 1, 1), (3, 4, -5)])]
+    c.conic_tangent_to("CT", *tangents)
+    c.point_on_line("PL", A, B)
+    c.point_of_line("PG", l)
+    LM = c.line_meets_plane("LM", c.nodes["L"], c.plane("q3", 0, 0, 1, s))
+    c.line_of_planes("LP", pi, c.plane("q4", 1, 1, 0, s))
+    c.cross_ratio_collinear("cr2", A, B, c.nodes["X"], c.nodes["Y"])
+    c.harmonic_conjugate_collinear("hc2", A, B, c.nodes["X"])
+    c.midpoint("M", A, B)
+    c.conclude_collinear3(Q, P1, LM)
+    c.conclude_on_line3(LM, c.nodes["L"])
+    c.conclude_lines_meet(c.nodes["L"], c.line3("L2", Q, P2))
+    c.conclude_on_conic(S2, K0)
+    c.conclude_tangent(tangents[0], K0)
+    c.conclude_conconic(U, S2, S3, *(c.point(f"V{i}", *v) for i, v in enumerate([(0, 1), (-1, 0), (0, -1)])))
     c.conclude_incident(A, l)
     assert {n.op for n in c.nodes.values()} == set(OPERATIONS)
     v = prove(c)
     assert v.proved, v.reason
-    rebuilt = sum(1 for n in c.nodes.values() if n.op not in ("formula", "const"))
+    rebuilt = sum(1 for n in c.nodes.values() if n.op not in ("formula", "const") and not n.operation.conclusion)
     assert v.core_check == f"{rebuilt} objects rebuilt with pgsym's core at a rational point agree with the formulas"
 
 

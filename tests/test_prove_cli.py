@@ -1,4 +1,4 @@
-"""`pgsym prove`, run as the installed command."""
+"""`pgsym prove`, run as the installed command; theorem files (``pgsym prove FILE``) in-process with CliRunner."""
 
 from __future__ import annotations
 
@@ -8,8 +8,12 @@ import subprocess
 import sys
 from pathlib import Path
 
+from click.testing import CliRunner
+
+from pgsym.cli import main
 from pgsym.proofs import CATALOGUE, catalogue_names
 
+THEOREMS = Path(__file__).parent / "theorems"
 PGSYM = shutil.which("pgsym", path=str(Path(sys.executable).parent))
 
 
@@ -61,3 +65,91 @@ def test_usage_errors_exit_two():
                           (("--all", "pappus"), "not both")):
         result = run(*args)
         assert result.returncode == 2 and message in result.stderr
+
+
+# -- theorem files ------------------------------------------------------------------------------------
+
+
+
+def _invoke(*args: str):
+    return CliRunner().invoke(main, ["prove", *args], catch_exceptions=False)
+
+
+def test_a_true_theorem_file_is_proved():
+    result = _invoke(str(THEOREMS / "pappus.thm"))
+    assert result.exit_code == 0, result.output
+    assert result.stdout.startswith("proved")
+    assert "pappus" in result.stdout
+
+
+def test_a_false_theorem_file_is_refuted_as_expected():
+    result = _invoke(str(THEOREMS / "fano-false.thm"))
+    assert result.exit_code == 0, result.output
+    assert result.stdout.startswith("false") and "counterexample" in result.stdout and "[false claim]" in result.stdout
+
+
+def test_certificate_and_json(tmp_path):
+    result = _invoke(str(THEOREMS / "desargues.thm"), "--certificate")
+    assert result.exit_code == 0
+    assert "Non-degeneracy conditions" in result.output and "O ≠ A" in result.output
+    result = _invoke(str(THEOREMS / "desargues.thm"), "--json")
+    (verdict,) = json.loads(result.stdout)
+    assert verdict["status"] == "proved" and verdict["name"] == "desargues"
+
+
+def test_catalogue_names_still_work():
+    result = _invoke("pappus")
+    assert result.exit_code == 0 and result.stdout.startswith("proved")
+
+
+def test_a_file_stated_true_but_false_exits_1(tmp_path):
+    f = tmp_path / "wrong.thm"
+    f.write_text("points A B C\nprove collinear A B C\n", encoding="utf-8")
+    result = CliRunner().invoke(main, ["prove", str(f)])
+    assert result.exit_code == 1
+    assert "not as expected: wrong" in result.output
+
+
+def test_bad_files_exit_2_with_file_line_and_column(tmp_path):
+    f = tmp_path / "bad.thm"
+    f.write_text("points A B\nline l = join A C\nprove on A l\n", encoding="utf-8")
+    result = CliRunner().invoke(main, ["prove", str(f)])
+    assert result.exit_code == 2
+    # line 2, column 17: the C of "line l = join A C"
+    assert f"Error: {f}:2:17: C is not defined" in result.output
+    missing = tmp_path / "missing.thm"
+    result = CliRunner().invoke(main, ["prove", str(missing)])
+    assert result.exit_code == 2 and "Error:" in result.output and "cannot read" in result.output
+    binary = tmp_path / "binary.thm"
+    binary.write_bytes(b"points A\x00\xff\n")
+    result = CliRunner().invoke(main, ["prove", str(binary)])
+    assert result.exit_code == 2 and f"Error: {binary}:1:" in result.output
+
+
+def test_help_shows_an_example():
+    result = _invoke("--help")
+    assert result.exit_code == 0
+    assert "points A B C D" in result.output and "prove collinear X Y Z" in result.output
+
+
+def test_discover_finds_and_proves_the_pappus_line():
+    result = CliRunner().invoke(main, ["discover", str(THEOREMS / "pappus.thm")])
+    assert result.exit_code == 0, result.output
+    assert "proved            X, Y, Z are collinear" in result.stdout
+    assert "by construction" not in result.stdout
+    result = CliRunner().invoke(main, ["discover", "--all", "--json", str(THEOREMS / "pappus.thm")])
+    rows = json.loads(result.stdout)
+    assert {"kind": "on", "objects": ["A", "join A D"], "text": "A lies on join A D",
+            "status": "by construction"} in rows
+
+
+def test_discover_bad_file_exits_2(tmp_path):
+    f = tmp_path / "bad.thm"
+    f.write_text("points A\npoint B = join A\n", encoding="utf-8")
+    result = CliRunner().invoke(main, ["discover", str(f)])
+    assert result.exit_code == 2 and f"Error: {f}:2:" in result.output
+
+
+def test_discover_help_shows_an_example():
+    result = CliRunner().invoke(main, ["discover", "--help"])
+    assert result.exit_code == 0 and "point P = meet (join A B) (join C D)" in result.output

@@ -23,7 +23,7 @@ from .. import __version__
 from ..errors import PgsymError
 from .exercises import check_command, sheet_command, templates_group
 from .geometry import join_command, meet_command
-from .prove import prove_command
+from .prove import discover_command, prove_command
 from .vision import harris_command, rectify_command
 
 __all__ = ["main"]
@@ -87,6 +87,7 @@ def main() -> None:
 for _command in (join_command, meet_command, harris_command, rectify_command, prove_command,
                  sheet_command, check_command, templates_group):
     main.add_command(_command)
+main.add_command(discover_command)
 
 
 if __name__ == "__main__":  # pragma: no cover

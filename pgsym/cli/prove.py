@@ -1,25 +1,29 @@
-"""The ``pgsym prove`` command: prove catalogue claims from the shell.
+"""The ``pgsym prove`` command: prove catalogue claims, or theorems written in the statement language.
 
     $ pgsym prove pappus
     proved    pappus    Pappus's hexagon theorem    (4 conditions)
+    $ pgsym prove tests/theorems/pappus.thm
 
-The exit status is 1 when a claim stated as true is not proved, or a claim
-stated as false is "proved"; 0 otherwise.
+An argument ending in ``.thm``, or naming an existing file, is read as a theorem of the
+statement language (:mod:`pgsym.proofs.language`). The exit status is 1 when a claim stated
+as true is not proved, or a claim stated as false is "proved"; 2 for a file that cannot be read
+(``Error: FILE:LINE:COL: message``); 0 otherwise.
 """
 
 from __future__ import annotations
 
 import json
+import os
 import sys
 
 import click
 
 from ..limits import MAX_ARGUMENT_CHARS
-from ..proofs.errors import UnknownClaimError
+from ..proofs.errors import StatementError, UnknownClaimError
 from ..proofs.verdicts import Status  # no SymPy: the statuses only
 from ._common import DecimalRange
 
-__all__ = ["prove_command"]
+__all__ = ["discover_command", "prove_command"]
 
 
 def _line(verdict) -> str:  # type: ignore[no-untyped-def]
@@ -35,17 +39,47 @@ def _line(verdict) -> str:  # type: ignore[no-untyped-def]
     return f"{verdict.status:8s}  {verdict.name:40s}  {extra}  {1000 * verdict.elapsed:.0f} ms{expected}{ok}"
 
 
-@click.command("prove")
+_SUFFIX = ".thm"  # pgsym.proofs.language.STATEMENT_SUFFIX (not imported here: it loads SymPy)
+
+
+class _BadFile(click.ClickException):
+    """A theorem file that cannot be read: ``Error: FILE:LINE:COL: message``, exit status 2."""
+
+    exit_code = 2
+
+
+def _is_file(name: str) -> bool:
+    return name.endswith(_SUFFIX) or os.path.isfile(name)
+
+
+_EXAMPLE = """\b
+Example theorem file (pappus.thm):
+    title Pappus's hexagon theorem
+    points A B C D            # free points
+    point E on line A B       # one parameter
+    point F on line C D
+    point X = meet (join A D) (join B C)
+    point Y = meet (join A F) (join E C)
+    point Z = meet (join E D) (join B F)
+    prove collinear X Y Z
+"""
+
+
+@click.command("prove", epilog=_EXAMPLE)
 @click.argument("names", nargs=-1)
 @click.option("--list", "list_", is_flag=True, help="List the catalogue's claims and exit.")
 @click.option("--all", "all_", is_flag=True, help="Prove every claim of the catalogue.")
 @click.option("--json", "as_json", is_flag=True, help="Print the verdicts as a JSON array.")
+@click.option("--certificate", is_flag=True, help="Print each verdict in full (Markdown: constructions, "
+              "certificate, non-degeneracy conditions, counterexample).")
 @click.option("--timeout", type=DecimalRange(min=0, max=86400, min_open=True), default=10.0, show_default=True,
               help="Seconds per claim (at most a day); a claim that takes longer is reported as unknown.")
-def prove_command(names: tuple[str, ...], list_: bool, all_: bool, as_json: bool, timeout: float) -> None:
-    """Prove claims of the catalogue by exact polynomial arithmetic.
+def prove_command(names: tuple[str, ...], list_: bool, all_: bool, as_json: bool, certificate: bool,
+                  timeout: float) -> None:
+    """Prove claims of the catalogue, or theorem files (FILE.thm), by exact polynomial arithmetic.
 
-    Examples: pgsym prove --list; pgsym prove pappus desargues; pgsym prove --all --json
+    Examples: pgsym prove --list; pgsym prove pappus desargues; pgsym prove --all --json;
+    pgsym prove tests/theorems/pappus.thm --certificate
     """
     from ..proofs.catalogue import CATALOGUE, catalogue_names, prove  # SymPy loads only when a command runs
 
@@ -67,8 +101,18 @@ def prove_command(names: tuple[str, ...], list_: bool, all_: bool, as_json: bool
     if long:
         raise click.BadParameter(f"a claim name of {len(long[0])} characters; names have at most "
                                  f"{MAX_ARGUMENT_CHARS} (see pgsym prove --list)", param_hint="NAMES")
+    files = [n for n in names if _is_file(n)]
+    claims = {}
+    if files:
+        from ..proofs.language import read_statement
+
+        for f in files:
+            try:
+                claims[f] = read_statement(f)
+            except StatementError as err:
+                raise _BadFile(str(err)) from None
     selected = catalogue_names() if all_ else list(names)
-    unknown = [n for n in selected if n not in CATALOGUE]
+    unknown = [n for n in selected if n not in CATALOGUE and n not in claims]
     if unknown:
         try:
             prove(unknown[0])
@@ -78,9 +122,12 @@ def prove_command(names: tuple[str, ...], list_: bool, all_: bool, as_json: bool
     with click.progressbar(selected, label="proving", file=sys.stderr, show_pos=True,
                            item_show_func=lambda n: n or "") as bar:
         for name in bar:
-            verdicts.append(prove(name, timeout=timeout))
+            verdicts.append(prove(claims.get(name, name), timeout=timeout))
     if as_json:
         click.echo(json.dumps([v.to_dict() for v in verdicts], ensure_ascii=False, indent=1))
+    elif certificate:
+        for v in verdicts:
+            click.echo(v.markdown())
     else:
         for v in verdicts:
             click.echo(_line(v))
@@ -88,3 +135,48 @@ def prove_command(names: tuple[str, ...], list_: bool, all_: bool, as_json: bool
     if bad:
         click.echo(f"not as expected: {', '.join(bad)}", err=True)
         sys.exit(1)
+
+
+_DISCOVER_EXAMPLE = """\b
+Example (quadrangle.thm):
+    points A B C D
+    point P = meet (join A B) (join C D)
+    point Q = meet (join A C) (join B D)
+    point R = meet (join A D) (join B C)
+    prove collinear A B P
+"""
+
+
+@click.command("discover", epilog=_DISCOVER_EXAMPLE)
+@click.argument("file")
+@click.option("--json", "as_json", is_flag=True, help="Print the relations as a JSON array.")
+@click.option("--timeout", type=DecimalRange(min=0, max=86400, min_open=True), default=2.0, show_default=True,
+              help="Seconds to prove each relation that does not hold by construction.")
+@click.option("--all", "all_", is_flag=True, help="Also list the relations that hold by construction.")
+def discover_command(file: str, as_json: bool, timeout: float, all_: bool) -> None:
+    """Find every incidence among the objects of a theorem file (FILE.thm), then prove each.
+
+    Relations (a point on a line, plane or conic; three collinear points; three concurrent lines; four
+    coplanar points; six points on a conic) are found on a random exact instance; those that do not hold
+    by construction are proved by the engine. Exit status 2 for a file that cannot be read.
+    """
+    from ..proofs.discovery import discover
+    from ..proofs.language import read_statement
+
+    try:
+        claim = read_statement(file)
+    except StatementError as err:
+        raise _BadFile(str(err)) from None
+    found = discover(claim, timeout=timeout)
+    shown = [r for r in found if all_ or not r.by_construction]
+    if as_json:
+        click.echo(json.dumps([{"kind": r.kind, "objects": list(r.objects), "text": r.text,
+                                "status": r.status} for r in shown], ensure_ascii=False, indent=1))
+        return
+    for r in shown:
+        click.echo(f"{r.status:16s}  {r.text}")
+    trivial = sum(r.by_construction for r in found)
+    click.echo(f"{len(found)} relations on a random instance: {trivial} by construction, "
+               f"{sum(r.status == 'proved' for r in found)} proved, "
+               f"{sum(r.status == 'false' for r in found)} false at a generic point, "
+               f"{sum(r.status == 'unknown' for r in found)} unknown", err=True)

@@ -17,6 +17,11 @@ from . import errors as _errors
 from .errors import (  # noqa: F401 (re-exported)
     NonPolynomialClaimError,
     PolynomialBackendError,
+    StatementError,
+    StatementKindError,
+    StatementLimitError,
+    StatementNameError,
+    StatementSyntaxError,
     UndefinedConstructionError,
     UnknownClaimError,
 )
@@ -28,6 +33,9 @@ _LAZY = {
     "prove": "catalogue",
     "prove_all": "catalogue",
     "Claim": "claims",
+    "discover": "discovery",
+    "parse_statement": "language",
+    "read_statement": "language",
     "PRIME": "engine",
     "Certificate": "verdicts",
     "Condition": "verdicts",

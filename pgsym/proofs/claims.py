@@ -394,6 +394,119 @@ class Claim:
         """The harmonic conjugate ``[A C] B + [B C] A`` of C with respect to A and B (points of P¹)."""
         return self._construct("harmonic_conjugate", name, (a, b, c))
 
+    def tangent(self, name: str, c: Any, p: Any) -> Node:
+        """The tangent ``C p`` of a conic at a point p on it (the polar of p).
+
+        >>> c = Claim("x", "x")
+        >>> c.tangent("t", c.conic("C", [[1, 0, 0], [0, 1, 0], [0, 0, -1]]), c.point("P", 1, 0)).kind
+        'line'
+        """
+        return self._construct("polar", name, (c, p))
+
+    def second_intersection(self, name: str, c: Any, p: Any, q: Any) -> Node:
+        """The second point where the line PQ meets the conic C through P: ``(QᵀCQ) P − 2 (PᵀCQ) Q``.
+
+        P must lie on C (as a point of it built by :meth:`conic_through`, :meth:`point_on_conic`, …);
+        the point is then P itself only when the line is the tangent at P.
+
+        >>> c = Claim("x", "x")
+        >>> C = c.conic("C", [[1, 0, 0], [0, 1, 0], [0, 0, -1]])     # the unit circle
+        >>> c.second_intersection("X", C, c.point("P", 1, 0), c.point("Q", 0, 1)).conditions[0][:6]
+        'P ≠ Q '
+        """
+        return self._construct("second_intersection", name, (c, p, q))
+
+    def point_on_conic(self, name: str, c: Any, p: Any, t: Any = None) -> Node:
+        """A point of the conic C with one parameter t: the second point of C on the line through P and (1, t, t²).
+
+        P must lie on C. As t runs through the numbers the line runs through the pencil at P, so the point runs
+        through the whole conic: a generic point of C. ``t`` defaults to a new parameter named after the point
+        (``X_t``).
+
+        >>> c = Claim("x", "x")
+        >>> C = c.conic("C", [[1, 0, 0], [0, 1, 0], [0, 0, -1]])
+        >>> c.point_on_conic("X", C, c.point("P", 1, 0)).data
+        (X_t,)
+        """
+        if t is None:
+            (t,) = self.params(f"{name}_t")
+        t = _polynomial(t, self.parameters, f"parameter of {name}")
+        return self._construct("point_on_conic", name, (c, p), (t,))
+
+    def point_on_line(self, name: str, p: Any, q: Any = None, t: Any = None) -> Node:
+        """A point of the line PQ (points of P² or P³) with one parameter t: ``P + t Q``.
+
+        ``t`` defaults to a new parameter ``X_t``. Given a line l of P² instead of two points, this is
+        :meth:`point_of_line`.
+
+        >>> c = Claim("x", "x")
+        >>> c.point_on_line("X", c.free_point("P"), c.free_point("Q")).description
+        'P + X_t·Q'
+        """
+        if q is None:
+            return self.point_of_line(name, p, t)
+        if t is None:
+            (t,) = self.params(f"{name}_t")
+        t = _polynomial(t, self.parameters, f"parameter of {name}")
+        return self._construct("point_on_line", name, (p, q), (t,))
+
+    def point_of_line(self, name: str, l: Any, t: Any = None) -> Node:
+        """A point of a line l of P² with one parameter t: ``l × (1, t, t²)``, its meet with the tangents of a
+        fixed conic, which sweep every point of l (``t`` defaults to a new parameter ``X_t``).
+
+        >>> c = Claim("x", "x")
+        >>> c.point_of_line("Y", c.free_line("l")).conditions
+        ['Y is a point of l']
+        """
+        if t is None:
+            (t,) = self.params(f"{name}_t")
+        t = _polynomial(t, self.parameters, f"parameter of {name}")
+        return self._construct("point_of_line", name, (l,), (t,))
+
+    def conic_tangent_to(self, name: str, *lines: Any) -> Node:
+        """The conic tangent to five lines (the dual conic through them, turned back into a point conic).
+
+        >>> c = Claim("x", "x")
+        >>> c.conic_tangent_to("C", *(c.free_line(n) for n in "abcde")).kind
+        'conic'
+        """
+        return self._construct("conic_tangent_to", name, lines)
+
+    def line_meets_plane(self, name: str, l: Any, e: Any) -> Node:
+        """The point where a line of P³ (a :meth:`line3`) meets a plane: ``L E``; needs the line not in the plane.
+
+        >>> c = Claim("x", "x")
+        >>> L = c.line3("L", c.free_point3("A"), c.free_point3("B"))
+        >>> c.line_meets_plane("X", L, c.free_plane("E")).kind
+        'point3'
+        """
+        return self._construct("line_meets_plane", name, (l, e))
+
+    def line_of_planes(self, name: str, e: Any, f: Any) -> Node:
+        """The line where two planes of P³ meet (its Plücker matrix, from ``E Fᵀ − F Eᵀ`` by the rewrite rule)."""
+        return self._construct("line_of_planes", name, (e, f))
+
+    def cross_ratio_collinear(self, name: str, a: Any, b: Any, c: Any, d: Any) -> Node:
+        """The cross-ratio ``(A, B; C, D)`` of four collinear points, or four concurrent lines, of P².
+
+        With ``A × C = λ_AC l`` on the common line l: ``λ_AC λ_BD / (λ_AD λ_BC)``, the P¹ cross-ratio of the
+        points on that line (the same for every choice of coordinates on it).
+        """
+        return self._construct("cross_ratio_collinear", name, (a, b, c, d))
+
+    def harmonic_conjugate_collinear(self, name: str, a: Any, b: Any, c: Any) -> Node:
+        """The harmonic conjugate of C with respect to A and B: collinear points (or concurrent lines) of P²."""
+        return self._construct("harmonic_conjugate_collinear", name, (a, b, c))
+
+    def midpoint(self, name: str, a: Any, b: Any) -> Node:
+        """The affine midpoint ``w_B A + w_A B`` of two finite points of P² (or P³), right for any representatives.
+
+        >>> c = Claim("x", "x")
+        >>> c.midpoint("M", c.point("A", 2, 0, 2), c.point("B", 3, 3)).conditions
+        ['A is a finite point', 'B is a finite point']
+        """
+        return self._construct("midpoint", name, (a, b))
+
     def formula(self, name: str, kind: str, fn: Callable[..., Any], *args: Any, description: str = "",
                 conditions: Sequence[str] = ()) -> Node:
         """An object computed by ``fn`` from earlier objects with ``+``, ``-``, ``*`` only.
@@ -514,6 +627,60 @@ class Claim:
         node = self.matrix(name, jac)
         node.description = f"[∂{name}/∂params | vec {name}]"
         self._conclude("rank", (node, dof + 1), f"{name} has {dof} degrees of freedom (rank of [J | v] = {dof + 1})")
+
+    def _conclude_quantity(self, op: str, args: Sequence[Any], text: str) -> None:
+        """A conclusion through a quantity of the table that vanishes exactly when the statement holds."""
+        node = self._construct(op, f"_{op}{len(self.nodes)}", args)
+        self._conclude("zero", (node,), text)
+
+    def conclude_collinear3(self, a: Any, b: Any, c: Any) -> None:
+        """Three points of P³ are collinear: the 3×3 minors of the 4×3 matrix [A B C] vanish.
+
+        >>> c = Claim("x", "x")
+        >>> c.conclude_collinear3(*(c.free_point3(n) for n in "ABC"))
+        >>> c.conclusions[0].text
+        'A, B, C are collinear'
+        """
+        self._conclude_quantity("collinear3", (a, b, c), f"{', '.join(self._names(a, b, c))} are collinear")
+
+    def conclude_on_line3(self, x: Any, l: Any) -> None:
+        """A point of P³ lies on a line of P³: ``L* X = 0`` with L* the dual Plücker matrix."""
+        self._conclude_quantity("on_line3", (x, l), f"{' lies on '.join(self._names(x, l))}")
+
+    def conclude_lines_meet(self, l: Any, m: Any) -> None:
+        """Two lines of P³ meet (are coplanar): their reciprocal product vanishes."""
+        self._conclude_quantity("lines_meet", (l, m), f"{' and '.join(self._names(l, m))} meet")
+
+    def conclude_on_conic(self, x: Any, c: Any) -> None:
+        """A point lies on a conic: ``XᵀCX = 0``."""
+        self._conclude_quantity("on_conic", (x, c), f"{' lies on '.join(self._names(x, c))}")
+
+    def conclude_tangent(self, l: Any, c: Any) -> None:
+        """A line touches a conic: ``lᵀ adj(C) l = 0``."""
+        self._conclude_quantity("tangent_to", (l, c), f"{' touches '.join(self._names(l, c))}")
+
+    def conclude_conconic(self, *points: Any) -> None:
+        """Six points lie on one conic: the 6×6 determinant of their quadratic monomials vanishes.
+
+        >>> c = Claim("x", "x")
+        >>> c.conclude_conconic(*(c.free_point(n) for n in "ABCDEF"))
+        >>> c.conclusions[0].text
+        'A, B, C, D, E, F lie on a conic'
+        """
+        self._conclude_six(points, "point", "lie on a conic")
+
+    def conclude_six_tangent(self, *lines: Any) -> None:
+        """Six lines touch one conic (the dual statement of :meth:`conclude_conconic`)."""
+        self._conclude_six(lines, "line", "touch a conic")
+
+    def _conclude_six(self, objs: Sequence[Any], kind: str, what: str) -> None:
+        nodes = [self._get(x, (kind,), f"six {kind}s {what}") for x in objs]
+        if len(nodes) != 6:
+            raise ObjectTypeError(f"six {kind}s {what}: needs six {kind}s, got {len(nodes)}")
+        self._conclude_quantity("six_on_conic", nodes, f"{', '.join(n.name for n in nodes)} {what}")
+
+    def _names(self, *objs: Any) -> list[str]:
+        return [o if isinstance(o, str) else getattr(o, "name", repr(o)) for o in objs]
 
     def conditions_text(self) -> list[str]:
         """The non-degeneracy conditions the constructions need, as readable text."""

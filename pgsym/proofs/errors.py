@@ -7,9 +7,19 @@ True
 
 from __future__ import annotations
 
-from ..errors import InvalidCoordinatesError, ObjectTypeError, PgsymError
+from ..errors import InputLimitError, InvalidCoordinatesError, ObjectTypeError, PgsymError
 
-__all__ = ["NonPolynomialClaimError", "PolynomialBackendError", "UndefinedConstructionError", "UnknownClaimError"]
+__all__ = [
+    "NonPolynomialClaimError",
+    "PolynomialBackendError",
+    "StatementError",
+    "StatementKindError",
+    "StatementLimitError",
+    "StatementNameError",
+    "StatementSyntaxError",
+    "UndefinedConstructionError",
+    "UnknownClaimError",
+]
 
 
 class NonPolynomialClaimError(InvalidCoordinatesError):
@@ -29,3 +39,37 @@ class UnknownClaimError(PgsymError, KeyError):
 
     def __str__(self) -> str:  # KeyError would quote the message
         return str(self.args[0]) if self.args else ""
+
+
+class StatementError(PgsymError):
+    """A theorem written in the statement language cannot be read; ``line`` and ``column`` say where (1-based).
+
+    ``str()`` is ``"LINE:COL: message"``; ``source`` names the file when it was read from one.
+
+    >>> str(StatementSyntaxError("expected a name", 3, 7))
+    '3:7: expected a name'
+    """
+
+    def __init__(self, message: str, line: int = 0, column: int = 0, source: str = "") -> None:
+        super().__init__(message)
+        self.message, self.line, self.column, self.source = message, line, column, source
+
+    def __str__(self) -> str:
+        where = f"{self.line}:{self.column}: " if self.line else ""
+        return f"{self.source + ':' if self.source else ''}{where}{self.message}"
+
+
+class StatementSyntaxError(StatementError):
+    """The text does not follow the grammar of the statement language (or is not UTF-8 text)."""
+
+
+class StatementNameError(StatementError):
+    """A name is used before it is defined, defined twice, or is a keyword of the language."""
+
+
+class StatementKindError(StatementError, ObjectTypeError):
+    """An object of the wrong kind for a construction or conclusion (a line where a point belongs)."""
+
+
+class StatementLimitError(StatementError, InputLimitError):
+    """The statement exceeds a limit of :mod:`pgsym.limits` (size, line length, nesting, names)."""

@@ -1,0 +1,629 @@
+"""The statement language: a theorem written as text, one construction a line, read into a :class:`Claim`.
+
+.. code-block:: text
+
+    # Pappus's theorem (Richter-Gebert, Perspectives on Projective Geometry, ch. 1)
+    title Pappus's hexagon theorem
+    points A B C D          # free points of P² (two parameters each)
+    point E on line A B     # a point of the line AB (one parameter)
+    point F on line C D
+    point X = meet (join A D) (join B C)
+    point Y = meet (join A F) (join E C)
+    point Z = meet (join E D) (join B F)
+    prove collinear X Y Z
+
+The claim it gives is proved by :func:`pgsym.proofs.engine.prove` with the same verdicts and
+certificates as one built with the Python API.
+
+Grammar (one statement a line; ``#`` starts a comment; names are letters, digits, ``_`` and ``'``,
+starting with a letter; keywords are not names):
+
+.. code-block:: text
+
+    statement  := "title" TEXT | "expect" ("true" | "false")
+                | "params" NAME+                                parameters for coordinates
+                | PLURAL NAME+                                  free objects
+                | KIND NAME "=" expr                            a construction or given coordinates
+                | "point" NAME "on" "line" arg [arg]            one parameter: on line l, or on line A B
+                | "point3" NAME "on" "line" arg arg
+                | "point" NAME "on" "conic" arg ["through" arg] one parameter; through a point of the conic
+                | "prove" PREDICATE arg+
+    PLURAL     := points | lines | points3 | planes | points1 | conics | matrices | matrices4 | matrices2
+    KIND       := point | line | point3 | plane | line3 | conic | point1 | ratio | matrix
+    expr       := arg | OPERATION arg+
+    arg        := NAME | "(" expr ")" | "(" coord ("," coord)+ ")"
+    coord      := ["-"] (NUMBER | NAME)                         NUMBER: digits ["/" digits]
+
+Operations (chosen by the kinds of their arguments):
+
+=================  =================================================================================
+``join``           two points → line; two points of P³ → line3; three points of P³ → plane
+``meet``           two lines → point; two planes → line3; line3 and plane → point3; three planes → point3
+``plane``          three points of P³ → plane
+``conic``          five points → the conic through them; five lines → the conic tangent to them
+``tangent``        conic, point on it → the tangent there (``polar``: the polar of any point)
+``second``         conic C, point P of C, point Q → the second point of C on the line PQ
+``harmonic``       A B C → the harmonic conjugate of C with respect to A, B (collinear points,
+                   concurrent lines, or points of P¹)
+``crossratio``     A B C D → the ratio (A, B; C, D) (collinear points, concurrent lines, points of P¹)
+``midpoint``       two finite points (of P² or P³) → their affine midpoint
+``apply``          matrix, object → its image (point, line, plane or conic)
+``dual``           conic → its dual conic (the matrix adj C)
+=================  =================================================================================
+
+Predicates of ``prove``: ``collinear`` (three points of P² or P³), ``concurrent`` (three lines),
+``coplanar`` (four points of P³), ``on`` (point on line, plane, line3 or conic), ``tangent`` (line
+touching a conic), ``meet`` (two lines of P³ meet), ``conconic`` (six points on a conic, or six lines
+tangent to one), ``equal`` (two objects equal up to scale; two ratios, or a ratio and a number),
+``harmonic`` (A B C D: the cross-ratio is −1). Several ``prove`` lines must all hold. Parts of the Python
+API with no statement form: ``formula`` (an arbitrary function), ``combine`` with given coefficients,
+equation hypotheses (``assume_zero``), exact (not projective) equality, ranks and degrees of freedom.
+
+Reading is bounded (:mod:`pgsym.limits`): the text, a line, a name, the number of objects and the
+nesting of parentheses. Every problem raises a :class:`~pgsym.proofs.errors.StatementError` subclass
+naming the line and column.
+
+>>> claim = parse_statement('''
+... points A B C D
+... point X = meet (join A B) (join C D)
+... prove collinear A B X
+... ''', name="demo")
+>>> [n.name for n in claim.nodes.values() if not n.name.startswith("_")]
+['A', 'B', 'C', 'D', 'join A B', 'join C D', 'X']
+>>> from pgsym.proofs.engine import prove
+>>> prove(claim).status
+'proved'
+>>> parse_statement("points A\\nprove collinear A A B")
+Traceback (most recent call last):
+...
+pgsym.proofs.errors.StatementNameError: 2:21: B is not defined; define it on an earlier line
+"""
+
+from __future__ import annotations
+
+import os
+import re
+from collections.abc import Callable
+from dataclasses import dataclass
+from fractions import Fraction
+from pathlib import Path
+from typing import Any
+
+import sympy
+
+from ..errors import InputLimitError, PgsymError
+from ..limits import (
+    MAX_DIGITS,
+    MAX_NESTING,
+    MAX_STATEMENT_BYTES,
+    MAX_STATEMENT_LINE_CHARS,
+    MAX_STATEMENT_NAME_CHARS,
+    MAX_STATEMENT_OBJECTS,
+    read_text_file,
+)
+from .claims import Claim, Node
+from .errors import (
+    StatementError,
+    StatementKindError,
+    StatementLimitError,
+    StatementNameError,
+    StatementSyntaxError,
+)
+
+__all__ = ["STATEMENT_SUFFIX", "parse_statement", "read_statement"]
+
+STATEMENT_SUFFIX = ".thm"
+"""The file suffix of theorems in the statement language."""
+
+_PLURALS = {"points": "point", "lines": "line", "points3": "point3", "planes": "plane", "points1": "point1",
+            "conics": "conic", "matrices": "matrix", "matrices4": "matrix4", "matrices2": "matrix2"}
+_KINDS = ("point", "line", "point3", "plane", "line3", "conic", "point1", "ratio", "matrix")
+_OPERATIONS = ("join", "meet", "plane", "conic", "tangent", "polar", "second", "harmonic", "crossratio",
+               "midpoint", "apply", "dual")
+_PREDICATES = ("collinear", "concurrent", "coplanar", "on", "tangent", "meet", "conconic", "equal", "harmonic")
+KEYWORDS = frozenset({"title", "expect", "params", "prove", "on", "through", *_PLURALS, *_KINDS, *_OPERATIONS,
+                      *_PREDICATES})
+
+_TOKEN = re.compile(r"\s*(?:(?P<name>[A-Za-z][A-Za-z0-9_']*)|(?P<number>[0-9]+(?:/[0-9]+)?)|(?P<punct>[()=,-]))")
+
+
+@dataclass(frozen=True)
+class _Token:
+    kind: str  # "name", "number", "punct", "end"
+    text: str
+    line: int
+    col: int
+
+
+@dataclass
+class _Call:
+    """A parsed expression: an operation and its arguments (names, tuples or calls)."""
+
+    op: str
+    args: list[Any]
+    tok: _Token
+
+
+@dataclass
+class _Tuple:
+    coords: list[tuple[int, _Token]]  # (sign, number-or-name token)
+    tok: _Token
+
+
+def _tokens(text: str, lineno: int) -> list[_Token]:
+    out: list[_Token] = []
+    pos = 0
+    code = text.split("#", 1)[0]
+    while True:
+        while pos < len(code) and code[pos] in " \t\r":
+            pos += 1
+        if pos >= len(code):
+            out.append(_Token("end", "", lineno, len(code) + 1))
+            return out
+        m = _TOKEN.match(code, pos)
+        if m is None or m.end() == pos:
+            ch = code[pos]
+            raise StatementSyntaxError(f"unexpected character {ch!r}; names are letters, digits, _ and ', "
+                                       "numbers are integers or fractions p/q", lineno, pos + 1)
+        kind = m.lastgroup or "punct"
+        start = m.start(kind)
+        word = m.group(kind)
+        if kind == "name" and len(word) > MAX_STATEMENT_NAME_CHARS:
+            raise StatementLimitError(f"a name of {len(word)} characters; names have at most "
+                                      f"{MAX_STATEMENT_NAME_CHARS}", lineno, start + 1)
+        if kind == "number" and any(len(part) > MAX_DIGITS for part in word.split("/")):
+            raise StatementLimitError(f"a number with more than {MAX_DIGITS} digits", lineno, start + 1)
+        out.append(_Token(kind, word, lineno, start + 1))
+        pos = m.end()
+
+
+class _Line:
+    """A cursor over the tokens of one line."""
+
+    def __init__(self, tokens: list[_Token]) -> None:
+        self.toks, self.i = tokens, 0
+
+    def peek(self) -> _Token:
+        return self.toks[self.i]
+
+    def next(self) -> _Token:
+        tok = self.toks[self.i]
+        if tok.kind != "end":
+            self.i += 1
+        return tok
+
+    def expect(self, text: str) -> _Token:
+        tok = self.next()
+        if tok.text != text:
+            raise StatementSyntaxError(f"expected {text!r}, found {_show(tok)}", tok.line, tok.col)
+        return tok
+
+    def name(self, what: str = "a name") -> _Token:
+        tok = self.next()
+        if tok.kind != "name":
+            raise StatementSyntaxError(f"expected {what}, found {_show(tok)}", tok.line, tok.col)
+        return tok
+
+    def end(self) -> None:
+        tok = self.peek()
+        if tok.kind != "end":
+            raise StatementSyntaxError(f"unexpected {_show(tok)} after the end of the statement", tok.line, tok.col)
+
+
+def _show(tok: _Token) -> str:
+    return "the end of the line" if tok.kind == "end" else repr(tok.text)
+
+
+def _parse_arg(cur: _Line, depth: int) -> Any:
+    tok = cur.next()
+    if tok.kind == "name":
+        if tok.text in _OPERATIONS:
+            raise StatementSyntaxError(f"the operation {tok.text!r} inside an argument needs parentheses: "
+                                       f"({tok.text} …)", tok.line, tok.col)
+        return tok
+    if tok.text != "(":
+        raise StatementSyntaxError(f"expected a name or '(', found {_show(tok)}", tok.line, tok.col)
+    if depth >= MAX_NESTING:
+        raise StatementLimitError(f"parentheses nested more than {MAX_NESTING} deep", tok.line, tok.col)
+    first = cur.peek()
+    if first.text == "(":
+        inner = _parse_arg(cur, depth + 1)
+        cur.expect(")")
+        return inner
+    if first.kind == "name" and first.text in _OPERATIONS:
+        call = _parse_expr(cur, depth + 1)
+        cur.expect(")")
+        return call
+    if first.kind == "name" and cur.toks[cur.i + 1].text == ")":
+        cur.next()
+        cur.next()
+        return first
+    coords = []
+    while True:
+        sign = 1
+        if cur.peek().text == "-":
+            cur.next()
+            sign = -1
+        c = cur.next()
+        if c.kind not in ("number", "name"):
+            raise StatementSyntaxError(f"expected a number or a parameter in coordinates, found {_show(c)}",
+                                       c.line, c.col)
+        coords.append((sign, c))
+        sep = cur.next()
+        if sep.text == ")":
+            break
+        if sep.text != ",":
+            raise StatementSyntaxError(f"expected ',' or ')' in coordinates, found {_show(sep)}", sep.line, sep.col)
+    return _Tuple(coords, tok)
+
+
+def _parse_expr(cur: _Line, depth: int = 0) -> Any:
+    tok = cur.peek()
+    if tok.kind == "name" and tok.text in _OPERATIONS:
+        cur.next()
+        args = []
+        while cur.peek().kind != "end" and cur.peek().text != ")":
+            args.append(_parse_arg(cur, depth))
+        if not args:
+            raise StatementSyntaxError(f"{tok.text} needs arguments", tok.line, tok.col)
+        return _Call(tok.text, args, tok)
+    return _parse_arg(cur, depth)
+
+
+def _canonical(e: Any) -> str:
+    if isinstance(e, _Token):
+        return e.text
+    if isinstance(e, _Tuple):
+        return "(" + ", ".join(("-" if s < 0 else "") + t.text for s, t in e.coords) + ")"
+    return e.op + " " + " ".join(_canonical(a) if not isinstance(a, _Call) else f"({_canonical(a)})" for a in e.args)
+
+
+# -- building the claim ---------------------------------------------------------------------------------------
+
+_Builder = Callable[[Claim, str, list[Node]], Node]
+
+
+def _by_kind(table: dict[tuple[str, ...], _Builder]) -> Callable[[Claim, str, list[Node], _Token], Node]:
+    def build(claim: Claim, name: str, args: list[Node], tok: _Token) -> Node:
+        kinds = tuple(a.kind for a in args)
+        builder = table.get(kinds)
+        if builder is None:
+            accepted = "; ".join(" ".join(k) for k in table)
+            got = " ".join(f"{a.kind} {a.name}" for a in args) or "nothing"
+            raise StatementKindError(f"{tok.text} takes ({accepted}), got {got}", tok.line, tok.col)
+        return builder(claim, name, args)
+    return build
+
+
+_P, _L, _P3, _E, _L3, _C, _P1 = "point", "line", "point3", "plane", "line3", "conic", "point1"
+
+_BUILD: dict[str, Callable[[Claim, str, list[Node], _Token], Node]] = {
+    "join": _by_kind({(_P, _P): lambda c, n, a: c.join(n, *a), (_P3, _P3): lambda c, n, a: c.line3(n, *a),
+                      (_P3, _P3, _P3): lambda c, n, a: c.plane_through(n, *a)}),
+    "meet": _by_kind({(_L, _L): lambda c, n, a: c.meet(n, *a), (_E, _E): lambda c, n, a: c.line_of_planes(n, *a),
+                      (_L3, _E): lambda c, n, a: c.line_meets_plane(n, *a),
+                      (_E, _L3): lambda c, n, a: c.line_meets_plane(n, a[1], a[0]),
+                      (_E, _E, _E): lambda c, n, a: c.point_on_planes(n, *a)}),
+    "plane": _by_kind({(_P3, _P3, _P3): lambda c, n, a: c.plane_through(n, *a)}),
+    "conic": _by_kind({(_P,) * 5: lambda c, n, a: c.conic_through(n, *a),
+                       (_L,) * 5: lambda c, n, a: c.conic_tangent_to(n, *a)}),
+    "tangent": _by_kind({(_C, _P): lambda c, n, a: c.tangent(n, *a)}),
+    "polar": _by_kind({(_C, _P): lambda c, n, a: c.polar(n, *a)}),
+    "second": _by_kind({(_C, _P, _P): lambda c, n, a: c.second_intersection(n, *a)}),
+    "harmonic": _by_kind({(_P,) * 3: lambda c, n, a: c.harmonic_conjugate_collinear(n, *a),
+                          (_L,) * 3: lambda c, n, a: c.harmonic_conjugate_collinear(n, *a),
+                          (_P1,) * 3: lambda c, n, a: c.harmonic_conjugate(n, *a)}),
+    "crossratio": _by_kind({(_P,) * 4: lambda c, n, a: c.cross_ratio_collinear(n, *a),
+                            (_L,) * 4: lambda c, n, a: c.cross_ratio_collinear(n, *a),
+                            (_P1,) * 4: lambda c, n, a: c.cross_ratio(n, *a)}),
+    "midpoint": _by_kind({(_P, _P): lambda c, n, a: c.midpoint(n, *a), (_P3, _P3): lambda c, n, a: c.midpoint(n, *a)}),
+    "apply": _by_kind({**{("matrix", k): (lambda c, n, a: c.apply(n, *a)) for k in (_P, _P3, _P1)},
+                       **{("matrix", k): (lambda c, n, a: c.apply_line(n, *a)) for k in (_L, _E)},
+                       ("matrix", _C): lambda c, n, a: c.apply_conic(n, *a)}),
+    "dual": _by_kind({(_C,): lambda c, n, a: c.dual_conic(n, *a)}),
+}
+
+_Conclude = Callable[[Claim, list[Any]], None]
+
+
+_PROVE: dict[str, dict[tuple[str, ...], _Conclude]] = {
+    "collinear": {(_P,) * 3: lambda c, a: c.conclude_collinear(*a), (_P3,) * 3: lambda c, a: c.conclude_collinear3(*a)},
+    "concurrent": {(_L,) * 3: lambda c, a: c.conclude_concurrent(*a)},
+    "coplanar": {(_P3,) * 4: lambda c, a: c.conclude_coplanar(*a)},
+    "on": {(_P, _L): lambda c, a: c.conclude_incident(*a), (_P3, _E): lambda c, a: c.conclude_incident(*a),
+           (_P3, _L3): lambda c, a: c.conclude_on_line3(*a), (_P, _C): lambda c, a: c.conclude_on_conic(*a)},
+    "tangent": {(_L, _C): lambda c, a: c.conclude_tangent(*a)},
+    "meet": {(_L3, _L3): lambda c, a: c.conclude_lines_meet(*a)},
+    "conconic": {(_P,) * 6: lambda c, a: c.conclude_conconic(*a), (_L,) * 6: lambda c, a: c.conclude_six_tangent(*a)},
+    "equal": {**{(k, k): (lambda c, a: c.conclude_proportional(*a)) for k in (_P, _L, _P3, _E, _L3, _C, _P1)},
+              ("ratio", "ratio"): lambda c, a: c.conclude_equal_ratio(*a),
+              ("ratio", "number"): lambda c, a: c.conclude_equal_ratio(*a)},
+}
+
+
+class _Reader:
+    def __init__(self, name: str, source: str) -> None:
+        self.claim = Claim(name, name)
+        self.source = source
+        self.first_point: dict[str, Node] = {}  # conic name -> the first point it was built through
+        self.title_set = False
+        self.count = 0
+
+    # -- objects ------------------------------------------------------------------------------------
+    def _new_name(self, tok: _Token) -> str:
+        if tok.text in KEYWORDS:
+            raise StatementNameError(f"{tok.text!r} is a keyword of the statement language, not a name",
+                                     tok.line, tok.col)
+        if tok.text in self.claim.nodes or any(str(p) == tok.text for p in self.claim.parameters):
+            raise StatementNameError(f"{tok.text} is already defined; every name is defined once", tok.line, tok.col)
+        self.count += 1
+        if self.count > MAX_STATEMENT_OBJECTS:
+            raise StatementLimitError(f"more than {MAX_STATEMENT_OBJECTS} objects in one theorem", tok.line, tok.col)
+        return tok.text
+
+    def _lookup(self, tok: _Token) -> Node:
+        node = self.claim.nodes.get(tok.text)
+        if node is None:
+            raise StatementNameError(f"{tok.text} is not defined; define it on an earlier line", tok.line, tok.col)
+        return node
+
+    def _value(self, e: Any, name: str | None = None, kind: str | None = None) -> Node:
+        """The node of an expression; named when ``name`` is given, else named by its text (and shared)."""
+        if isinstance(e, _Token):
+            node = self._lookup(e)
+            if name is None:
+                return node
+            raise StatementSyntaxError(f"{name} = {e.text} only renames an object; use {e.text} itself",
+                                       e.line, e.col)
+        if isinstance(e, _Tuple):
+            if name is None or kind is None:
+                raise StatementSyntaxError("coordinates name an object only in a definition such as "
+                                           "'point P = (1, 2, 1)'", e.tok.line, e.tok.col)
+            return self._coordinates(name, kind, e)
+        key = name or _canonical(e)
+        if name is None and key in self.claim.nodes:
+            return self.claim.nodes[key]
+        args = [self._value(a) for a in e.args]
+        if name is None:
+            self.count += 1
+            if self.count > MAX_STATEMENT_OBJECTS:
+                raise StatementLimitError(f"more than {MAX_STATEMENT_OBJECTS} objects in one theorem",
+                                          e.tok.line, e.tok.col)
+        node = _BUILD[e.op](self.claim, key, args, e.tok)
+        if e.op == "conic" and args and args[0].kind == _P:
+            self.first_point[key] = args[0]
+        return node
+
+    def _coordinates(self, name: str, kind: str, e: _Tuple) -> Node:
+        params = {str(p): p for p in self.claim.parameters}
+        values = []
+        for sign, t in e.coords:
+            if t.kind == "number":
+                values.append(sign * sympy.Rational(Fraction(t.text)))
+            elif t.text in params:
+                values.append(sign * params[t.text])
+            else:
+                raise StatementNameError(f"{t.text} is not a parameter; declare it with 'params {t.text}'",
+                                         t.line, t.col)
+        method = {"point": self.claim.point, "line": self.claim.line, "point3": self.claim.point3,
+                  "plane": self.claim.plane, "point1": self.claim.point1}.get(kind)
+        if method is None:
+            raise StatementKindError(f"a {kind} cannot be given by coordinates (only points, lines, planes)",
+                                     e.tok.line, e.tok.col)
+        try:
+            return method(name, *values)
+        except PgsymError as err:
+            raise StatementKindError(str(err), e.tok.line, e.tok.col) from None
+
+    # -- statements ---------------------------------------------------------------------------------
+    def statement(self, cur: _Line) -> None:
+        head = cur.next()
+        if head.kind == "end":
+            return
+        if head.kind != "name":
+            raise StatementSyntaxError(f"a statement starts with a keyword, found {_show(head)}", head.line, head.col)
+        word = head.text
+        if word in ("title", "expect"):
+            raise StatementSyntaxError(f"{word} must be the first word of its line", head.line, head.col)
+        if word == "params":
+            self._names(cur, lambda n: self.claim.params(n))
+        elif word in _PLURALS:
+            self._names(cur, lambda n: self._free(_PLURALS[word], n))
+        elif word in _KINDS:
+            self._definition(word, cur)
+        elif word == "prove":
+            self._prove(cur)
+        else:
+            raise StatementSyntaxError(
+                f"unknown statement {word!r}; a line starts with one of: title, expect, params, "
+                f"{', '.join(_PLURALS)}, {', '.join(_KINDS)}, prove", head.line, head.col)
+        cur.end()
+
+    def _names(self, cur: _Line, make: Callable[[str], Any]) -> None:
+        if cur.peek().kind == "end":
+            tok = cur.peek()
+            raise StatementSyntaxError("expected at least one name", tok.line, tok.col)
+        while cur.peek().kind != "end":
+            make(self._new_name(cur.name()))
+
+    def _free(self, kind: str, name: str) -> Node:
+        c = self.claim
+        if kind == "point":
+            return c.free_point(name)
+        if kind == "line":
+            return c.free_line(name)
+        if kind == "point3":
+            return c.free_point3(name)
+        if kind == "plane":
+            return c.free_plane(name)
+        if kind == "point1":
+            return c.free_point1(name)
+        if kind.startswith("matrix"):
+            return c.free_matrix(name, {"matrix": 3, "matrix4": 4, "matrix2": 2}[kind])
+        # a free conic: a symmetric matrix of six parameters
+        a, b, cc, d, e, f = c.params(" ".join(f"{name}_{k}" for k in ("a", "b", "c", "d", "e", "f")))
+        return c.conic(name, [[a, b, d], [b, cc, e], [d, e, f]])
+
+    def _definition(self, kind: str, cur: _Line) -> None:
+        tok = cur.name("the name of the new object")
+        name = self._new_name(tok)
+        nxt = cur.next()
+        if nxt.text == "on" and kind in ("point", "point3"):
+            self._on(kind, name, cur, nxt)
+            return
+        if nxt.text != "=":
+            raise StatementSyntaxError(f"expected '=' after {name}, found {_show(nxt)}", nxt.line, nxt.col)
+        expr = _parse_expr(cur)
+        node = self._value(expr, name, kind)
+        if node.kind != kind:
+            where = expr.tok if not isinstance(expr, _Token) else expr
+            raise StatementKindError(f"{name} is declared a {kind} but its construction gives a {node.kind}",
+                                     where.line, where.col)
+
+    def _on(self, kind: str, name: str, cur: _Line, on: _Token) -> None:
+        what = cur.name("'line' or 'conic'")
+        if what.text == "line":
+            first = self._value(_parse_arg(cur, 0))
+            if cur.peek().kind == "end":
+                if kind != "point" or first.kind != _L:
+                    raise StatementKindError(f"'{kind} {name} on line' takes a line of P² or two {kind}s",
+                                             what.line, what.col)
+                self.claim.point_on_line(name, first)
+                return
+            second = self._value(_parse_arg(cur, 0))
+            if first.kind != kind or second.kind != kind:
+                raise StatementKindError(f"'{kind} {name} on line' takes two {kind}s, got the {first.kind} "
+                                         f"{first.name} and the {second.kind} {second.name}", what.line, what.col)
+            self.claim.point_on_line(name, first, second)
+            return
+        if what.text == "conic" and kind == "point":
+            conic = self._value(_parse_arg(cur, 0))
+            if conic.kind != _C:
+                raise StatementKindError(f"'on conic' takes a conic, got the {conic.kind} {conic.name}",
+                                         what.line, what.col)
+            if cur.peek().text == "through":
+                cur.next()
+                through = self._value(_parse_arg(cur, 0))
+            elif conic.name in self.first_point:
+                through = self.first_point[conic.name]
+            else:
+                raise StatementSyntaxError(f"say through which point of {conic.name} the parameter runs: "
+                                           f"'point {name} on conic {conic.name} through P'", what.line, what.col)
+            if through.kind != _P:
+                raise StatementKindError(f"'through' takes a point, got the {through.kind} {through.name}",
+                                         what.line, what.col)
+            self.claim.point_on_conic(name, conic, through)
+            return
+        raise StatementSyntaxError(f"expected 'line' or 'conic' after 'on', found {_show(what)}", what.line, what.col)
+
+    def _prove(self, cur: _Line) -> None:
+        pred = cur.name("a predicate")
+        if pred.text not in _PREDICATES:
+            raise StatementSyntaxError(f"unknown predicate {pred.text!r}; prove one of: {', '.join(_PREDICATES)}",
+                                       pred.line, pred.col)
+        args: list[Any] = []
+        while cur.peek().kind != "end":
+            tok = cur.peek()
+            if pred.text == "equal" and (tok.kind == "number" or tok.text == "-"):
+                args.append(self._number(cur))
+            else:
+                args.append(self._value(_parse_arg(cur, 0)))
+        if pred.text == "harmonic":
+            if len(args) != 4 or len({a.kind for a in args}) != 1 or args[0].kind not in (_P, _L, _P1):
+                raise StatementKindError("harmonic takes four collinear points, four concurrent lines or four "
+                                         "points of P¹", pred.line, pred.col)
+            ratio = self._value(_Call("crossratio", [_Token("name", a.name, 0, 0) for a in args], pred))
+            self.claim.conclude_equal_ratio(ratio, -1)
+            return
+        kinds = tuple("number" if isinstance(a, sympy.Rational) else a.kind for a in args)
+        table = _PROVE[pred.text]
+        conclude = table.get(kinds)
+        if conclude is None:
+            accepted = "; ".join(" ".join(k) for k in table)
+            got = " ".join(k for k in kinds) or "nothing"
+            raise StatementKindError(f"prove {pred.text} takes ({accepted}), got {got}", pred.line, pred.col)
+        conclude(self.claim, args)
+
+    def _number(self, cur: _Line) -> sympy.Rational:
+        sign = -1 if cur.peek().text == "-" and cur.next() else 1
+        tok = cur.next()
+        if tok.kind != "number":
+            raise StatementSyntaxError(f"expected a number, found {_show(tok)}", tok.line, tok.col)
+        return sign * sympy.Rational(Fraction(tok.text))
+
+
+def parse_statement(text: str, name: str = "statement", source: str = "") -> Claim:
+    """Read a theorem of the statement language into a :class:`Claim` (``source`` names it in errors).
+
+    >>> c = parse_statement("title A demo\\nexpect false\\npoints A B C\\nprove collinear A B C")
+    >>> c.title, c.expected, c.conclusions[0].text
+    ('A demo', False, 'A, B, C are collinear')
+    """
+    try:
+        return _parse(text, name, source)
+    except StatementError as err:
+        err.source = source
+        raise
+
+
+def _parse(text: str, name: str, source: str) -> Claim:
+    if len(text) > MAX_STATEMENT_BYTES:
+        raise StatementLimitError(f"the theorem has {len(text)} characters; at most {MAX_STATEMENT_BYTES} are read")
+    reader = _Reader(name, source)
+    lines = text.splitlines()
+    for lineno, raw in enumerate(lines, start=1):
+        if len(raw) > MAX_STATEMENT_LINE_CHARS:
+            raise StatementLimitError(f"a line of {len(raw)} characters; lines have at most "
+                                      f"{MAX_STATEMENT_LINE_CHARS}", lineno, MAX_STATEMENT_LINE_CHARS + 1)
+        bad = next((i for i, ch in enumerate(raw) if (ord(ch) < 32 and ch not in "\t\r") or ch == "\x7f"), None)
+        if bad is not None:
+            raise StatementSyntaxError(f"a control character {raw[bad]!r}; the theorem must be plain text",
+                                       lineno, bad + 1)
+        stripped = raw.strip()
+        for word in ("title", "expect"):
+            if stripped.startswith(word + " ") or stripped == word:
+                rest = stripped[len(word):].strip()
+                if word == "title":
+                    if not rest:
+                        raise StatementSyntaxError("title needs a text", lineno, 1)
+                    reader.claim.title = reader.claim.statement = rest
+                else:
+                    value = rest.split("#", 1)[0].strip()
+                    if value not in ("true", "false"):
+                        raise StatementSyntaxError(f"expect takes true or false, found {value!r}", lineno,
+                                                   raw.index(word) + len(word) + 2)
+                    reader.claim.expected = value == "true"
+                break
+        else:
+            try:
+                reader.statement(_Line(_tokens(raw, lineno)))
+            except StatementError:
+                raise
+            except PgsymError as err:  # a claim method refused (e.g. a degenerate coordinate tuple)
+                raise StatementKindError(str(err), lineno, 1) from None
+    if not reader.claim.conclusions:
+        raise StatementSyntaxError("the theorem has no 'prove' line", len(lines) or 1, 1)
+    return reader.claim
+
+
+def read_statement(path: str | os.PathLike[str]) -> Claim:
+    """Read a theorem file (UTF-8, at most :data:`~pgsym.limits.MAX_STATEMENT_BYTES` bytes) into a claim.
+
+    The claim is named after the file (without its suffix). Errors name the file, line and column.
+    """
+    p = Path(path)
+    try:
+        text = read_text_file(p, "theorem file", MAX_STATEMENT_BYTES)
+    except InputLimitError as err:
+        raise StatementLimitError(str(err), source=str(p)) from None
+    except UnicodeDecodeError as err:
+        line = err.object[: err.start].count(b"\n") + 1
+        col = err.start - (err.object.rfind(b"\n", 0, err.start) + 1) + 1
+        raise StatementSyntaxError("the file is not UTF-8 text", line, col, str(p)) from None
+    except OSError as err:
+        raise StatementError(f"cannot read the theorem file: {err.strerror or err}", source=str(p)) from None
+    if "\x00" in text:
+        line = text[: text.index("\x00")].count("\n") + 1
+        raise StatementSyntaxError("the file holds binary data (a NUL byte); a theorem is plain text", line, 1,
+                                   str(p))
+    return parse_statement(text, name=p.stem if p.suffix == STATEMENT_SUFFIX else p.name, source=str(p))
