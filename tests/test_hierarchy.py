@@ -5,6 +5,7 @@ from __future__ import annotations
 from fractions import Fraction
 
 import pytest
+import strategies
 import sympy
 from hypothesis import assume, given, settings
 from hypothesis import strategies as st
@@ -38,8 +39,8 @@ from pgsym.hierarchy import (
 from pgsym.homogeneous import is_zero
 from pgsym.transformations import Transformation
 
-rationals = st.fractions(min_value=-5, max_value=5, max_denominator=6)
-nonzero = rationals.filter(lambda f: f != 0)
+rationals = strategies.rationals(5, 6)
+nonzero = strategies.nonzero_rationals(5, 6)
 
 # -- DoF ------------------------------------------------------------------------------------------
 

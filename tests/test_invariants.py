@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import pytest
+import strategies
 import sympy
 from hypothesis import assume, given, settings
 from hypothesis import strategies as st
@@ -24,7 +25,7 @@ from pgsym.invariants import (
 )
 
 R = sympy.Rational
-rationals = st.fractions(min_value=-5, max_value=5, max_denominator=5)
+rationals = strategies.rationals(5, 5)
 
 
 @pytest.mark.parametrize("inv", INVARIANTS, ids=lambda i: i.key)

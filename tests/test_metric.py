@@ -6,6 +6,7 @@ import pytest
 import sympy
 from hypothesis import HealthCheck, assume, given, settings
 from hypothesis import strategies as st
+from strategies import integers
 from sympy import I, Rational, sqrt
 
 from pgsym.errors import (
@@ -49,7 +50,7 @@ from pgsym.transformations import Transformation
 
 FAST = settings(max_examples=25, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 
-ints = st.integers(-6, 6)
+ints = integers(6)
 
 
 @st.composite

@@ -5,6 +5,7 @@ from __future__ import annotations
 import pytest
 from hypothesis import assume, given, settings
 from hypothesis import strategies as st
+from strategies import integers
 from sympy import Rational, S, symbols
 
 from pgsym.errors import (
@@ -17,7 +18,7 @@ from pgsym.errors import (
 from pgsym.quadrics import NotOnQuadricError, Quadric
 from pgsym.space import Plane, Point3
 
-small = st.integers(min_value=-6, max_value=6)
+small = integers(6)
 FAST = settings(max_examples=40, deadline=None)
 SIGNS = st.tuples(*[st.sampled_from([1, -1])] * 3)
 
@@ -166,7 +167,7 @@ def test_polar_is_linear_and_tangent_planes_touch(entries, x, k):
 
 # -- the shared symmetric-form base --------------------------------------------------------------------
 
-entries = st.integers(-4, 4)
+entries = integers(4)
 
 
 @st.composite
