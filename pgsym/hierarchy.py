@@ -9,6 +9,9 @@ parametrisations, so that every element and every derivative is exact:
 - in 3D, the rotation of the unit quaternion proportional to ``(1, a, b, c)`` (the
   Cayley transform of the skew matrix ``[(a, b, c)]×``).
 
+A 2D similarity needs no rotation parameter: ``sR = [[a, −b], [b, a]]`` with ``a = s cos θ``,
+``b = s sin θ`` (``a² + b² ≠ 0``) has polynomial entries, so proofs built on it carry no denominator.
+
 The number of degrees of freedom of a class is the dimension of its image in the
 projective space of matrices, ``P^(n²−1)``. It is the generic rank of the Jacobian of the
 parametrisation augmented by the column ``vec H`` (the direction of the overall scale,
@@ -170,10 +173,10 @@ def _isometry2(p: Sequence[Any], component: int) -> list[list[Any]]:
 
 
 def _similarity2(p: Sequence[Any], component: int) -> list[list[Any]]:
-    k, t, tx, ty = p
-    (c, _), (s, _) = rotation_2d(t)
+    # a = s cos θ, b = s sin θ: polynomial entries, unlike a scale times a rational rotation
+    a, b, tx, ty = p
     e = -1 if component else 1
-    return _homogeneous([[k * c, -e * k * s], [k * s, e * k * c]], [tx, ty])
+    return _homogeneous([[a, -e * b], [b, e * a]], [tx, ty])
 
 
 def _affine2(p: Sequence[Any], component: int) -> list[list[Any]]:
@@ -317,11 +320,11 @@ class TransformationClass:
     isometries and isometries with a reflection); ``larger`` is the key of the next
     larger class.
 
-    >>> SIMILARITY_2D.element(2, 0, 1, 1).matrix
+    >>> SIMILARITY_2D.element(3, 4, 1, 1).matrix      # a = s cos θ, b = s sin θ: scale 5
     Matrix([
-    [2, 0, 1],
-    [0, 2, 1],
-    [0, 0, 1]])
+    [3, -4, 1],
+    [4,  3, 1],
+    [0,  0, 1]])
     """
 
     key: str
@@ -453,7 +456,7 @@ ISOMETRY_2D = TransformationClass(
     "similarity2", ("proper", "reflection"),
 )
 SIMILARITY_2D = TransformationClass(
-    "similarity2", "Similarity", 2, ("k", "t", "t_x", "t_y"), _similarity2,
+    "similarity2", "Similarity", 2, ("a", "b", "t_x", "t_y"), _similarity2,
     r"\begin{bmatrix} s\,r_{11} & s\,r_{12} & t_x \\ s\,r_{21} & s\,r_{22} & t_y \\ 0 & 0 & 1\end{bmatrix}",
     "affine2", ("proper", "reflection"),
 )

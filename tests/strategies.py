@@ -11,12 +11,29 @@ from fractions import Fraction
 import sympy
 from hypothesis import strategies as st
 
-from pgsym import Line, Plane, Point, Point3
+from pgsym import Line, Plane, Point, Point3, Transformation
 from pgsym.plucker import Line3
 from pgsym.projective_line import Point1
+from pgsym.ring import det
 
-small = st.integers(min_value=-12, max_value=12)
-nonzero_rational = st.fractions(min_value=-9, max_value=9, max_denominator=7).filter(lambda f: f != 0)
+
+def integers(bound: int) -> st.SearchStrategy[int]:
+    """Integers from ``-bound`` to ``bound``: small entries keep exact examples fast."""
+    return st.integers(min_value=-bound, max_value=bound)
+
+
+def rationals(bound: int, max_denominator: int) -> st.SearchStrategy[Fraction]:
+    """Fractions from ``-bound`` to ``bound`` with denominators up to ``max_denominator``."""
+    return st.fractions(min_value=-bound, max_value=bound, max_denominator=max_denominator)
+
+
+def nonzero_rationals(bound: int, max_denominator: int) -> st.SearchStrategy[Fraction]:
+    """:func:`rationals` without zero (scale factors, parameters that must not vanish)."""
+    return rationals(bound, max_denominator).filter(lambda f: f != 0)
+
+
+small = integers(12)
+nonzero_rational = nonzero_rationals(9, 7)
 
 
 @st.composite
@@ -38,9 +55,9 @@ def homogeneous_triples(allow_ideal: bool = True) -> st.SearchStrategy[tuple[int
     return homogeneous_vectors(3, allow_ideal)
 
 
-def integers(bound: int) -> st.SearchStrategy[int]:
-    """Integers from ``-bound`` to ``bound``: small entries keep exact examples fast."""
-    return st.integers(min_value=-bound, max_value=bound)
+def transformations(n: int = 3, bound: int = 6) -> st.SearchStrategy[Transformation]:
+    """Invertible transformations of P^(n−1) with integer entries up to ``bound``."""
+    return invertible_matrices(n, bound).map(Transformation)
 
 
 def points3(allow_ideal: bool = True, bound: int = 9) -> st.SearchStrategy[Point3]:
@@ -53,12 +70,14 @@ def planes(bound: int = 9) -> st.SearchStrategy[Plane]:
     return homogeneous_vectors(4, True, integers(bound)).map(lambda t: Plane(*t))
 
 
-def points(allow_ideal: bool = True) -> st.SearchStrategy[Point]:
-    return homogeneous_triples(allow_ideal).map(lambda t: Point(*t))
+def points(allow_ideal: bool = True, bound: int = 12) -> st.SearchStrategy[Point]:
+    """Points of P² with integer coordinates up to ``bound``; a third of them ideal when allowed."""
+    return homogeneous_vectors(3, allow_ideal, integers(bound)).map(lambda t: Point(*t))
 
 
-def lines() -> st.SearchStrategy[Line]:
-    return homogeneous_triples(True).map(lambda t: Line(*t))
+def lines(bound: int = 12) -> st.SearchStrategy[Line]:
+    """Lines of P² with integer coordinates up to ``bound``; a third of them through the origin."""
+    return homogeneous_vectors(3, True, integers(bound)).map(lambda t: Line(*t))
 
 
 def scaled(obj, factor: Fraction):
@@ -98,15 +117,13 @@ def affine_matrices(draw, bound: int = 5) -> list[list[int]]:
 
 
 @st.composite
-def invertible_matrices(draw, n: int = 3, bound: int = 4) -> list[list[int]]:
-    """Non-singular integer n×n matrices with entries up to ``bound`` (a homography of P^(n-1))."""
-    from sympy import Matrix
-
+def invertible_matrices(draw, n: int = 3, bound: int = 6) -> list[list[int]]:
+    """Non-singular integer n×n matrices with entries up to ``bound`` (a homography of P^(n-1)), as lists of rows."""
     m = [[draw(integers(bound)) for _ in range(n)] for _ in range(n)]
-    if Matrix(m).det() == 0:  # a shifted diagonal keeps the example instead of rejecting it
+    if det(m) == 0:  # a shifted diagonal keeps the example instead of rejecting it
         for i in range(n):
             m[i][i] += 2 * bound + 1
-    if Matrix(m).det() == 0:
+    if det(m) == 0:
         m = [[int(i == j) for j in range(n)] for i in range(n)]
     return m
 

@@ -8,6 +8,7 @@ import pytest
 import sympy
 from hypothesis import assume, given, settings
 from hypothesis import strategies as st
+from strategies import integers, invertible_matrices, lines, points, rationals
 from sympy import I, Matrix, Rational, S, sqrt, symbols
 
 from pgsym.conics import (
@@ -31,8 +32,7 @@ from pgsym.errors import (
 from pgsym.homogeneous import is_zero
 from pgsym.projective_plane import Line, Point, join
 
-small = st.integers(min_value=-6, max_value=6)
-params = st.fractions(min_value=-5, max_value=5, max_denominator=4)
+params = rationals(5, 4)
 FAST = settings(max_examples=30, deadline=None)
 
 D0 = Matrix([[1, 0, 0], [0, 1, 0], [0, 0, -1]])  # the unit circle x² + y² = w²
@@ -42,13 +42,6 @@ def qf(m: Matrix, v) -> sympy.Expr:
     """xᵀ M x computed directly, independent of the library."""
     x = Matrix(list(v))
     return sympy.expand((x.T * m * x)[0, 0])
-
-
-@st.composite
-def invertible(draw) -> Matrix:
-    H = Matrix(3, 3, draw(st.lists(small, min_size=9, max_size=9)))
-    assume(H.det() != 0)
-    return H
 
 
 def circle_point(t) -> list:
@@ -66,23 +59,11 @@ def conics_with_points(draw, n: int = 5):
     If y lies on the unit circle then x = H y satisfies xᵀ adj(H)ᵀ D adj(H) x = det(H)² yᵀ D y = 0,
     so the matrix adj(H)ᵀ D adj(H) is the image conic (computed here with SymPy, not pgsym).
     """
-    H = draw(invertible())
+    H = Matrix(draw(invertible_matrices()))
     ts = draw(st.lists(st.one_of(st.none(), params), min_size=n, max_size=n, unique=True))
     pts = [Point(*(H * Matrix(circle_point(t)))) for t in ts]
     A = H.adjugate()
     return A.T * D0 * A, pts
-
-
-@st.composite
-def lines(draw) -> Line:
-    coords = draw(st.lists(small, min_size=3, max_size=3).filter(lambda c: any(c)))
-    return Line(*coords)
-
-
-@st.composite
-def real_points(draw) -> Point:
-    coords = draw(st.lists(small, min_size=3, max_size=3).filter(lambda c: any(c)))
-    return Point(*coords)
 
 
 def points_of(l: Line) -> list[Point]:
@@ -115,7 +96,7 @@ def test_equality_up_to_scale_and_canonical_form():
     assert DualConic(-2 * D0).canonical() == DualConic(D0)
 
 
-@given(st.lists(small, min_size=6, max_size=6).filter(any))
+@given(st.lists(integers(6), min_size=6, max_size=6).filter(any))
 def test_repr_round_trips(coeffs):
     C = Conic.from_coefficients(*coeffs)
     assert eval(repr(C), {"Conic": Conic, "S": S}) == C
@@ -238,7 +219,7 @@ def test_tangent_meets_the_conic_in_a_double_root(data):
 
 
 @FAST
-@given(conics_with_points(n=1), real_points(), lines())
+@given(conics_with_points(n=1), points(bound=6), lines(6))
 def test_pole_polar_and_dual_conic(data, x, l):
     M, (p,) = data
     C = Conic(M)
@@ -256,7 +237,7 @@ def test_pole_polar_and_dual_conic(data, x, l):
 
 
 @FAST
-@given(conics_with_points(n=1), lines())
+@given(conics_with_points(n=1), lines(6))
 def test_intersections_lie_on_line_and_conic(data, l):
     M, _ = data
     C = Conic(M)
@@ -288,7 +269,7 @@ def test_degenerate_conics_by_rank():
 
 
 @FAST
-@given(lines(), lines(), real_points())
+@given(lines(6), lines(6), points(bound=6))
 def test_random_line_pairs(l, m, x):
     C = pair(l, m)
     assert C.rank == (1 if l == m else 2)
@@ -328,7 +309,7 @@ def test_circular_points_and_dual_conic_at_infinity():
 
 
 @FAST
-@given(params, params, params.filter(lambda r: r != 0), lines())
+@given(params, params, params.filter(lambda r: r != 0), lines(6))
 def test_every_circle_passes_through_the_circular_points(cx, cy, r, l):
     C = Conic.circle(cx, cy, r)
     assert all(C.contains(p) for p in circular_points())
@@ -337,7 +318,7 @@ def test_every_circle_passes_through_the_circular_points(cx, cy, r, l):
 
 
 @FAST
-@given(real_points())
+@given(points(bound=6))
 def test_lines_through_a_circular_point_are_on_the_dual_conic_at_infinity(x):
     I_, J_ = circular_points()
     assume(not x.is_ideal)

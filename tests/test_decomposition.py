@@ -6,11 +6,12 @@ import pytest
 import sympy
 from hypothesis import assume, given, settings
 from hypothesis import strategies as st
+from strategies import integers
 
 from pgsym.decomposition import affine_decomposition, decompose
 from pgsym.errors import DecompositionError, SingularTransformationError
 
-small = st.integers(min_value=-5, max_value=5)
+small = integers(5)
 
 
 def test_affine_example_by_hand():

@@ -8,6 +8,7 @@ from fractions import Fraction
 import pytest
 from hypothesis import given
 from hypothesis import strategies as st
+from strategies import rationals
 
 from pgsym.exercises.seeds import form_id, slot_keys, variant_seed
 from pgsym.exercises.sheets import build_sheet, build_sheets, parse_topics
@@ -64,7 +65,7 @@ def test_exact_helpers_by_hand():
         [[2, 0, 0], [0, 2, 0], [0, 0, 2]]
 
 
-fractions = st.fractions(min_value=-50, max_value=50, max_denominator=12)
+fractions = rationals(50, 12)
 
 
 @given(st.lists(fractions, min_size=2, max_size=6).filter(any), fractions.filter(bool))

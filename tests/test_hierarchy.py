@@ -5,6 +5,7 @@ from __future__ import annotations
 from fractions import Fraction
 
 import pytest
+import strategies
 import sympy
 from hypothesis import assume, given, settings
 from hypothesis import strategies as st
@@ -39,8 +40,8 @@ from pgsym.hierarchy import (
 from pgsym.homogeneous import is_zero
 from pgsym.transformations import Transformation
 
-rationals = st.fractions(min_value=-5, max_value=5, max_denominator=6)
-nonzero = rationals.filter(lambda f: f != 0)
+rationals = strategies.rationals(5, 6)
+nonzero = strategies.nonzero_rationals(5, 6)
 
 # -- DoF ------------------------------------------------------------------------------------------
 
@@ -74,14 +75,29 @@ def test_upper_bound_uses_homogeneity_only_where_it_holds():
 
 
 def test_rank_at_a_degenerate_point_is_only_a_lower_bound():
-    # at k = 0 the similarity collapses to a translation: only t_x, t_y (and the scale column) survive
-    J = SIMILARITY_2D.jacobian_at([0, 1, 2, 3])
+    # at k = 0 the 3D similarity collapses to a translation: the columns of a, b, c vanish (k R'), so only
+    # those of k, t_x, t_y, t_z and the scale column survive: rank 5, DoF ≥ 4 only, not 7
+    J = SIMILARITY_3D.jacobian_at([0, 1, 2, 3, 4, 5, 6])
     from pgsym.hierarchy import _rank
 
-    assert _rank(J) - 1 < 4
+    assert _rank(J) == 5
 
 
-@pytest.mark.parametrize("cls", [SIMILARITY_2D, EUCLIDEAN_3D], ids=lambda c: c.key)
+def test_similarity_2d_is_polynomial_in_its_parameters():
+    # sR = [[a, -b], [b, a]] with a = s cos θ, b = s sin θ; the reflected piece negates the second column
+    a, b, tx, ty = SIMILARITY_2D.parameters
+    assert SIMILARITY_2D.generic() == sympy.Matrix([[a, -b, tx], [b, a, ty], [0, 0, 1]])
+    assert SIMILARITY_2D.generic(1) == sympy.Matrix([[a, b, tx], [b, -a, ty], [0, 0, 1]])
+    # a = 3, b = 4: scale √(9 + 16) = 5, so (1, 0) ↦ (3, 4) + (1, 1) = (4, 5)
+    from pgsym.projective_plane import Point
+
+    assert SIMILARITY_2D.element(3, 4, 1, 1)(Point(1, 0)) == Point(4, 5)
+    # a = b = 0 is no transformation at all
+    with pytest.raises(SingularTransformationError):
+        SIMILARITY_2D.element(0, 0, 1, 1)
+
+
+@pytest.mark.parametrize("cls", [EUCLIDEAN_2D, SIMILARITY_2D, EUCLIDEAN_3D], ids=lambda c: c.key)
 def test_forward_derivatives_equal_the_symbolic_jacobian(cls):
     point = [Fraction(k + 2, k + 3) for k in range(cls.n_parameters)]
     exact = cls.jacobian_at(point)
@@ -162,10 +178,11 @@ def test_classify_euclidean_and_reflections(t, tx, ty, scale):
 
 
 @settings(max_examples=20, deadline=None)
-@given(nonzero, rationals, rationals, rationals, st.integers(0, 1))
-def test_classify_similarities(k, t, tx, ty, comp):
-    assume(abs(k) != 1)
-    assert classify(SIMILARITY_2D.element(k, t, tx, ty, component=comp)) is SIMILARITY_2D
+@given(rationals, rationals, rationals, rationals, st.integers(0, 1))
+def test_classify_similarities(a, b, tx, ty, comp):
+    # the scale is √(a² + b²): zero is singular, one is an isometry
+    assume(a * a + b * b not in (0, 1))
+    assert classify(SIMILARITY_2D.element(a, b, tx, ty, component=comp)) is SIMILARITY_2D
 
 
 @settings(max_examples=20, deadline=None)

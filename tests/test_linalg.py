@@ -9,6 +9,7 @@ import numpy as np
 import pytest
 from hypothesis import assume, given, settings
 from hypothesis import strategies as st
+from strategies import integers
 from sympy import Matrix, Rational, symbols
 
 from pgsym.errors import (
@@ -31,7 +32,7 @@ from pgsym.linalg import (
 )
 from pgsym.space import Plane, Point3, plane_through, point_on_planes
 
-small = st.integers(min_value=-9, max_value=9)
+small = integers(9)
 FAST = settings(max_examples=60, deadline=None)
 
 

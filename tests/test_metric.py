@@ -8,7 +8,7 @@ import pytest
 import sympy
 from hypothesis import HealthCheck, assume, given, settings
 from hypothesis import strategies as st
-from strategies import nonzero_rational
+from strategies import integers, nonzero_rational
 from sympy import I, Rational, sqrt
 
 from pgsym.errors import (
@@ -53,7 +53,7 @@ from pgsym.transformations import Transformation
 
 FAST = settings(max_examples=25, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 
-ints = st.integers(-6, 6)
+ints = integers(6)
 
 
 @st.composite

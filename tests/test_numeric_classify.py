@@ -4,13 +4,13 @@ from __future__ import annotations
 
 import subprocess
 import sys
-from fractions import Fraction
 
 import numpy as np
 import pytest
 import sympy
 from hypothesis import given, settings
 from hypothesis import strategies as st
+from strategies import rationals
 
 from pgsym.errors import SingularTransformationError
 from pgsym.hierarchy import CLASSES_2D, CLASSES_3D, classify
@@ -18,7 +18,6 @@ from pgsym.numeric.classify import classify_matrix
 from pgsym.numeric.tolerances import CLASS_RTOL
 
 # small rationals: their floats are exact to 1e-16, far inside CLASS_RTOL, so the float verdict must be the exact one
-RATIONALS = st.builds(Fraction, st.integers(-6, 6), st.integers(1, 5))
 
 
 @st.composite
@@ -26,7 +25,7 @@ def exact_members(draw):
     """(class, exact 3×3 or 4×4 matrix) drawn from the generic element of a random class of the hierarchy."""
     c = draw(st.sampled_from(CLASSES_2D + CLASSES_3D))
     component = draw(st.integers(0, len(c.components) - 1))
-    values = draw(st.lists(RATIONALS, min_size=c.n_parameters, max_size=c.n_parameters))
+    values = draw(st.lists(rationals(6, 5), min_size=c.n_parameters, max_size=c.n_parameters))
     try:
         return c, c.element(*values, component=component).matrix
     except SingularTransformationError:  # e.g. an affine map with a singular linear part: the float path refuses too

@@ -9,11 +9,12 @@ import numpy as np
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
+from strategies import integers
 
 import pgsym.numeric as pn
 from pgsym.errors import DimensionError, NonFiniteError, NonNumericError, ObjectTypeError, ZeroVectorError
 
-small = st.integers(-20, 20)
+small = integers(20)
 
 
 @settings(max_examples=25, deadline=None)

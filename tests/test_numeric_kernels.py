@@ -14,6 +14,7 @@ import numpy as np
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
+from strategies import homogeneous_vectors, integers, invertible_matrices
 
 import pgsym.numeric as pn
 from pgsym.errors import (
@@ -33,17 +34,9 @@ from pgsym.numeric import OptionError
 # -- strategies: batches of small integer vectors, about a third of them ideal ------------------------
 
 
-@st.composite
-def vectors(draw, k: int, allow_ideal: bool = True, low: int = -9, high: int = 9) -> tuple[int, ...]:
-    head = draw(st.lists(st.integers(low, high), min_size=k - 1, max_size=k - 1))
-    last = 0 if allow_ideal and draw(st.integers(0, 2)) == 0 else draw(st.integers(low, high))
-    v = (*head, last)
-    return v if any(v) else (1, *v[1:])
-
-
 def batches(k: int, n_arrays: int, allow_ideal: bool = True) -> st.SearchStrategy:
     """``n_arrays`` lists of the same length of nonzero integer k-vectors; rows may repeat (degenerate)."""
-    row = st.tuples(*[vectors(k, allow_ideal) for _ in range(n_arrays)])
+    row = st.tuples(*[homogeneous_vectors(k, allow_ideal, integers(9)) for _ in range(n_arrays)])
     repeated = row.map(lambda r: (r[0], *([r[0]] * (len(r) - 1))))  # a fully degenerate row
     return st.lists(st.one_of(row, row, row, repeated), min_size=1, max_size=6).map(
         lambda rows: [np.array([r[i] for r in rows], dtype=float) for i in range(n_arrays)]
@@ -283,17 +276,8 @@ def test_cross_ratio_by_hand_and_its_errors():
 # -- transformations ----------------------------------------------------------------------------------------------
 
 
-@st.composite
-def invertible(draw, k: int) -> list[list[int]]:
-    rows = draw(st.lists(st.lists(st.integers(-4, 4), min_size=k, max_size=k), min_size=k, max_size=k))
-    m = np.array(rows, dtype=float)
-    if abs(np.linalg.det(m)) < 0.5:  # integer matrix: det is an integer; make it invertible
-        m = m + 9 * np.eye(k)
-    return m.astype(int).tolist()
-
-
 @settings(max_examples=20, deadline=None)
-@given(invertible(3), batches(3, 1), st.lists(st.integers(-5, 5), min_size=6, max_size=6))
+@given(invertible_matrices(3, 4), batches(3, 1), st.lists(st.integers(-5, 5), min_size=6, max_size=6))
 def test_plane_transformations_equal_the_exact_action(H, data, conic):
     from pgsym.conics import Conic, DualConic
     from pgsym.projective_plane import Line, Point
@@ -320,7 +304,7 @@ def test_plane_transformations_equal_the_exact_action(H, data, conic):
 
 
 @settings(max_examples=10, deadline=None)
-@given(invertible(4), batches(4, 1))
+@given(invertible_matrices(4, 4), batches(4, 1))
 def test_space_transformations_equal_the_exact_action(H, data):
     from pgsym.quadrics import Quadric
     from pgsym.space import Plane, Point3

@@ -8,6 +8,7 @@ import numpy as np
 import pytest
 from hypothesis import HealthCheck, assume, given, settings
 from hypothesis import strategies as st
+from strategies import integers
 
 from pgsym import metric
 from pgsym.errors import DimensionError, IdealPointError, NonFiniteError, OptionError
@@ -18,7 +19,7 @@ from pgsym.space import Plane, Point3
 
 FAST = settings(max_examples=30, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 
-small = st.integers(-5, 5)
+small = integers(5)
 
 
 def rows(k: int, n: int = 5, ideal_last: bool = True):

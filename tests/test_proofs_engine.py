@@ -9,6 +9,7 @@ import pytest
 import sympy
 from hypothesis import given, settings
 from hypothesis import strategies as st
+from strategies import homogeneous_vectors, integers
 
 from pgsym import ring as alg
 from pgsym.errors import ObjectTypeError, PgsymError
@@ -16,8 +17,8 @@ from pgsym.projective_plane import Point, cross, join
 from pgsym.proofs import Claim, NonPolynomialClaimError, UndefinedConstructionError, UnknownClaimError, prove
 from pgsym.proofs.catalogue import _cross_ratio_p2
 
-small = st.integers(-6, 6)
-vec3 = st.tuples(small, small, small).filter(any)
+small = integers(6)
+vec3 = homogeneous_vectors(3, entries=small)
 
 
 # -- worked examples -------------------------------------------------------------------------------

@@ -6,7 +6,7 @@ import pytest
 import sympy
 from hypothesis import assume, given, settings
 from hypothesis import strategies as st
-from strategies import invertible_matrices
+from strategies import integers, invertible_matrices
 from strategies import planes as plane_strategy
 from sympy import Rational, S, symbols
 
@@ -25,7 +25,7 @@ from pgsym.quadrics import DualQuadric, NotOnQuadricError, Quadric
 from pgsym.space import Plane, Point3
 from pgsym.transformations import Transformation
 
-small = st.integers(min_value=-6, max_value=6)
+small = integers(6)
 FAST = settings(max_examples=40, deadline=None)
 SIGNS = st.tuples(*[st.sampled_from([1, -1])] * 3)
 
@@ -174,7 +174,7 @@ def test_polar_is_linear_and_tangent_planes_touch(entries, x, k):
 
 # -- the shared symmetric-form base --------------------------------------------------------------------
 
-entries = st.integers(-4, 4)
+entries = integers(4)
 
 
 @st.composite

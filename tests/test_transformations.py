@@ -10,28 +10,13 @@ import pytest
 import sympy
 from hypothesis import assume, given, settings
 from hypothesis import strategies as st
-from strategies import homogeneous_triples, invertible_matrices, lines, points
+from strategies import homogeneous_triples, integers, invertible_matrices, lines, points, points3, transformations
 
 from pgsym.errors import DimensionError, ObjectTypeError, PgsymError, SingularTransformationError
 from pgsym.projective_plane import Line, Point, collinear, concurrent, cross, incident, join, meet
 from pgsym.transformations import Transformation, adjugate
 
-small = st.integers(min_value=-6, max_value=6)
-
-
-@st.composite
-def matrices(draw, n: int = 3) -> Transformation:
-    rows = [[draw(small) for _ in range(n)] for _ in range(n)]
-    assume(sympy.Matrix(rows).det() != 0)
-    return Transformation(rows)
-
-
-def points3():
-    return st.tuples(small, small, small, small).filter(any).map(lambda t: _space().Point3(*t))
-
-
-def planes():
-    return st.tuples(small, small, small, small).filter(any).map(lambda t: _space().Plane(*t))
+small = integers(6)
 
 
 def _space():
@@ -126,14 +111,14 @@ def test_symbolic_singular_matrix_is_detected():
 
 
 @settings(max_examples=25, deadline=None)
-@given(matrices(), points(), points())
+@given(transformations(), points(), points())
 def test_join_commutes_with_the_map(H, p, q):
     assume(p != q)
     assert H(join(p, q)) == join(H(p), H(q))
 
 
 @settings(max_examples=25, deadline=None)
-@given(matrices(), lines(), homogeneous_triples())
+@given(transformations(), lines(), homogeneous_triples())
 def test_incidence_is_preserved(H, l, v):
     coords = cross(l.coords, v)  # orthogonal to l: a point on l, unless v is proportional to l
     assume(any(c != 0 for c in coords))
@@ -142,14 +127,14 @@ def test_incidence_is_preserved(H, l, v):
 
 
 @settings(max_examples=30, deadline=None)
-@given(matrices(), lines(), lines())
+@given(transformations(), lines(), lines())
 def test_meet_commutes_with_the_map(H, l, m):
     assume(l != m)
     assert H(meet(l, m)) == meet(H(l), H(m))
 
 
 @settings(max_examples=30, deadline=None)
-@given(matrices(), points(), points(), st.integers(-4, 4), st.integers(-4, 4))
+@given(transformations(), points(), points(), st.integers(-4, 4), st.integers(-4, 4))
 def test_collinear_and_concurrent_stay_so(H, p, q, s, t):
     combo = [s * a + t * b for a, b in zip(p.coords, q.coords, strict=True)]
     assume(any(c != 0 for c in combo))
@@ -160,7 +145,7 @@ def test_collinear_and_concurrent_stay_so(H, p, q, s, t):
 
 
 @settings(max_examples=30, deadline=None)
-@given(matrices(), matrices(), points())
+@given(transformations(), transformations(), points())
 def test_composition_and_inverse_act_correctly(H, G, x):
     assert (H @ G)(x) == H(G(x))
     assert H.inverse()(H(x)) == x
@@ -168,7 +153,7 @@ def test_composition_and_inverse_act_correctly(H, G, x):
 
 
 @settings(max_examples=30, deadline=None)
-@given(matrices(), lines())
+@given(transformations(), lines())
 def test_line_rule_is_h_inverse_transpose(H, l):
     expected = H.matrix.inv().T * sympy.Matrix(l.coords)
     assert H(l) == Line(*expected)
@@ -178,7 +163,7 @@ def test_line_rule_is_h_inverse_transpose(H, l):
 
 
 @settings(max_examples=20, deadline=None)
-@given(matrices())
+@given(transformations())
 def test_points_of_a_conic_map_to_points_of_the_image_conic(H):
     from pgsym.conics import Conic
 
@@ -192,7 +177,7 @@ def test_points_of_a_conic_map_to_points_of_the_image_conic(H):
 
 
 @settings(max_examples=20, deadline=None)
-@given(matrices())
+@given(transformations())
 def test_dual_conic_rule_matches_dual_of_image(H):
     from pgsym.conics import Conic, DualConic
 
@@ -206,7 +191,7 @@ def test_dual_conic_rule_matches_dual_of_image(H):
 
 
 @settings(max_examples=20, deadline=None)
-@given(matrices(4), points3(), points3(), points3())
+@given(transformations(4), points3(bound=6), points3(bound=6), points3(bound=6))
 def test_planes_map_by_h_inverse_transpose(H, a, b, c):
     space = _space()
     assume(not any(x == y for x, y in ((a, b), (b, c), (a, c))))
@@ -220,7 +205,7 @@ def test_planes_map_by_h_inverse_transpose(H, a, b, c):
 
 
 @settings(max_examples=15, deadline=None)
-@given(matrices(4), points3(), points3())
+@given(transformations(4), points3(bound=6), points3(bound=6))
 def test_plucker_matrices_map_by_congruence(H, a, b):
     from pgsym.plucker import Line3
 
@@ -235,7 +220,7 @@ def test_plucker_matrices_map_by_congruence(H, a, b):
 
 
 @settings(max_examples=15, deadline=None)
-@given(matrices(4))
+@given(transformations(4))
 def test_quadric_points_map_to_image_quadric(H):
     from pgsym.quadrics import Quadric
 
@@ -259,7 +244,7 @@ def test_homography_from_four_points_by_hand():
 
 
 @settings(max_examples=20, deadline=None)
-@given(matrices(), st.lists(homogeneous_triples(), min_size=4, max_size=4))
+@given(transformations(), st.lists(homogeneous_triples(), min_size=4, max_size=4))
 def test_homography_from_points_recovers_the_map(H, triples):
     from pgsym.transformations import homography_from_points
 
@@ -291,7 +276,7 @@ def _line():
 
 
 @settings(max_examples=30, deadline=None)
-@given(matrices(2), matrices(2), st.tuples(small, small).filter(any))
+@given(transformations(2), transformations(2), st.tuples(small, small).filter(any))
 def test_projective_map1_and_a_dim_one_transformation_agree(T, G, xy):
     P1 = _line()
     F = P1.ProjectiveMap1(T.matrix)
@@ -328,7 +313,7 @@ def test_dim_one_transformation_by_hand():
 
 
 @settings(max_examples=30, deadline=None)
-@given(matrices(), points(), points())
+@given(transformations(), points(), points())
 def test_a_lines_own_rule_is_the_join_of_the_image_points(H, p, q):
     # l = p × q; l' = adj(H)ᵀ l must be the line through H p and H q (the dual of the point rule)
     assume(p != q)
@@ -338,7 +323,7 @@ def test_a_lines_own_rule_is_the_join_of_the_image_points(H, p, q):
 
 
 @settings(max_examples=20, deadline=None)
-@given(matrices(4), points3(), points3(), points3())
+@given(transformations(4), points3(bound=6), points3(bound=6), points3(bound=6))
 def test_a_planes_own_rule_is_the_plane_of_the_image_points(H, a, b, c):
     space = _space()
     try:

@@ -108,22 +108,22 @@ class _Reader:
         _, word, _ = self.take("number")
         return Fraction(word)
 
-    def scalar(self) -> Fraction:
-        sign = 1
+    def sign(self) -> int:
+        """An optional ``+`` or ``-`` (numerator and denominator may each carry one): ``-1`` or ``1``."""
         tok = self.peek()
-        if tok is not None and tok[0] == "sign":
-            sign = -1 if tok[1] == "-" else 1
-            self.i += 1
+        if tok is None or tok[0] != "sign":
+            return 1
+        self.i += 1
+        return -1 if tok[1] == "-" else 1
+
+    def scalar(self) -> Fraction:
+        sign = self.sign()
         value = self.unsigned()
         tok = self.peek()
         if tok is not None and tok[0] == "slash":
             pos = tok[2]
             self.i += 1
-            den_sign = 1
-            tok = self.peek()
-            if tok is not None and tok[0] == "sign":
-                den_sign = -1 if tok[1] == "-" else 1
-                self.i += 1
+            den_sign = self.sign()
             den = self.unsigned()
             if den == 0:
                 raise _fail(f"division by zero at position {pos + 1}")

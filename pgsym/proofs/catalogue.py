@@ -383,8 +383,8 @@ _DOF_CLAIMS = (
      "Nine entries up to a common scale: the family of all 3×3 matrices has dimension 8 in P⁸."),
     ("dof-affine-2d", "A 2D affinity has 6 degrees of freedom", "hierarchy-2d", AFFINE_2D, 6, "a b c d tx ty",
      "[[a, b, tx], [c, d, ty], [0, 0, 1]] depends on 6 independent parameters."),
-    ("dof-similarity-2d", "A 2D similarity has 4 degrees of freedom", "hierarchy-2d", SIMILARITY_2D, 4, "k t tx ty",
-     "A scale k, a rotation by the rational parametrisation of tan(θ/2) = t, and a translation: 4."),
+    ("dof-similarity-2d", "A 2D similarity has 4 degrees of freedom", "hierarchy-2d", SIMILARITY_2D, 4, "a b tx ty",
+     "[[a, −b, tx], [b, a, ty], [0, 0, 1]] (a = s cos θ, b = s sin θ) depends on 4 independent parameters."),
     ("dof-euclidean-2d", "A 2D Euclidean motion has 3 degrees of freedom", "hierarchy-2d", EUCLIDEAN_2D, 3, "t tx ty",
      "A rotation by the rational parametrisation cos θ = (1 − t²)/(1 + t²), sin θ = 2t/(1 + t²), and a translation."),
     ("dof-projective-3d", "A 3D homography has 15 degrees of freedom", "hierarchy-3d", PROJECTIVE_3D, 15,
@@ -424,7 +424,7 @@ def _affine(c: Claim) -> object:
 
 
 def _similarity(c: Claim) -> object:
-    return c.matrix("S", class_matrix(c, SIMILARITY_2D, "k t tx ty")[0], invertible=True)
+    return c.matrix("S", class_matrix(c, SIMILARITY_2D, "a b tx ty")[0], invertible=True)
 
 
 def _euclidean(c: Claim) -> object:
