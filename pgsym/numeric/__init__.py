@@ -94,9 +94,11 @@ from .classify import classify_matrix
 from .convert import from_array, to_array
 from .homogeneous import dehomogenize, homogenize, is_ideal
 from .metric import (
+    angle_bisectors,
     cos_angle,
     is_perpendicular,
     orthogonal_projection,
+    perpendicular_line,
     point_distance,
     point_line_distance,
     point_plane_distance,
@@ -132,6 +134,7 @@ __all__ = [
     "OptionError",
     "SVDSteps",
     "adjugate",
+    "angle_bisectors",
     "bracket",
     "classify_matrix",
     "cos_angle",
@@ -155,6 +158,7 @@ __all__ = [
     "nullspace_svd",
     "numeric_rank",
     "orthogonal_projection",
+    "perpendicular_line",
     "plane_through",
     "plane_through_lines",
     "plane_through_numeric",

@@ -1,0 +1,124 @@
+"""The numeric constructions of lines (perpendiculars, bisectors, parallels, midpoints) against the exact ones.
+
+Random exact data from ``tests/strategies.py`` (ideal points and lines through the origin included, and
+the line at infinity by hand), converted to float64: the numeric kernel must give the exact object up to
+scale, and mask (or raise) exactly where the exact core raises.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+from strategies import lines, points
+
+from pgsym import metric
+from pgsym.errors import CoincidentLinesError, DegenerateConfigurationError, IdealPointError, NonFiniteError
+from pgsym.numeric import metric as nm
+
+FAST = settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+
+
+def coords(objs) -> np.ndarray:
+    return np.array([[float(c) for c in o.coords] for o in objs])
+
+
+def exact_or_none(f, *args):
+    """The exact value, or None where the exact core refuses the input (ideal or degenerate)."""
+    try:
+        return f(*args)
+    except (IdealPointError, DegenerateConfigurationError):
+        return None
+
+
+def same_object(row, exact) -> bool:
+    """``row`` and the exact coordinates are one projective object: unit vectors equal up to sign."""
+    e = np.array([float(c) for c in exact], dtype=float)
+    r = np.asarray(row, dtype=float)
+    e, r = e / np.linalg.norm(e), r / np.linalg.norm(r)
+    return bool(np.allclose(r, e, atol=1e-12) or np.allclose(r, -e, atol=1e-12))
+
+
+def pairs(a, b):
+    n = min(len(a), len(b))
+    return a[:n], b[:n]
+
+
+# -- perpendicular_line ------------------------------------------------------------------------------
+@given(st.lists(lines(), min_size=1, max_size=6), st.lists(points(), min_size=1, max_size=6))
+@FAST
+def test_perpendicular_line_agrees_with_exact(ls, xs):
+    ls, xs = pairs(ls, xs)
+    values, ok = nm.perpendicular_line(coords(ls), coords(xs), ideal="mask")
+    for i, (l, x) in enumerate(zip(ls, xs, strict=True)):
+        e = exact_or_none(metric.perpendicular_line, l, x)
+        assert ok[i] == (e is not None)
+        if e is None:
+            assert np.isnan(values[i]).all()
+        else:
+            # the same formula on integers: proportional by an exact zero cross product
+            assert not np.cross(values[i], coords([e])[0]).any()
+    if not ok.all():
+        with pytest.raises(IdealPointError):
+            nm.perpendicular_line(coords(ls), coords(xs))
+
+
+def test_perpendicular_line_by_hand():
+    # to 3x + 4y − 5 = 0 through (1, 2, 1): x × (3, 4, 0) = (2·0 − 1·4, 1·3 − 1·0, 1·4 − 2·3) = (−4, 3, −2),
+    # i.e. −4x + 3y = 2, the line of direction (3, 4) through (1, 2): −4 + 6 = 2
+    assert nm.perpendicular_line([3.0, 4, -5], [1.0, 2, 1]).tolist() == [-4.0, 3.0, -2.0]
+    # component-major layout: two lines through the origin against (2, 0, 2) = (1, 0)
+    l = np.array([[1.0, 0], [0, 1], [0, 0]])  # x = 0 and y = 0
+    assert nm.perpendicular_line(l, [2.0, 0, 2], axis=0).T.tolist() == [[0.0, 2, 0], [-2.0, 0, 2]]
+    with pytest.raises(IdealPointError):
+        nm.perpendicular_line([0.0, 0, 1], [1.0, 2, 1])  # the line at infinity has no normal
+
+
+@pytest.mark.parametrize("scale", [1e-200, 1e200])
+def test_perpendicular_line_at_extreme_scales(scale):
+    # products of two entries under- or overflow float64; the result is the same line as at scale 1
+    values = nm.perpendicular_line(np.array([3.0, 4, -5]) * scale, np.array([1.0, 2, 1]) * scale)
+    assert np.isfinite(values).all() and same_object(values, [-4, 3, -2])
+
+
+# -- angle_bisectors ---------------------------------------------------------------------------------
+@given(st.lists(lines(), min_size=1, max_size=6), st.lists(lines(), min_size=1, max_size=6))
+@FAST
+def test_angle_bisectors_agree_with_exact(ls, ms):
+    ls, ms = pairs(ls, ms)
+    (plus, minus), ok = nm.angle_bisectors(coords(ls), coords(ms), ideal="mask", degenerate="mask")
+    for i, (l, m) in enumerate(zip(ls, ms, strict=True)):
+        e = exact_or_none(metric.angle_bisectors, l, m)
+        assert ok[i] == (e is not None)
+        if e is None:
+            assert np.isnan(plus[i]).all() and np.isnan(minus[i]).all()
+        else:
+            assert same_object(plus[i], e[0].coords) and same_object(minus[i], e[1].coords)
+
+
+def test_angle_bisectors_by_hand():
+    # x = 0 and 3x + 4y = 0: |l| = 1, |m| = 5, so (1, 0, 0) ± (3, 4, 0)/5 = (1.6, 0.8, 0) and (0.4, −0.8, 0)
+    plus, minus = nm.angle_bisectors([1.0, 0, 0], [3.0, 4, 0])
+    assert plus == pytest.approx([1.6, 0.8, 0]) and minus == pytest.approx([0.4, -0.8, 0])
+    # parallel x = 1 and −2x + 6 = 0 (x = 3): u = (1, 0, −1), v = (−1, 0, 3): u + v = (0, 0, 2) is the line at
+    # infinity, u − v = (2, 0, −4) the midline x = 2
+    plus, minus = nm.angle_bisectors([1.0, 0, -1], [-2.0, 0, 6])
+    assert plus.tolist() == [0.0, 0.0, 2.0] and minus.tolist() == [2.0, 0.0, -4.0]
+    with pytest.raises(CoincidentLinesError):
+        nm.angle_bisectors([1.0, 2, 3], [[1.0, 0, 0], [-3, -6, -9]])  # the second row is the same line
+    with pytest.raises(IdealPointError):
+        nm.angle_bisectors([0.0, 0, 1], [1.0, 0, 0])
+    (plus, minus), ok = nm.angle_bisectors([1.0, 2, 3], [[1.0, 0, 0], [-3, -6, -9]], degenerate="mask")
+    assert ok.tolist() == [True, False] and np.isnan(plus[1]).all() and np.isfinite(minus[0]).all()
+
+
+@pytest.mark.parametrize("scale", [1e-200, 1e200])
+def test_angle_bisectors_at_extreme_scales(scale):
+    plus, minus = nm.angle_bisectors(np.array([1.0, 0, 0]) * scale, np.array([3.0, 4, 0]) * scale)
+    assert same_object(plus, [1.6, 0.8, 0]) and same_object(minus, [0.4, -0.8, 0])
+
+
+def test_angle_bisectors_name_nan_input():
+    with pytest.raises(NonFiniteError):
+        nm.angle_bisectors([np.nan, 0, 0], [3.0, 4, 0])
