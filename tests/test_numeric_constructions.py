@@ -11,10 +11,18 @@ import numpy as np
 import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
-from strategies import lines, points
+from strategies import lines, lines3, planes, points, points3
 
-from pgsym import metric
-from pgsym.errors import CoincidentLinesError, DegenerateConfigurationError, IdealPointError, NonFiniteError
+import pgsym.numeric as pn
+from pgsym import affine, metric
+from pgsym.errors import (
+    CoincidentLinesError,
+    CoincidentPointsError,
+    DegenerateConfigurationError,
+    IdealPointError,
+    NonFiniteError,
+    ZeroVectorError,
+)
 from pgsym.numeric import metric as nm
 
 FAST = settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow])
@@ -28,7 +36,7 @@ def exact_or_none(f, *args):
     """The exact value, or None where the exact core refuses the input (ideal or degenerate)."""
     try:
         return f(*args)
-    except (IdealPointError, DegenerateConfigurationError):
+    except (IdealPointError, DegenerateConfigurationError, ZeroVectorError):
         return None
 
 
@@ -122,3 +130,104 @@ def test_angle_bisectors_at_extreme_scales(scale):
 def test_angle_bisectors_name_nan_input():
     with pytest.raises(NonFiniteError):
         nm.angle_bisectors([np.nan, 0, 0], [3.0, 4, 0])
+
+
+# -- parallel_line, is_parallel, midpoint (pgsym.numeric.affine against pgsym.affine) -----------------
+@given(st.lists(lines(), min_size=1, max_size=6), st.lists(points(), min_size=1, max_size=6))
+@FAST
+def test_parallel_line_in_the_plane_agrees_with_exact(ls, xs):
+    ls, xs = pairs(ls, xs)
+    values, ok = pn.parallel_line(coords(ls), coords(xs), ideal="mask", degenerate="mask")
+    for i, (l, x) in enumerate(zip(ls, xs, strict=True)):
+        e = exact_or_none(affine.parallel_line, l, x)
+        assert ok[i] == (e is not None)
+        if e is None:
+            assert np.isnan(values[i]).all()
+        else:
+            assert not np.cross(values[i], coords([e])[0]).any()  # the same formula on integers
+
+
+@given(st.lists(planes(), min_size=1, max_size=5), st.lists(points3(), min_size=1, max_size=5))
+@FAST
+def test_parallel_plane_agrees_with_exact(ps, xs):
+    ps, xs = pairs(ps, xs)
+    values, ok = pn.parallel_line(coords(ps), coords(xs), ideal="mask", degenerate="mask")
+    for i, (p, x) in enumerate(zip(ps, xs, strict=True)):
+        e = exact_or_none(affine.parallel_line, p, x)
+        assert ok[i] == (e is not None)
+        if e is not None:
+            assert same_object(values[i], e.coords)
+
+
+def test_parallel_line_by_hand():
+    # to 3x + 4y − 5 = 0 through (2, 1, 1): (w n, −n·x) = (3, 4, −(6 + 4)) = (3, 4, −10)
+    assert pn.parallel_line([3.0, 4, -5], [2.0, 1, 1]).tolist() == [3.0, 4.0, -10.0]
+    # the same point as (4, 2, 2): (2·3, 2·4, −(12 + 8)) = (6, 8, −20), the same line
+    assert pn.parallel_line([3.0, 4, -5], [4.0, 2, 2]).tolist() == [6.0, 8.0, -20.0]
+    with pytest.raises(CoincidentPointsError):  # (4, −3, 0) is the direction of the line itself
+        pn.parallel_line([3.0, 4, -5], [4.0, -3, 0])
+    with pytest.raises(IdealPointError):
+        pn.parallel_line([0.0, 0, 1], [4.0, -3, 1])
+    # to z = 3 through (1e-200, 1e-200, 1, 1e-200) = (1, 1, 1e200): w n = 1e-400 underflows to 0; rescaled,
+    # the plane z = 1e200, i.e. (0, 0, 1e-200, −1)
+    v = pn.parallel_line([0.0, 0, 1e-200, -3e-200], [1e-200, 1e-200, 1.0, 1e-200])
+    assert same_object(v, [0, 0, 1e-200, -1])
+
+
+@given(st.lists(lines(), min_size=1, max_size=6), st.lists(lines(), min_size=1, max_size=6))
+@FAST
+def test_is_parallel_agrees_with_exact(ls, ms):
+    ls, ms = pairs(ls, ms)
+    for rtol in (0.0, 1e-10):
+        values, ok = pn.is_parallel(coords(ls), coords(ms), rtol=rtol, ideal="mask")
+        for i, (l, m) in enumerate(zip(ls, ms, strict=True)):
+            e = exact_or_none(affine.is_parallel, l, m)
+            assert ok[i] == (e is not None)
+            assert values[i] == bool(e)
+
+
+@given(st.lists(lines3(), min_size=1, max_size=4), st.lists(lines3(), min_size=1, max_size=4))
+@FAST
+def test_is_parallel_of_lines_of_space_agrees_with_exact(ls, ms):
+    ls, ms = pairs(ls, ms)
+    a = np.array([[float(c) for c in l.coordinates] for l in ls])
+    b = np.array([[float(c) for c in m.coordinates] for m in ms])
+    values, ok = pn.is_parallel(a, b, ideal="mask")
+    for i, (l, m) in enumerate(zip(ls, ms, strict=True)):
+        e = exact_or_none(affine.is_parallel, l, m)
+        assert ok[i] == (e is not None) and values[i] == bool(e)
+
+
+def test_is_parallel_by_hand():
+    # planes: normals (1, 2, 3) and (−2, −4, −6) are proportional; (1, 2, 3) × (0, 1, 0) = (−3, 0, 1) is not 0
+    assert pn.is_parallel([1.0, 2, 3, 4], [[-2.0, -4, -6, 0], [0, 1, 0, 0]]).tolist() == [True, False]
+    # lines of P² at 1e±200: (1, 2) against (1, 2 + 2⁻⁴⁰): sin θ ≈ 2⁻⁴⁰/5 ≈ 1.8e-13, under the default 1e-10
+    assert pn.is_parallel([1e200, 2e200, 0], [1e-200, (2 + 2.0**-40) * 1e-200, 1]).item()
+    assert not pn.is_parallel([1e200, 2e200, 0], [1e-200, (2 + 2.0**-40) * 1e-200, 1], rtol=0).item()
+    with pytest.raises(IdealPointError):
+        pn.is_parallel([0.0, 0, 0, 1], [1.0, 0, 0, 0])
+
+
+@given(st.lists(points3(), min_size=1, max_size=5), st.lists(points3(), min_size=1, max_size=5))
+@FAST
+def test_midpoint_agrees_with_exact(xs, ys):
+    xs, ys = pairs(xs, ys)
+    values, ok = pn.midpoint(coords(xs), coords(ys), ideal="mask")
+    for i, (x, y) in enumerate(zip(xs, ys, strict=True)):
+        e = exact_or_none(affine.midpoint, x, y)
+        assert ok[i] == (e is not None)
+        if e is None:
+            assert np.isnan(values[i]).all()
+        else:
+            assert same_object(values[i], e.coords)
+
+
+def test_midpoint_by_hand():
+    # (1, 2) as (2, 4, 2) and (3, 0) as (−3, 0, −1): (v x + w y, 2 v w) = (−2 − 6, −4 + 0, 2·(−1)·2) = (−8, −4, −4),
+    # i.e. (2, 1), the midpoint of (1, 2) and (3, 0)
+    assert pn.midpoint([2.0, 4, 2], [-3.0, 0, -1]).tolist() == [-8.0, -4.0, -4.0]
+    # at 1e±200 the products 2vw under- or overflow; the scaled recomputation gives (2, 1) again
+    v = pn.midpoint(np.array([2.0, 4, 2]) * 1e-200, np.array([-3.0, 0, -1]) * 1e200)
+    assert v[:2] / v[2] == pytest.approx([2.0, 1.0])
+    with pytest.raises(IdealPointError):
+        pn.midpoint([1.0, 0, 0], [0.0, 0, 1])

@@ -90,6 +90,7 @@ array([[2., 2.],
 from __future__ import annotations
 
 from ._arrays import CHUNK, OptionError
+from .affine import is_parallel, midpoint, parallel_line
 from .classify import classify_matrix
 from .convert import from_array, to_array
 from .homogeneous import dehomogenize, homogenize, is_ideal
@@ -149,15 +150,18 @@ __all__ = [
     "incident",
     "intersect_plane",
     "is_ideal",
+    "is_parallel",
     "is_perpendicular",
     "is_zero_vector",
     "join",
     "klein_form",
     "meet",
     "meet_lines",
+    "midpoint",
     "nullspace_svd",
     "numeric_rank",
     "orthogonal_projection",
+    "parallel_line",
     "perpendicular_line",
     "plane_through",
     "plane_through_lines",
