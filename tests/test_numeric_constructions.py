@@ -231,3 +231,43 @@ def test_midpoint_by_hand():
     assert v[:2] / v[2] == pytest.approx([2.0, 1.0])
     with pytest.raises(IdealPointError):
         pn.midpoint([1.0, 0, 0], [0.0, 0, 1])
+
+
+# -- signed_angle, sin_angle -----------------------------------------------------------------------------
+@given(st.lists(st.tuples(points(), points(), points()), min_size=1, max_size=5))
+@FAST
+def test_signed_angle_agrees_with_exact(triples):
+    v, p, q = (coords([t[j] for t in triples]) for j in range(3))
+    (c, s), ok = pn.signed_angle(v, p, q, ideal="mask", degenerate="mask")
+    for i, t in enumerate(triples):
+        e = exact_or_none(metric.signed_angle, *t)
+        assert ok[i] == (e is not None)
+        if e is None:
+            assert np.isnan(c[i]) and np.isnan(s[i])
+        else:
+            assert (c[i], s[i]) == pytest.approx((float(e[0]), float(e[1])), abs=1e-12)
+
+
+@given(st.lists(lines(), min_size=1, max_size=6), st.lists(lines(), min_size=1, max_size=6))
+@FAST
+def test_sin_angle_agrees_with_exact(ls, ms):
+    ls, ms = pairs(ls, ms)
+    values, ok = pn.sin_angle(coords(ls), coords(ms), ideal="mask")
+    for i, (l, m) in enumerate(zip(ls, ms, strict=True)):
+        e = exact_or_none(metric.sin_angle, l, m)
+        assert ok[i] == (e is not None)
+        assert np.isnan(values[i]) if e is None else values[i] == pytest.approx(float(e), abs=1e-12)
+
+
+def test_signed_angle_by_hand():
+    # vertex (1, 1) as (2, 2, 2), p = (2, 1) as (−4, −2, −2), q = (0, 2): rays (1, 0) and (−1, 1), so
+    # cos = −1/√2, sin = (1·1 − 0·(−1))/√2 = 1/√2: 135° counterclockwise, whatever the signs of the scales
+    c, s = pn.signed_angle([2.0, 2, 2], [-4.0, -2, -2], [0.0, 2, 1])
+    assert (c, s) == pytest.approx((-(0.5**0.5), 0.5**0.5))
+    # the same at 1e±200 (the homogeneous products under- and overflow)
+    c, s = pn.signed_angle(np.array([2.0, 2, 2]) * 1e200, np.array([-4.0, -2, -2]) * 1e-200, [0.0, 2, 1])
+    assert (c, s) == pytest.approx((-(0.5**0.5), 0.5**0.5))
+    with pytest.raises(CoincidentPointsError):  # p = (3, 3, 3) is the vertex (1, 1)
+        pn.signed_angle([1.0, 1, 1], [3.0, 3, 3], [0.0, 2, 1])
+    with pytest.raises(IdealPointError):
+        pn.signed_angle([1.0, 1, 1], [1.0, 0, 0], [0.0, 2, 1])

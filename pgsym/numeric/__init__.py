@@ -104,6 +104,8 @@ from .metric import (
     point_line_distance,
     point_plane_distance,
     reflect,
+    signed_angle,
+    sin_angle,
 )
 from .nullspace import nullspace_svd, numeric_rank, plane_through_numeric, point_on_planes_numeric
 from .plane import cross, incident, is_zero_vector, join, meet
@@ -176,6 +178,8 @@ __all__ = [
     "point_plane_distance",
     "polar",
     "reflect",
+    "signed_angle",
+    "sin_angle",
     "svd_steps",
     "tangent_at",
     "tangent_plane",

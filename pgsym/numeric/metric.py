@@ -30,7 +30,7 @@ from typing import Any
 
 import numpy as np
 
-from ..errors import CoincidentLinesError, DimensionError, IdealPointError
+from ..errors import CoincidentLinesError, CoincidentPointsError, DimensionError, IdealPointError
 from ._arrays import DEGENERATE, NONFINITE, as_float_array, check_option, nonfinite_result, rowwise
 from .tolerances import INCIDENT_RTOL
 
@@ -44,6 +44,8 @@ __all__ = [
     "point_line_distance",
     "point_plane_distance",
     "reflect",
+    "signed_angle",
+    "sin_angle",
 ]
 
 _IDEAL = ("raise", "mask")
@@ -594,3 +596,139 @@ def angle_bisectors(
         return (plus, minus), values[1]
     plus, minus = np.split(values, 2, axis=axis)
     return plus, minus
+
+
+# -- signed angles ---------------------------------------------------------------------------------
+def _sin_kernel(ins: list[np.ndarray], o: np.ndarray, ws: list[np.ndarray]) -> None:
+    l, m = ins
+    t, na, nb = ws
+    np.multiply(l[..., 0], m[..., 1], out=o)
+    np.multiply(l[..., 1], m[..., 0], out=t)
+    np.subtract(o, t, out=o)
+    for n, v in ((na, l), (nb, m)):
+        np.multiply(v[..., 0], v[..., 0], out=n)
+        np.multiply(v[..., 1], v[..., 1], out=t)
+        np.add(n, t, out=n)
+    np.multiply(na, nb, out=t)
+    np.sqrt(t, out=t)
+    with np.errstate(divide="ignore"):  # the line at infinity: reported afterwards
+        np.divide(o, t, out=o)
+    _flag_unsafe(na, o)
+    _flag_unsafe(nb, o)
+
+
+def _sin_rows(rows: list[np.ndarray]) -> np.ndarray:
+    l, m = (_scaled(r[:, :2]) for r in rows)
+    return (l[:, 0] * m[:, 1] - l[:, 1] * m[:, 0]) / (np.hypot(l[:, 0], l[:, 1]) * np.hypot(m[:, 0], m[:, 1]))
+
+
+def sin_angle(
+    l: Any, m: Any, *, ideal: str = "raise", nonfinite: str = "raise", axis: int = -1, out: np.ndarray | None = None
+) -> Any:
+    """The signed ``sin θ = (l1 m2 − l2 m1) / (|l| |m|)`` of oriented lines of P² (:func:`pgsym.metric.sin_angle`).
+
+    θ turns the normal of ``l`` counterclockwise onto the normal of ``m``, so that ``cos_angle + i sin_angle``
+    is ``e^{iθ}``. The line at infinity raises :class:`~pgsym.errors.IdealPointError` (or is masked).
+
+    >>> sin_angle([1.0, 0, 0], [[0.0, 1, 0], [3, -4, 1]])            # 1, and (1·(−4) − 0·3) / 5
+    array([ 1. , -0.8])
+    """
+    _check(ideal, nonfinite, "sin_angle")
+    arrays = _arrays([(l, "l"), (m, "m")], axis, "sin_angle", (3,))
+    result = _run(_sin_kernel, "sin_angle", [(l, 3, "l"), (m, 3, "m")], None, out, axis, 3)
+    values = _resolve(result, arrays, "sin_angle", ideal, nonfinite, axis, _line_at_infinity, _sin_rows)
+    return values[()] if not isinstance(values, tuple) and values.ndim == 0 else values
+
+
+def _signed_kernel(ins: list[np.ndarray], o: np.ndarray, ws: list[np.ndarray]) -> None:
+    v, p, q = ins
+    u0, u1, w0, w1, t, na = ws
+    c, s = o[..., 0], o[..., 1]
+    # the rays as homogeneous differences p_xy v_w − v_xy p_w: no division, exact zeros for p = v
+    for (a, b), x in (((u0, u1), p), ((w0, w1), q)):
+        for i, d in ((0, a), (1, b)):
+            np.multiply(x[..., i], v[..., 2], out=d)
+            np.multiply(v[..., i], x[..., 2], out=t)
+            np.subtract(d, t, out=d)
+    np.multiply(u0, w0, out=c)
+    np.multiply(u1, w1, out=t)
+    np.add(c, t, out=c)
+    np.multiply(u0, w1, out=s)
+    np.multiply(u1, w0, out=t)
+    np.subtract(s, t, out=s)
+    np.multiply(u0, u0, out=na)
+    np.multiply(u1, u1, out=t)
+    np.add(na, t, out=na)
+    np.multiply(w0, w0, out=u0)  # u0 is free now: |w|²
+    np.multiply(w1, w1, out=t)
+    np.add(u0, t, out=u0)
+    np.multiply(na, u0, out=t)
+    np.sqrt(t, out=t)
+    with np.errstate(divide="ignore"):  # p or q at the vertex: looked at again
+        np.reciprocal(t, out=t)
+    # the rays were scaled by p_w v_w and q_w v_w: their signs, through p_w q_w, fix the orientation
+    np.multiply(p[..., 2], q[..., 2], out=w0)
+    np.copysign(t, w0, out=t)
+    np.multiply(c, t, out=c)
+    np.multiply(s, t, out=s)
+    _flag_unsafe(na, o)
+    _flag_unsafe(u0, o)
+    for x in (v, p, q):  # an ideal point gives a finite but meaningless ray: looked at again
+        if not x[..., 2].all():
+            o[x[..., 2] == 0] = np.nan
+
+
+def _rays(rows: list[np.ndarray]) -> tuple[np.ndarray, np.ndarray]:
+    v, p, q = (_scaled(r) for r in rows)  # exact: powers of two keep the zeros
+    u = p[:, :2] * v[:, 2:] - v[:, :2] * p[:, 2:]
+    w = q[:, :2] * v[:, 2:] - v[:, :2] * q[:, 2:]
+    return u, w
+
+
+def _signed_rows(rows: list[np.ndarray]) -> np.ndarray:
+    u, w = (_scaled(r) for r in _rays(rows))
+    sign = np.sign(rows[1][:, 2]) * np.sign(rows[2][:, 2])
+    norm = np.hypot(u[:, 0], u[:, 1]) * np.hypot(w[:, 0], w[:, 1])
+    c = sign * (u[:, 0] * w[:, 0] + u[:, 1] * w[:, 1]) / norm
+    s = sign * (u[:, 0] * w[:, 1] - u[:, 1] * w[:, 0]) / norm
+    return np.stack([c, s], axis=-1)
+
+
+def _at_vertex(rows: list[np.ndarray]) -> np.ndarray:
+    with np.errstate(invalid="ignore", over="ignore"):  # rows with NaN are told apart by the caller
+        u, w = _rays(rows)
+        return ~u.any(axis=-1) | ~w.any(axis=-1)
+
+
+def signed_angle(
+    vertex: Any, p: Any, q: Any, *, ideal: str = "raise", nonfinite: str = "raise", degenerate: str = "raise",
+    axis: int = -1,
+) -> Any:
+    """``(cos θ, sin θ)`` of the angles at ``vertex`` turning the ray to ``p`` counterclockwise onto the ray to ``q``.
+
+    The numeric :func:`pgsym.metric.signed_angle` on points of P², as two arrays. The rays are the
+    homogeneous differences ``p_xy v_w − v_xy p_w`` (no division, so ``p = vertex`` is decided exactly),
+    their orientation restored by the sign of ``p_w q_w``. Ideal points raise
+    :class:`~pgsym.errors.IdealPointError` (``ideal="mask"``); ``p`` or ``q`` at the vertex fixes no ray and
+    raises :class:`~pgsym.errors.CoincidentPointsError` (``degenerate="mask"``). With a mask the result is
+    ``((cos, sin), ok)``.
+
+    >>> signed_angle([0.0, 0, 1], [1.0, 0, 1], [[0.0, 2, 1], [0, -2, 1]])   # a quarter turn either way
+    (array([0., 0.]), array([ 1., -1.]))
+    """
+    _check(ideal, nonfinite, "signed_angle")
+    check_option(degenerate, DEGENERATE, "degenerate", "signed_angle")
+    arrays = _arrays([(vertex, "vertex"), (p, "p"), (q, "q")], axis, "signed_angle", (3,))
+    ins = [(vertex, 3, "vertex"), (p, 3, "p"), (q, 3, "q")]
+    result = _run(_signed_kernel, "signed_angle", ins, 2, None, axis, 6)
+
+    def ideal_rows(rows: list[np.ndarray]) -> np.ndarray:
+        return np.logical_or.reduce([r[:, 2] == 0 for r in rows])
+
+    checks = (degenerate, _at_vertex, CoincidentPointsError, "put p or q at the vertex, which fixes no ray")
+    values = _resolve(result, arrays, "signed_angle", ideal, nonfinite, axis, ideal_rows, _signed_rows, None, checks)
+    if isinstance(values, tuple):
+        c, s = np.moveaxis(values[0], axis, 0)
+        return (c, s), values[1]
+    c, s = np.moveaxis(values, axis, 0)
+    return (c[()], s[()]) if c.ndim == 0 else (c, s)

@@ -208,6 +208,8 @@ NUMERIC = {
     "perpendicular_line": (pn.perpendicular_line, [L3, P3], {}),
     "angle_bisectors": (pn.angle_bisectors, [L3, L3[::-1].copy()], {}),
     "parallel_line": (pn.parallel_line, [L3, P3], {}),
+    "signed_angle": (pn.signed_angle, [np.array([0.0, 0, 1]), P3, P3[::-1].copy()], {}),
+    "sin_angle": (pn.sin_angle, [L3, L3[::-1].copy()], {}),
     "is_parallel": (pn.is_parallel, [P4, P4[::-1].copy()], {}),
     "midpoint": (pn.midpoint, [P3, P3[::-1].copy()], {}),
     "form_value": (pn.form_value, [np.diag([1.0, 1, -1]), P3], {}),
@@ -315,8 +317,8 @@ def test_mask_mode_masks_exactly_the_spoiled_rows(name, f, args, kw, i, bad):
     batch[0, 0] = bad
     values, finite = f(*rows[:i], batch, *rows[i + 1 :], nonfinite="mask", **kw)
     expected = f(*rows, **kw)
-    if isinstance(values, tuple):  # a pair of results (angle_bisectors): one array of both
-        values, expected = np.stack(values, axis=-2), np.stack(expected, axis=-2)
+    if isinstance(values, tuple):  # a pair of results (angle_bisectors, signed_angle): one array of both
+        values, expected = np.stack(values, axis=-1), np.stack(expected, axis=-1)
     assert finite.tolist() == [False, True]
     if values.dtype.kind == "b":  # a predicate (is_perpendicular) says False on a masked row
         assert not values[0].any()
