@@ -92,6 +92,7 @@ from __future__ import annotations
 from ._arrays import CHUNK, OptionError
 from .affine import is_parallel, midpoint, parallel_line
 from .classify import classify_matrix
+from .conic_pencil import intersect_conics
 from .convert import from_array, to_array
 from .homogeneous import dehomogenize, homogenize, is_ideal
 from .metric import (
@@ -150,6 +151,7 @@ __all__ = [
     "harmonic_conjugate",
     "homogenize",
     "incident",
+    "intersect_conics",
     "intersect_plane",
     "is_ideal",
     "is_parallel",

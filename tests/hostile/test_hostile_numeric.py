@@ -212,6 +212,13 @@ NUMERIC = {
     "sin_angle": (pn.sin_angle, [L3, L3[::-1].copy()], {}),
     "is_parallel": (pn.is_parallel, [P4, P4[::-1].copy()], {}),
     "midpoint": (pn.midpoint, [P3, P3[::-1].copy()], {}),
+    # two pairs of circles (a batch of 3×3 matrices): x² + y² = 25 and = 4 against two circles about (4, 0)
+    "intersect_conics": (
+        pn.intersect_conics,
+        [np.stack([np.diag([1.0, 1, -25]), np.diag([1.0, 1, -4])]),
+         np.stack([[[1.0, 0, -4], [0, 1, 0], [-4, 0, 7]], [[1.0, 0, -4], [0, 1, 0], [-4, 0, 12]]])],
+        {},
+    ),
     "form_value": (pn.form_value, [np.diag([1.0, 1, -1]), P3], {}),
     "polar": (pn.polar, [np.diag([1.0, 1, -1]), P3], {}),
     "tangent_at": (pn.tangent_at, [np.diag([1.0, 1, -25]), np.array([[3.0, 4, 1], [5, 0, 1]])], {}),
