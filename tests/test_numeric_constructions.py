@@ -271,3 +271,23 @@ def test_signed_angle_by_hand():
         pn.signed_angle([1.0, 1, 1], [3.0, 3, 3], [0.0, 2, 1])
     with pytest.raises(IdealPointError):
         pn.signed_angle([1.0, 1, 1], [1.0, 0, 0], [0.0, 2, 1])
+
+
+def test_component_major_layout_and_out_agree_with_rows():
+    rng = np.random.default_rng(1)
+    l, m, x, y, z = (rng.integers(-5, 6, (7, 3)).astype(float) for _ in range(5))
+    for a in (x, y, z):
+        a[:, 2] = rng.integers(1, 4, 7)  # finite points
+    l[:, 0] += 10  # no line at infinity, no two equal lines
+    m[:, 1] += 10
+    for f, args in ((pn.perpendicular_line, (l, x)), (pn.parallel_line, (l, x)), (pn.midpoint, (x, y)),
+                    (pn.sin_angle, (l, m)), (pn.is_parallel, (l, m))):
+        rows = f(*args)
+        assert np.array_equal(f(*(a.T for a in args), axis=0), rows.T)
+    for f, args in ((pn.angle_bisectors, (l, m)), (pn.signed_angle, (x, y, z))):
+        rows = f(*args)
+        cols = f(*(a.T for a in args), axis=0)
+        assert all(np.array_equal(c, r.T) for c, r in zip(cols, rows, strict=True))
+    out = np.empty((7, 3))
+    assert pn.perpendicular_line(l, x, out=out) is out and np.array_equal(out, pn.perpendicular_line(l, x))
+    assert pn.midpoint(x, y, out=out) is out and np.array_equal(out, pn.midpoint(x, y))
