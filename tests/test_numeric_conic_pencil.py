@@ -103,3 +103,12 @@ def test_degenerate_and_non_finite_pairs_raise_or_mask():
     bad[0, 0] = np.nan
     with pytest.raises(NonFiniteError):
         pn.intersect_conics(bad, C)
+
+
+@pytest.mark.parametrize(("s1", "s2"), [(1e200, 1e-200), (1e-200, 1e-200), (-1e150, 3.0)])
+def test_any_scale_of_either_conic_gives_the_same_points(s1, s2):
+    # the circles of test_by_hand, each at another scale: the same four points
+    C, E = np.diag([1.0, 1, -25]), np.array([[1.0, 0, -4], [0, 1, 0], [-4, 0, 7]])
+    got = pn.intersect_conics(s1 * C, s2 * E)
+    expected = [(4, 3, 1), (4, -3, 1), (1, 1j, 0), (1, -1j, 0)]
+    assert same_points(got, [Point(*(sympy.sympify(c) for c in e)) for e in expected], tol=1e-12)

@@ -291,3 +291,10 @@ def test_component_major_layout_and_out_agree_with_rows():
     out = np.empty((7, 3))
     assert pn.perpendicular_line(l, x, out=out) is out and np.array_equal(out, pn.perpendicular_line(l, x))
     assert pn.midpoint(x, y, out=out) is out and np.array_equal(out, pn.midpoint(x, y))
+
+
+@pytest.mark.parametrize("scales", [(1e200, 1e-200), (1e-200, 1e-200), (1e200, 1e200)])
+def test_sin_angle_at_extreme_scales(scales):
+    # x = 0 against 3x − 4y + 1 = 0: (1·(−4) − 0·3) / (1 · 5) = −0.8 at any scale of either line
+    l, m = np.array([1.0, 0, 0]) * scales[0], np.array([3.0, -4, 1]) * scales[1]
+    assert pn.sin_angle(l, m) == pytest.approx(-0.8)
