@@ -298,3 +298,14 @@ def test_sin_angle_at_extreme_scales(scales):
     # x = 0 against 3x − 4y + 1 = 0: (1·(−4) − 0·3) / (1 · 5) = −0.8 at any scale of either line
     l, m = np.array([1.0, 0, 0]) * scales[0], np.array([3.0, -4, 1]) * scales[1]
     assert pn.sin_angle(l, m) == pytest.approx(-0.8)
+
+
+@given(st.lists(planes(), min_size=1, max_size=5), st.lists(planes(), min_size=1, max_size=5))
+@FAST
+def test_cos_squared_angle_of_planes_agrees_with_exact(ps, qs):
+    ps, qs = pairs(ps, qs)
+    values, ok = pn.cos_squared_angle(coords(ps), coords(qs), ideal="mask")
+    for i, (p, q) in enumerate(zip(ps, qs, strict=True)):
+        e = exact_or_none(metric.cos_squared_angle, p, q)  # rational: (n·m)² / (|n|² |m|²)
+        assert ok[i] == (e is not None)
+        assert np.isnan(values[i]) if e is None else values[i] == pytest.approx(float(e), rel=1e-13, abs=1e-15)

@@ -98,6 +98,7 @@ from .homogeneous import dehomogenize, homogenize, is_ideal
 from .metric import (
     angle_bisectors,
     cos_angle,
+    cos_squared_angle,
     is_perpendicular,
     orthogonal_projection,
     perpendicular_line,
@@ -142,6 +143,7 @@ __all__ = [
     "bracket",
     "classify_matrix",
     "cos_angle",
+    "cos_squared_angle",
     "cross",
     "cross_ratio",
     "cross_ratio_homogeneous",

@@ -37,6 +37,7 @@ from .tolerances import INCIDENT_RTOL
 __all__ = [
     "angle_bisectors",
     "cos_angle",
+    "cos_squared_angle",
     "is_perpendicular",
     "orthogonal_projection",
     "perpendicular_line",
@@ -244,6 +245,20 @@ def cos_angle(
     if not isinstance(values, tuple) and values.ndim == 0:
         return values[()]
     return values
+
+
+def cos_squared_angle(a: Any, b: Any, *, ideal: str = "raise", nonfinite: str = "raise", axis: int = -1) -> Any:
+    """``cos² θ``, independent of the orientation of either object: the numeric :func:`pgsym.metric.cos_squared_angle`.
+
+    Lines of P² (k = 3), planes (k = 4) or lines of space (k = 6), with the policy of :func:`cos_angle`.
+
+    >>> cos_squared_angle([1.0, 0, 0], [[1.0, 1, 5], [-1, 0, 2]])   # 45°, and the same line reversed
+    array([0.5, 1. ])
+    """
+    result = cos_angle(a, b, ideal=ideal, nonfinite=nonfinite, axis=axis)
+    if isinstance(result, tuple):
+        return result[0] * result[0], result[1]
+    return result * result
 
 
 def is_perpendicular(

@@ -210,6 +210,7 @@ NUMERIC = {
     "parallel_line": (pn.parallel_line, [L3, P3], {}),
     "signed_angle": (pn.signed_angle, [np.array([0.0, 0, 1]), P3, P3[::-1].copy()], {}),
     "sin_angle": (pn.sin_angle, [L3, L3[::-1].copy()], {}),
+    "cos_squared_angle": (pn.cos_squared_angle, [P4, P4[::-1].copy()], {}),
     "is_parallel": (pn.is_parallel, [P4, P4[::-1].copy()], {}),
     "midpoint": (pn.midpoint, [P3, P3[::-1].copy()], {}),
     # two pairs of circles (a batch of 3×3 matrices): x² + y² = 25 and = 4 against two circles about (4, 0)
