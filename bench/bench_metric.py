@@ -12,7 +12,11 @@ median of interleaved repeats):
 * ``orthogonal_projection_1e6``: the feet ``s x − (lᵀx)(l1, l2, 0)`` against the same in NumPy and
   geometer's ``LineCollection.project(PointCollection)`` (compared up to scale);
 * ``point_distance_1e6``: distances of two (N, 3) arrays of finite points against
-  ``np.linalg.norm(x[:, :2] / x[:, 2:] − y[:, :2] / y[:, 2:], axis=1)`` and geometer's ``dist``.
+  ``np.linalg.norm(x[:, :2] / x[:, 2:] − y[:, :2] / y[:, 2:], axis=1)`` and geometer's ``dist``;
+* the constructions, against the obvious NumPy code only: ``perpendicular_line_1e6``
+  (``np.cross(x, l * (1, 1, 0))``), ``angle_bisectors_1e6`` (``l/|l| ± m/|m|`` with ``np.hypot``),
+  ``parallel_line_1e6`` (``(w l1, w l2, −(l1 x + l2 y))`` in columns) and ``midpoint_1e6``
+  (``(x/w + y/v) / 2`` dehomogenized; ours stays homogeneous, without a division).
 
 Every line is ``{"bench", "ours_s", "baseline", "baseline_s", "ratio"}`` with ``ratio`` = baseline_s /
 ours_s (> 1: we are faster). Our kernels also check every result for NaN, infinity and ideal elements,
@@ -39,6 +43,7 @@ try:
 except ImportError:  # pragma: no cover - a set-up problem, reported plainly
     sys.exit("bench_metric.py needs geometer, a benchmark-only dependency: .venv/bin/pip install geometer")
 
+from pgsym.numeric import affine as na
 from pgsym.numeric import metric as nm
 
 N = 10**6
@@ -75,6 +80,56 @@ def np_point_distance(x: np.ndarray, y: np.ndarray) -> np.ndarray:
     return np.linalg.norm(x[:, :2] / x[:, 2:] - y[:, :2] / y[:, 2:], axis=1)
 
 
+def np_perpendicular_line(l: np.ndarray, x: np.ndarray) -> np.ndarray:
+    return np.cross(x, l * np.array([1.0, 1.0, 0.0]))
+
+
+def np_angle_bisectors(l: np.ndarray, m: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    u = l / np.hypot(l[:, 0], l[:, 1])[:, None]
+    v = m / np.hypot(m[:, 0], m[:, 1])[:, None]
+    return u + v, u - v
+
+
+def np_parallel_line(l: np.ndarray, x: np.ndarray) -> np.ndarray:
+    out = np.empty_like(l)
+    out[:, :2] = l[:, :2] * x[:, 2:]
+    out[:, 2] = -(l[:, 0] * x[:, 0] + l[:, 1] * x[:, 1])
+    return out
+
+
+def np_midpoint(x: np.ndarray, y: np.ndarray) -> np.ndarray:
+    return (x[:, :2] / x[:, 2:] + y[:, :2] / y[:, 2:]) / 2
+
+
+def constructions(a: np.ndarray, b: np.ndarray, x: np.ndarray, y: np.ndarray) -> None:
+    """The construction kernels against the obvious NumPy code (no geometer twin to compare with)."""
+    assert np.allclose(nm.perpendicular_line(a, x), np_perpendicular_line(a, x))
+    plus, minus = nm.angle_bisectors(a, b)
+    np_plus, np_minus = np_angle_bisectors(a, b)
+    assert np.allclose(plus, np_plus) and np.allclose(minus, np_minus)
+    assert np.allclose(na.parallel_line(a, x), np_parallel_line(a, x))
+    mid = na.midpoint(x, y)
+    assert np.allclose(mid[:, :2] / mid[:, 2:], np_midpoint(x, y))
+    cases = {
+        "perpendicular_line_1e6": (lambda: nm.perpendicular_line(a, x), lambda: np_perpendicular_line(a, x)),
+        "angle_bisectors_1e6": (lambda: nm.angle_bisectors(a, b), lambda: np_angle_bisectors(a, b)),
+        "parallel_line_1e6": (lambda: na.parallel_line(a, x), lambda: np_parallel_line(a, x)),
+        "midpoint_1e6": (lambda: na.midpoint(x, y), lambda: np_midpoint(x, y)),
+    }
+    for bench, (ours, obvious) in cases.items():
+        t = medians({"ours": ours, "numpy": obvious}, REPEATS)
+        emit(bench, t["ours"], "obvious numpy", t["numpy"])
+
+
+def data() -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    rng = np.random.default_rng(0)
+    a, b = rng.standard_normal((N, 3)), rng.standard_normal((N, 3))
+    x, y = rng.standard_normal((N, 3)), rng.standard_normal((N, 3))
+    x[:, 2] = rng.uniform(0.5, 2.0, N)  # finite points, so that every baseline is defined everywhere
+    y[:, 2] = rng.uniform(0.5, 2.0, N)
+    return a, b, x, y
+
+
 def run(
     bench: str,
     ours: Callable[[], np.ndarray],
@@ -89,11 +144,7 @@ def run(
 
 
 def main() -> None:
-    rng = np.random.default_rng(0)
-    a, b = rng.standard_normal((N, 3)), rng.standard_normal((N, 3))
-    x, y = rng.standard_normal((N, 3)), rng.standard_normal((N, 3))
-    x[:, 2] = rng.uniform(0.5, 2.0, N)  # finite points, so that every baseline is defined everywhere
-    y[:, 2] = rng.uniform(0.5, 2.0, N)
+    a, b, x, y = data()
     ga, gb = geometer.LineCollection(a), geometer.LineCollection(b)
     gx, gy = geometer.PointCollection(x), geometer.PointCollection(y)
 
@@ -139,6 +190,7 @@ def main() -> None:
         lambda: geometer.dist(gx, gy),
         "dist(PointCollection, PointCollection)",
     )
+    constructions(a, b, x, y)
 
 
 if __name__ == "__main__":

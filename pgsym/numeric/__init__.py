@@ -90,17 +90,24 @@ array([[2., 2.],
 from __future__ import annotations
 
 from ._arrays import CHUNK, OptionError
+from .affine import is_parallel, midpoint, parallel_line
 from .classify import classify_matrix
+from .conic_pencil import intersect_conics
 from .convert import from_array, to_array
 from .homogeneous import dehomogenize, homogenize, is_ideal
 from .metric import (
+    angle_bisectors,
     cos_angle,
+    cos_squared_angle,
     is_perpendicular,
     orthogonal_projection,
+    perpendicular_line,
     point_distance,
     point_line_distance,
     point_plane_distance,
     reflect,
+    signed_angle,
+    sin_angle,
 )
 from .nullspace import nullspace_svd, numeric_rank, plane_through_numeric, point_on_planes_numeric
 from .plane import cross, incident, is_zero_vector, join, meet
@@ -132,9 +139,11 @@ __all__ = [
     "OptionError",
     "SVDSteps",
     "adjugate",
+    "angle_bisectors",
     "bracket",
     "classify_matrix",
     "cos_angle",
+    "cos_squared_angle",
     "cross",
     "cross_ratio",
     "cross_ratio_homogeneous",
@@ -144,17 +153,22 @@ __all__ = [
     "harmonic_conjugate",
     "homogenize",
     "incident",
+    "intersect_conics",
     "intersect_plane",
     "is_ideal",
+    "is_parallel",
     "is_perpendicular",
     "is_zero_vector",
     "join",
     "klein_form",
     "meet",
     "meet_lines",
+    "midpoint",
     "nullspace_svd",
     "numeric_rank",
     "orthogonal_projection",
+    "parallel_line",
+    "perpendicular_line",
     "plane_through",
     "plane_through_lines",
     "plane_through_numeric",
@@ -168,6 +182,8 @@ __all__ = [
     "point_plane_distance",
     "polar",
     "reflect",
+    "signed_angle",
+    "sin_angle",
     "svd_steps",
     "tangent_at",
     "tangent_plane",

@@ -30,18 +30,23 @@ from typing import Any
 
 import numpy as np
 
-from ..errors import DimensionError, IdealPointError
-from ._arrays import NONFINITE, as_float_array, check_option, nonfinite_result, rowwise
+from ..errors import CoincidentLinesError, CoincidentPointsError, DimensionError, IdealPointError
+from ._arrays import DEGENERATE, NONFINITE, as_float_array, check_option, nonfinite_result, rowwise
 from .tolerances import INCIDENT_RTOL
 
 __all__ = [
+    "angle_bisectors",
     "cos_angle",
+    "cos_squared_angle",
     "is_perpendicular",
     "orthogonal_projection",
+    "perpendicular_line",
     "point_distance",
     "point_line_distance",
     "point_plane_distance",
     "reflect",
+    "signed_angle",
+    "sin_angle",
 ]
 
 _IDEAL = ("raise", "mask")
@@ -98,9 +103,11 @@ def _resolve(
     is_ideal: Callable[[list[np.ndarray]], np.ndarray],
     robust: Callable[[list[np.ndarray]], np.ndarray] | None,
     extra_bad: np.ndarray | None = None,
+    degenerate: tuple[str, Callable[[list[np.ndarray]], np.ndarray], type[Exception], str] | None = None,
 ) -> Any:
     """Apply the policy to a kernel's ``(values, finite)``: sort the rows that are not finite (or ``extra_bad``)
-    into bad inputs, ideal elements and overflows; recompute overflows with ``robust``; raise or mask."""
+    into bad inputs, ideal elements, degenerate input and overflows; recompute overflows with ``robust``; raise
+    or mask. ``degenerate`` is ``(option, test, error, what)`` for a construction that can be undetermined."""
     values, ok = result
     shape = ok.shape
     vals = values if values.ndim == ok.ndim else np.moveaxis(values, axis, -1)
@@ -108,7 +115,7 @@ def _resolve(
         vals, ok = vals[None], ok.reshape(1)
         extra_bad = None if extra_bad is None else np.reshape(extra_bad, 1)
     bad = ~ok if extra_bad is None else ~ok | extra_bad
-    masked = ideal == "mask" or nonfinite == "mask"
+    masked = ideal == "mask" or nonfinite == "mask" or (degenerate is not None and degenerate[0] == "mask")
     if not bad.any():
         return (values, ok.reshape(shape)) if masked else values
     index = tuple(np.nonzero(bad))
@@ -118,7 +125,10 @@ def _resolve(
     for r in rows:
         bad_input |= ~np.isfinite(r).all(axis=-1)
     ideal_rows = ~bad_input & is_ideal(rows)
-    rest = ~bad_input & ~ideal_rows
+    degenerate_rows = np.zeros_like(ideal_rows)
+    if degenerate is not None:
+        degenerate_rows = ~bad_input & ~ideal_rows & degenerate[1](rows)
+    rest = ~bad_input & ~ideal_rows & ~degenerate_rows
     if robust is not None and rest.any():
         with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
             again = robust([r[rest] for r in rows])
@@ -128,7 +138,7 @@ def _resolve(
         rest_idx = np.nonzero(rest)[0]
         rest[rest_idx[good]] = False
     ok = np.ones(batch, bool)
-    ok[index] = ~(bad_input | ideal_rows | rest)
+    ok[index] = ~(bad_input | ideal_rows | degenerate_rows | rest)
     not_finite = np.ones(batch, bool)
     not_finite[index] = ~(bad_input | rest)
     if nonfinite == "raise" and not not_finite.all():
@@ -141,6 +151,12 @@ def _resolve(
             f"{function}: {n} of the {ok.size} rows hold an ideal element (an ideal point, or a line or plane at "
             f"infinity), the first at index {first}: {example}; "
             "they have no finite distance, angle or foot. Pass ideal='mask' to get the other rows with a mask"
+        )
+    if degenerate is not None and degenerate[0] == "raise" and degenerate_rows.any():
+        first = tuple(int(i[np.argmax(degenerate_rows)]) for i in index)
+        raise degenerate[2](
+            f"{function}: {int(degenerate_rows.sum())} of the {ok.size} inputs {degenerate[3]}, the first at index "
+            f"{first}; pass degenerate='mask' to get NaN rows there and a mask of the good ones"
         )
     if masked:
         vals[~ok] = False if vals.dtype == bool else np.nan
@@ -229,6 +245,20 @@ def cos_angle(
     if not isinstance(values, tuple) and values.ndim == 0:
         return values[()]
     return values
+
+
+def cos_squared_angle(a: Any, b: Any, *, ideal: str = "raise", nonfinite: str = "raise", axis: int = -1) -> Any:
+    """``cos² θ``, independent of the orientation of either object: the numeric :func:`pgsym.metric.cos_squared_angle`.
+
+    Lines of P² (k = 3), planes (k = 4) or lines of space (k = 6), with the policy of :func:`cos_angle`.
+
+    >>> cos_squared_angle([1.0, 0, 0], [[1.0, 1, 5], [-1, 0, 2]])   # 45°, and the same line reversed
+    array([0.5, 1. ])
+    """
+    result = cos_angle(a, b, ideal=ideal, nonfinite=nonfinite, axis=axis)
+    if isinstance(result, tuple):
+        return result[0] * result[0], result[1]
+    return result * result
 
 
 def is_perpendicular(
@@ -444,3 +474,276 @@ def reflect(
         return np.all(rows[1][:, :-1] == 0, axis=-1)
 
     return _resolve(result, arrays, "reflect", ideal, nonfinite, axis, mirror_ideal, _foot_rows(2.0), extra)
+
+
+# -- perpendiculars and bisectors of lines of P² ------------------------------------------------------
+def _perpendicular_kernel(ins: list[np.ndarray], o: np.ndarray, ws: list[np.ndarray]) -> None:
+    l, x = ins
+    t, s = ws
+    o0, o1, o2 = o[..., 0], o[..., 1], o[..., 2]
+    np.multiply(x[..., 2], l[..., 1], out=o0)  # x × (l1, l2, 0) = (−x3 l2, x3 l1, x1 l2 − x2 l1)
+    np.negative(o0, out=o0)
+    np.multiply(x[..., 2], l[..., 0], out=o1)
+    np.multiply(x[..., 0], l[..., 1], out=o2)
+    np.multiply(x[..., 1], l[..., 0], out=t)
+    np.subtract(o2, t, out=o2)
+    # (o1, o2) = x3 (−l2, l1) is 0 exactly for an ideal point or the line at infinity, and tiny or huge when
+    # the products under- or overflow: all are looked at again
+    np.multiply(o0, o0, out=s)
+    np.multiply(o1, o1, out=t)
+    np.add(s, t, out=s)
+    _flag_unsafe(s, o)
+
+
+def _perpendicular_rows(rows: list[np.ndarray]) -> np.ndarray:
+    l, x = (_scaled(r) for r in rows)
+    normal = l.copy()
+    normal[:, 2] = 0
+    return _scaled(np.cross(x, normal))
+
+
+def _point_or_line_ideal(rows: list[np.ndarray]) -> np.ndarray:
+    l, x = rows
+    return (x[:, 2] == 0) | np.all(l[:, :2] == 0, axis=-1)
+
+
+def perpendicular_line(
+    line: Any, point: Any, *, ideal: str = "raise", nonfinite: str = "raise", axis: int = -1,
+    out: np.ndarray | None = None,
+) -> Any:
+    """The lines through points of P² perpendicular to lines of P²: ``x × (l1, l2, 0)``, homogeneous.
+
+    The join of the point with the ideal point of the normal, the formula of :func:`pgsym.metric.perpendicular_line`
+    (the same numbers on integer data). An ideal point or the line at infinity raises
+    :class:`~pgsym.errors.IdealPointError` (or is masked with ``ideal="mask"``).
+
+    >>> perpendicular_line([1.0, -1, 0], [[2.0, 0, 1], [0, 0, 1]])   # to y = x: x + y = 2 and x + y = 0
+    array([[ 1.,  1., -2.],
+           [ 1.,  1., -0.]])
+    """
+    _check(ideal, nonfinite, "perpendicular_line")
+    arrays = _arrays([(line, "line"), (point, "point")], axis, "perpendicular_line", (3,))
+    ins = [(line, 3, "line"), (point, 3, "point")]
+    result = _run(_perpendicular_kernel, "perpendicular_line", ins, 3, out, axis, 2)
+    return _resolve(
+        result, arrays, "perpendicular_line", ideal, nonfinite, axis, _point_or_line_ideal, _perpendicular_rows
+    )
+
+
+def _bisector_kernel(ins: list[np.ndarray], o: np.ndarray, ws: list[np.ndarray]) -> None:
+    l, m = ins
+    t, u, na, nb, d = ws
+    np.multiply(l[..., 0], l[..., 0], out=na)
+    np.multiply(l[..., 1], l[..., 1], out=t)
+    np.add(na, t, out=na)
+    np.multiply(m[..., 0], m[..., 0], out=nb)
+    np.multiply(m[..., 1], m[..., 1], out=t)
+    np.add(nb, t, out=nb)
+    np.multiply(l[..., 0], m[..., 1], out=d)  # 0 for parallel (or equal) lines: looked at again
+    np.multiply(l[..., 1], m[..., 0], out=t)
+    np.subtract(d, t, out=d)
+    with np.errstate(divide="ignore"):  # the line at infinity: reported afterwards
+        np.sqrt(na, out=t)
+        np.reciprocal(t, out=t)
+        np.sqrt(nb, out=u)
+        np.reciprocal(u, out=u)
+    for i in range(3):  # l/|l| ± m/|m|
+        np.multiply(l[..., i], t, out=o[..., i])
+        np.multiply(m[..., i], u, out=o[..., 3 + i])
+        np.subtract(o[..., i], o[..., 3 + i], out=o[..., 3 + i])
+        np.add(o[..., i], o[..., i], out=o[..., i])
+        np.subtract(o[..., i], o[..., 3 + i], out=o[..., i])
+    _flag_unsafe(na, o)
+    _flag_unsafe(nb, o)
+    if not d.all():
+        o[d == 0] = np.nan
+
+
+def _bisector_rows(rows: list[np.ndarray]) -> np.ndarray:
+    l, m = (_scaled(r) for r in rows)
+    u = l / np.hypot(l[:, 0], l[:, 1])[:, None]
+    v = m / np.hypot(m[:, 0], m[:, 1])[:, None]
+    out = np.concatenate([u + v, u - v], axis=-1)
+    # parallel lines: the normals cancel in one of u ± v; rounding leaves a tiny normal there, which is 0
+    parallel = l[:, 0] * m[:, 1] - l[:, 1] * m[:, 0] == 0
+    if parallel.any():
+        small_plus = np.hypot(out[:, 0], out[:, 1]) < np.hypot(out[:, 3], out[:, 4])
+        out[parallel & small_plus, :2] = 0
+        out[parallel & ~small_plus, 3:5] = 0
+    return out
+
+
+def _line_at_infinity(rows: list[np.ndarray]) -> np.ndarray:
+    return np.logical_or.reduce([np.all(r[:, :2] == 0, axis=-1) for r in rows])
+
+
+def _coincident(rows: list[np.ndarray]) -> np.ndarray:
+    with np.errstate(invalid="ignore", over="ignore"):  # rows with NaN are told apart by the caller
+        l, m = (_scaled(r) for r in rows)  # exact: scaling by powers of two keeps the products' zeros
+        return np.all(np.cross(l, m) == 0, axis=-1)
+
+
+def angle_bisectors(
+    l: Any, m: Any, *, ideal: str = "raise", nonfinite: str = "raise", degenerate: str = "raise", axis: int = -1
+) -> Any:
+    """The two bisectors ``l/|l| ± m/|m|`` of lines of P² (``|l| = √(l1² + l2²)``), as a pair of arrays.
+
+    The numeric :func:`pgsym.metric.angle_bisectors`: the first halves the angle between the oriented
+    normals given, the second is perpendicular to it; for parallel lines they are the midline and the line at
+    infinity ``(0, 0, 1)`` (up to scale). The line at infinity raises :class:`~pgsym.errors.IdealPointError`
+    (``ideal="mask"``); equal lines make no angle and raise :class:`~pgsym.errors.CoincidentLinesError`
+    (``degenerate="mask"``). With a mask the result is ``((plus, minus), ok)``.
+
+    >>> plus, minus = angle_bisectors([1.0, 0, 0], [3.0, 4, 0])     # (1, 0) ± (3, 4)/5
+    >>> plus, minus
+    (array([1.6, 0.8, 0. ]), array([ 0.4, -0.8,  0. ]))
+    """
+    _check(ideal, nonfinite, "angle_bisectors")
+    check_option(degenerate, DEGENERATE, "degenerate", "angle_bisectors")
+    arrays = _arrays([(l, "l"), (m, "m")], axis, "angle_bisectors", (3,))
+    result = _run(_bisector_kernel, "angle_bisectors", [(l, 3, "l"), (m, 3, "m")], 6, None, axis, 5)
+    checks = (degenerate, _coincident, CoincidentLinesError, "are the same line, which makes no angle")
+    values = _resolve(
+        result, arrays, "angle_bisectors", ideal, nonfinite, axis, _line_at_infinity, _bisector_rows, None, checks
+    )
+    if isinstance(values, tuple):
+        plus, minus = np.split(values[0], 2, axis=axis)
+        return (plus, minus), values[1]
+    plus, minus = np.split(values, 2, axis=axis)
+    return plus, minus
+
+
+# -- signed angles ---------------------------------------------------------------------------------
+def _sin_kernel(ins: list[np.ndarray], o: np.ndarray, ws: list[np.ndarray]) -> None:
+    l, m = ins
+    t, na, nb = ws
+    np.multiply(l[..., 0], m[..., 1], out=o)
+    np.multiply(l[..., 1], m[..., 0], out=t)
+    np.subtract(o, t, out=o)
+    for n, v in ((na, l), (nb, m)):
+        np.multiply(v[..., 0], v[..., 0], out=n)
+        np.multiply(v[..., 1], v[..., 1], out=t)
+        np.add(n, t, out=n)
+    np.multiply(na, nb, out=t)
+    np.sqrt(t, out=t)
+    with np.errstate(divide="ignore"):  # the line at infinity: reported afterwards
+        np.divide(o, t, out=o)
+    _flag_unsafe(na, o)
+    _flag_unsafe(nb, o)
+
+
+def _sin_rows(rows: list[np.ndarray]) -> np.ndarray:
+    l, m = (_scaled(r[:, :2]) for r in rows)
+    return (l[:, 0] * m[:, 1] - l[:, 1] * m[:, 0]) / (np.hypot(l[:, 0], l[:, 1]) * np.hypot(m[:, 0], m[:, 1]))
+
+
+def sin_angle(
+    l: Any, m: Any, *, ideal: str = "raise", nonfinite: str = "raise", axis: int = -1, out: np.ndarray | None = None
+) -> Any:
+    """The signed ``sin θ = (l1 m2 − l2 m1) / (|l| |m|)`` of oriented lines of P² (:func:`pgsym.metric.sin_angle`).
+
+    θ turns the normal of ``l`` counterclockwise onto the normal of ``m``, so that ``cos_angle + i sin_angle``
+    is ``e^{iθ}``. The line at infinity raises :class:`~pgsym.errors.IdealPointError` (or is masked).
+
+    >>> sin_angle([1.0, 0, 0], [[0.0, 1, 0], [3, -4, 1]])            # 1, and (1·(−4) − 0·3) / 5
+    array([ 1. , -0.8])
+    """
+    _check(ideal, nonfinite, "sin_angle")
+    arrays = _arrays([(l, "l"), (m, "m")], axis, "sin_angle", (3,))
+    result = _run(_sin_kernel, "sin_angle", [(l, 3, "l"), (m, 3, "m")], None, out, axis, 3)
+    values = _resolve(result, arrays, "sin_angle", ideal, nonfinite, axis, _line_at_infinity, _sin_rows)
+    return values[()] if not isinstance(values, tuple) and values.ndim == 0 else values
+
+
+def _signed_kernel(ins: list[np.ndarray], o: np.ndarray, ws: list[np.ndarray]) -> None:
+    v, p, q = ins
+    u0, u1, w0, w1, t, na = ws
+    c, s = o[..., 0], o[..., 1]
+    # the rays as homogeneous differences p_xy v_w − v_xy p_w: no division, exact zeros for p = v
+    for (a, b), x in (((u0, u1), p), ((w0, w1), q)):
+        for i, d in ((0, a), (1, b)):
+            np.multiply(x[..., i], v[..., 2], out=d)
+            np.multiply(v[..., i], x[..., 2], out=t)
+            np.subtract(d, t, out=d)
+    np.multiply(u0, w0, out=c)
+    np.multiply(u1, w1, out=t)
+    np.add(c, t, out=c)
+    np.multiply(u0, w1, out=s)
+    np.multiply(u1, w0, out=t)
+    np.subtract(s, t, out=s)
+    np.multiply(u0, u0, out=na)
+    np.multiply(u1, u1, out=t)
+    np.add(na, t, out=na)
+    np.multiply(w0, w0, out=u0)  # u0 is free now: |w|²
+    np.multiply(w1, w1, out=t)
+    np.add(u0, t, out=u0)
+    np.multiply(na, u0, out=t)
+    np.sqrt(t, out=t)
+    with np.errstate(divide="ignore"):  # p or q at the vertex: looked at again
+        np.reciprocal(t, out=t)
+    # the rays were scaled by p_w v_w and q_w v_w: their signs, through p_w q_w, fix the orientation
+    np.multiply(p[..., 2], q[..., 2], out=w0)
+    np.copysign(t, w0, out=t)
+    np.multiply(c, t, out=c)
+    np.multiply(s, t, out=s)
+    _flag_unsafe(na, o)
+    _flag_unsafe(u0, o)
+    for x in (v, p, q):  # an ideal point gives a finite but meaningless ray: looked at again
+        if not x[..., 2].all():
+            o[x[..., 2] == 0] = np.nan
+
+
+def _rays(rows: list[np.ndarray]) -> tuple[np.ndarray, np.ndarray]:
+    v, p, q = (_scaled(r) for r in rows)  # exact: powers of two keep the zeros
+    u = p[:, :2] * v[:, 2:] - v[:, :2] * p[:, 2:]
+    w = q[:, :2] * v[:, 2:] - v[:, :2] * q[:, 2:]
+    return u, w
+
+
+def _signed_rows(rows: list[np.ndarray]) -> np.ndarray:
+    u, w = (_scaled(r) for r in _rays(rows))
+    sign = np.sign(rows[1][:, 2]) * np.sign(rows[2][:, 2])
+    norm = np.hypot(u[:, 0], u[:, 1]) * np.hypot(w[:, 0], w[:, 1])
+    c = sign * (u[:, 0] * w[:, 0] + u[:, 1] * w[:, 1]) / norm
+    s = sign * (u[:, 0] * w[:, 1] - u[:, 1] * w[:, 0]) / norm
+    return np.stack([c, s], axis=-1)
+
+
+def _at_vertex(rows: list[np.ndarray]) -> np.ndarray:
+    with np.errstate(invalid="ignore", over="ignore"):  # rows with NaN are told apart by the caller
+        u, w = _rays(rows)
+        return ~u.any(axis=-1) | ~w.any(axis=-1)
+
+
+def signed_angle(
+    vertex: Any, p: Any, q: Any, *, ideal: str = "raise", nonfinite: str = "raise", degenerate: str = "raise",
+    axis: int = -1,
+) -> Any:
+    """``(cos θ, sin θ)`` of the angles at ``vertex`` turning the ray to ``p`` counterclockwise onto the ray to ``q``.
+
+    The numeric :func:`pgsym.metric.signed_angle` on points of P², as two arrays. The rays are the
+    homogeneous differences ``p_xy v_w − v_xy p_w`` (no division, so ``p = vertex`` is decided exactly),
+    their orientation restored by the sign of ``p_w q_w``. Ideal points raise
+    :class:`~pgsym.errors.IdealPointError` (``ideal="mask"``); ``p`` or ``q`` at the vertex fixes no ray and
+    raises :class:`~pgsym.errors.CoincidentPointsError` (``degenerate="mask"``). With a mask the result is
+    ``((cos, sin), ok)``.
+
+    >>> signed_angle([0.0, 0, 1], [1.0, 0, 1], [[0.0, 2, 1], [0, -2, 1]])   # a quarter turn either way
+    (array([0., 0.]), array([ 1., -1.]))
+    """
+    _check(ideal, nonfinite, "signed_angle")
+    check_option(degenerate, DEGENERATE, "degenerate", "signed_angle")
+    arrays = _arrays([(vertex, "vertex"), (p, "p"), (q, "q")], axis, "signed_angle", (3,))
+    ins = [(vertex, 3, "vertex"), (p, 3, "p"), (q, 3, "q")]
+    result = _run(_signed_kernel, "signed_angle", ins, 2, None, axis, 6)
+
+    def ideal_rows(rows: list[np.ndarray]) -> np.ndarray:
+        return np.logical_or.reduce([r[:, 2] == 0 for r in rows])
+
+    checks = (degenerate, _at_vertex, CoincidentPointsError, "put p or q at the vertex, which fixes no ray")
+    values = _resolve(result, arrays, "signed_angle", ideal, nonfinite, axis, ideal_rows, _signed_rows, None, checks)
+    if isinstance(values, tuple):
+        c, s = np.moveaxis(values[0], axis, 0)
+        return (c, s), values[1]
+    c, s = np.moveaxis(values, axis, 0)
+    return (c[()], s[()]) if c.ndim == 0 else (c, s)

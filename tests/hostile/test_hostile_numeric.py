@@ -205,6 +205,21 @@ NUMERIC = {
     "point_line_distance": (pn.point_line_distance, [P3, L3], {}),
     "point_plane_distance": (pn.point_plane_distance, [P4, P4[::-1].copy()], {}),
     "reflect": (pn.reflect, [P3, L3], {}),
+    "perpendicular_line": (pn.perpendicular_line, [L3, P3], {}),
+    "angle_bisectors": (pn.angle_bisectors, [L3, L3[::-1].copy()], {}),
+    "parallel_line": (pn.parallel_line, [L3, P3], {}),
+    "signed_angle": (pn.signed_angle, [np.array([0.0, 0, 1]), P3, P3[::-1].copy()], {}),
+    "sin_angle": (pn.sin_angle, [L3, L3[::-1].copy()], {}),
+    "cos_squared_angle": (pn.cos_squared_angle, [P4, P4[::-1].copy()], {}),
+    "is_parallel": (pn.is_parallel, [P4, P4[::-1].copy()], {}),
+    "midpoint": (pn.midpoint, [P3, P3[::-1].copy()], {}),
+    # two pairs of circles (a batch of 3×3 matrices): x² + y² = 25 and = 4 against two circles about (4, 0)
+    "intersect_conics": (
+        pn.intersect_conics,
+        [np.stack([np.diag([1.0, 1, -25]), np.diag([1.0, 1, -4])]),
+         np.stack([[[1.0, 0, -4], [0, 1, 0], [-4, 0, 7]], [[1.0, 0, -4], [0, 1, 0], [-4, 0, 12]]])],
+        {},
+    ),
     "form_value": (pn.form_value, [np.diag([1.0, 1, -1]), P3], {}),
     "polar": (pn.polar, [np.diag([1.0, 1, -1]), P3], {}),
     "tangent_at": (pn.tangent_at, [np.diag([1.0, 1, -25]), np.array([[3.0, 4, 1], [5, 0, 1]])], {}),
@@ -309,12 +324,15 @@ def test_mask_mode_masks_exactly_the_spoiled_rows(name, f, args, kw, i, bad):
     batch = np.stack([rows[i], rows[i]])
     batch[0, 0] = bad
     values, finite = f(*rows[:i], batch, *rows[i + 1 :], nonfinite="mask", **kw)
+    expected = f(*rows, **kw)
+    if isinstance(values, tuple):  # a pair of results (angle_bisectors, signed_angle): one array of both
+        values, expected = np.stack(values, axis=-1), np.stack(expected, axis=-1)
     assert finite.tolist() == [False, True]
     if values.dtype.kind == "b":  # a predicate (is_perpendicular) says False on a masked row
         assert not values[0].any()
     else:
         assert np.isnan(values[0]).all()
-    assert np.array_equal(values[1], f(*rows, **kw))
+    assert np.array_equal(values[1], expected)
 
 
 def test_dehomogenize_tells_nan_from_ideal_and_masks_both():
