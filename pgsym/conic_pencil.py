@@ -131,8 +131,8 @@ def intersect_conics(c1: Conic, c2: Conic) -> tuple[Point, Point, Point, Point]:
         raise UndecidableError(
             "intersect_conics: det(C1 + t C2) has no root in the field of the conics' coefficients, so the "
             "common points would need the roots of an irreducible cubic nested under square roots (Cardano); "
-            "pgsym does not produce them exactly (and has no float conic intersection yet); two known common "
-            "points with coordinates in that field, or a degenerate conic among the two, make the question exact"
+            "pgsym does not produce them exactly (pgsym.numeric.intersect_conics gives them in floats); two known "
+            "common points with coordinates in that field, or a degenerate conic among the two, make the question exact"
         )
     candidates = [(D, D.split()) for D in members]
     D, (l, m) = min(candidates, key=lambda c: _plainness(c[1]))

@@ -169,6 +169,7 @@ def point1s() -> st.SearchStrategy:
     return homogeneous_vectors(2, True, integers(9)).map(lambda t: Point1(*t))
 
 
+@st.composite
 def statement_programs(draw) -> tuple[str, int]:
     """A random theorem of the statement language (free points and lines, joins, meets, points on lines, and
     one incidence, collinearity or concurrency conclusion), with a seed for evaluating it: (text, seed)."""

@@ -5,9 +5,10 @@ free points, Brianchon from five free tangents, Braikenridge–Maclaurin, Möbiu
 for two tetrahedra, Menelaus, Ceva). Each is stated with free points (or lines) only, so the engine must
 choose the frame itself; the time is that of ``prove`` with the default backend.
 
-The second intersection of a line with a conic, and the dual conic tangent to five lines, are written
-here as operations of the table (the fixture adds them for the test and removes them afterwards); they
-commute with homographies, as the engine's normalisation requires.
+The second point of a line on a conic given by a point of it, and the dual conic through five lines
+(whose points are lines, so that Brianchon's sixth side is its second tangent through a point), are
+written here as operations of their own (the fixture adds them for the test and removes them
+afterwards); they commute with homographies, as the engine's normalisation requires.
 """
 
 from __future__ import annotations
@@ -38,11 +39,12 @@ def conic_operations():
         "second_point": Operation("second_point", (("conic",), ("point", "line"), ("point", "line")), 1,
                                   _second_point, lambda n, d: f"second point of {n[1]}{n[2]} on {n[0]}",
                                   lambda n, name, d: [f"{name} is defined ({n[1]}{n[2]} is not tangent to {n[0]})"]),
-        "conic_tangent_to": Operation("conic_tangent_to", (("line",),) * 5, "conic",
+        "dual_conic_through": Operation("dual_conic_through", (("line",),) * 5, "conic",
                                       lambda node, v, scalar: _conic_from_points(v),
                                       lambda n, d: f"dual conic({', '.join(n)})",
                                       lambda n, name, d: [f"{', '.join(n)} determine one conic"]),
     }
+    assert not set(added) & set(OPERATIONS), "the fixture would shadow operations of the table"
     OPERATIONS.update(added)
     yield
     for k in added:
@@ -97,7 +99,7 @@ def test_pascal_with_the_sixth_point_by_harmonic_conjugation():
 def test_brianchon_from_five_free_tangents(conic_operations):
     c = Claim("brianchon-general", "Brianchon for the conic tangent to five free lines")
     a, b, cc, d, e, p = (c.free_line(n) for n in ("a", "b", "c", "d", "e", "p"))
-    K = c._construct("conic_tangent_to", "K", (a, b, cc, d, e))
+    K = c._construct("dual_conic_through", "K", (a, b, cc, d, e))
     f = c._construct("second_point", "f", (K, a, p))  # the other tangent through the point a ∧ p
     sides = [a, b, cc, d, e, f]
     V = [c.meet(f"V{i}", sides[i], sides[(i + 1) % 6]) for i in range(6)]

@@ -36,7 +36,7 @@ def _line(verdict) -> str:  # type: ignore[no-untyped-def]
         extra = f"(counterexample: {values[:100]})"
     else:
         extra = f"({verdict.reason[:120]})"
-    return f"{verdict.status:8s}  {verdict.name:40s}  {extra}  {1000 * verdict.elapsed:.0f} ms{expected}{ok}"
+    return f"{verdict.status:10s}  {verdict.name:40s}  {extra}  {1000 * verdict.elapsed:.0f} ms{expected}{ok}"
 
 
 _SUFFIX = ".thm"  # pgsym.proofs.language.STATEMENT_SUFFIX (not imported here: it loads SymPy)

@@ -35,6 +35,7 @@ All three read each construction's formula, conditions and core builder from the
 from __future__ import annotations
 
 import itertools
+import math
 import random
 import signal
 import threading
@@ -88,6 +89,68 @@ MAX_TERMS = 400_000
 """The most terms one coordinate may have in the exact pass: beyond, the verdict is *unknown* rather than a
 computation that a time limit cannot interrupt (python-flint's products run in C)."""
 
+MAX_WORK = 1_500_000_000
+"""The most term products one construction may need in the exact pass (estimated before it runs, see
+:class:`_Cost`; python-flint forms 10⁸ to 10⁹ a second): beyond, the verdict is *unknown* at once, since one
+product in C cannot be interrupted by a time limit."""
+
+
+class _Cost:
+    """A stand-in for a polynomial that knows only bounds on its number of terms and its degree.
+
+    The table's formulas are written for any ring, so running one on stand-ins bounds the term products
+    it would form (``n₁·n₂`` for each product) before the real polynomials are multiplied; ``tally[0]`` adds
+    them up. A product has at most ``n₁·n₂`` terms and at most as many as there are monomials of its degree
+    in the ring's ``k`` variables, ``C(k + d, k)``.
+    """
+
+    __slots__ = ("d", "k", "n", "tally")
+
+    def __init__(self, n: int, d: int, k: int, tally: list[int]) -> None:
+        self.n, self.d, self.k, self.tally = n, d, k, tally
+
+    def _parts(self, other: Any) -> tuple[int, int]:
+        return (other.n, other.d) if isinstance(other, _Cost) else (1, 0)
+
+    def _monomials(self, d: int) -> int:
+        return math.comb(self.k + d, self.k)
+
+    def __add__(self, other: Any) -> _Cost:
+        n, d = self._parts(other)
+        d = max(self.d, d)
+        return _Cost(min(self.n + n, self._monomials(d)), d, self.k, self.tally)
+
+    __radd__ = __sub__ = __rsub__ = __add__
+
+    def __mul__(self, other: Any) -> _Cost:
+        n, d = self._parts(other)
+        self.tally[0] += self.n * n
+        d += self.d
+        return _Cost(min(self.n * n, self._monomials(d)), d, self.k, self.tally)
+
+    __rmul__ = __mul__
+
+    def __neg__(self) -> _Cost:
+        return self
+
+    def __pow__(self, e: int) -> _Cost:
+        out = _Cost(1, 0, self.k, self.tally)
+        for _ in range(int(e)):
+            out = out * self
+        return out
+
+
+def _estimate(compute: Callable[[list[Any]], Any], args: list[Any], R: PolynomialRing) -> int | None:
+    """The term products ``compute`` would form on these arguments' values (None when it cannot be told)."""
+    tally = [0]
+    k = len(R.symbols)
+    stand_ins = [_map(a, lambda x: _Cost(R.nterms(x), max(R.degree(x), 0), k, tally)) for a in args]
+    try:
+        compute(stand_ins)
+    except Exception:  # a computation that compares or converts its values: no estimate, MAX_TERMS still holds
+        return None
+    return tally[0]
+
 
 class _Deadline:
     def __init__(self, seconds: float | None) -> None:
@@ -125,12 +188,17 @@ def _alarm(seconds: float | None):  # type: ignore[no-untyped-def]
 # -- evaluation of a claim in one arithmetic -----------------------------------------------
 
 def _evaluate(claim: Claim, scalar: Callable[[Any], Any], reduce: Callable[[Any], Any] | None = None,
-              deadline: _Deadline | None = None) -> dict[Node, Any]:
+              deadline: _Deadline | None = None, ring: PolynomialRing | None = None) -> dict[Node, Any]:
     values: dict[Node, Any] = {}
     for node in claim.nodes.values():
         if deadline is not None:
             deadline.check(f"constructing {node.name}")
-        value = node.operation.formula(node, [values[a] for a in node.args if isinstance(a, Node)], scalar)
+        args = [values[a] for a in node.args if isinstance(a, Node)]
+        if ring is not None:
+            work = _estimate(lambda v, node=node: node.operation.formula(node, v, scalar), args, ring)
+            if work is not None and work > MAX_WORK:
+                raise _TooLarge(f"{node.name} would need about {work:.1e} term products")
+        value = node.operation.formula(node, args, scalar)
         if reduce is not None:
             value = _map(value, reduce)
         elif deadline is not None and any(hasattr(x, "__len__") and len(x) > MAX_TERMS for x in flat(value)):
@@ -149,35 +217,51 @@ def _is_zero_vector(value: Any) -> bool:
     return all(x == 0 for x in flat(value))
 
 
-def _conclusion_polys(claim: Claim, values: dict[Node, Any], skip: Any = ()) -> list[tuple[str, Any]]:
-    """(label, polynomial) pairs that must all vanish; rank conclusions are handled separately."""
+def _conclusion_polys(claim: Claim, values: dict[Node, Any], skip: Any = (), ring: PolynomialRing | None = None
+                      ) -> list[tuple[str, Any]]:
+    """(label, polynomial) pairs that must all vanish; rank conclusions are handled separately.
+
+    With ``ring`` (exact polynomials of that ring) each conclusion is first formed on :class:`_Cost` stand-ins, and one
+    that would need more than :data:`MAX_WORK` term products raises :class:`_TooLarge` before it starts.
+    """
     out: list[tuple[str, Any]] = []
     for c in claim.conclusions:
         if any(c is x for x in skip):
             continue
         vals = [values[a] for a in c.args if isinstance(a, Node)]
         names = [a.name for a in c.args if isinstance(a, Node)]
-        if c.kind == "incident":
-            out.append((f"{names[1]}ᵀ{names[0]}", alg.dot(vals[0], vals[1])))
-        elif c.kind == "det":
-            out.append((f"det[{' '.join(names)}]", alg.det(vals)))
-        elif c.kind == "proportional":
-            u, v = flat(vals[0]), flat(vals[1])
-            k = next((i for i, x in enumerate(v) if x != 0), 0)
-            for i in range(len(u)):
-                if i != k:
-                    out.append((f"{names[0]}[{i}]·{names[1]}[{k}] − {names[0]}[{k}]·{names[1]}[{i}]",
-                                u[i] * v[k] - u[k] * v[i]))
-        elif c.kind == "equal":
-            u, v = flat(vals[0]), flat(vals[1])
-            for i, (a, b) in enumerate(zip(u, v, strict=True)):
-                out.append((f"{names[0]}[{i}] − {names[1]}[{i}]", a - b))
-        elif c.kind == "zero":
-            for i, a in enumerate(flat(vals[0])):
-                out.append((f"{names[0]}[{i}]" if len(flat(vals[0])) > 1 else names[0], a))
-        elif c.kind == "equal_ratio":
-            (n1, d1), (n2, d2) = vals
-            out.append((f"num({names[0]})·den({names[1]}) − num({names[1]})·den({names[0]})", n1 * d2 - n2 * d1))
+        if ring is not None:
+            work = _estimate(lambda v, kind=c.kind, names=names: _conclusion_values(kind, v, names), vals, ring)
+            if work is not None and work > MAX_WORK:
+                raise _TooLarge(f"the conclusion {c.text or c.kind} would need about {work:.1e} term products")
+        out.extend(_conclusion_values(c.kind, vals, names))
+    return out
+
+
+def _conclusion_values(kind: str, vals: list[Any], names: list[str]) -> list[tuple[str, Any]]:
+    """The (label, polynomial) pairs of one conclusion of that kind, from its arguments' values."""
+    out: list[tuple[str, Any]] = []
+    if kind == "incident":
+        out.append((f"{names[1]}ᵀ{names[0]}", alg.dot(vals[0], vals[1])))
+    elif kind == "det":
+        out.append((f"det[{' '.join(names)}]", alg.det(vals)))
+    elif kind == "proportional":
+        u, v = flat(vals[0]), flat(vals[1])
+        k = next((i for i, x in enumerate(v) if x != 0), 0)
+        for i in range(len(u)):
+            if i != k:
+                out.append((f"{names[0]}[{i}]·{names[1]}[{k}] − {names[0]}[{k}]·{names[1]}[{i}]",
+                            u[i] * v[k] - u[k] * v[i]))
+    elif kind == "equal":
+        u, v = flat(vals[0]), flat(vals[1])
+        for i, (a, b) in enumerate(zip(u, v, strict=True)):
+            out.append((f"{names[0]}[{i}] − {names[1]}[{i}]", a - b))
+    elif kind == "zero":
+        for i, a in enumerate(flat(vals[0])):
+            out.append((f"{names[0]}[{i}]" if len(flat(vals[0])) > 1 else names[0], a))
+    elif kind == "equal_ratio":
+        (n1, d1), (n2, d2) = vals
+        out.append((f"num({names[0]})·den({names[1]}) − num({names[1]})·den({names[0]})", n1 * d2 - n2 * d1))
     return out
 
 
@@ -469,7 +553,7 @@ def _exact_pass(claim: Claim, deadline: _Deadline, rank_witness: list[Any], back
     conv = _converter(claim, order, field=bool(claim.hypotheses), backend="sympy" if hyps else backend,
                       substitution=substitution)
     R = conv.R
-    values = _evaluate(claim, conv, deadline=deadline)
+    values = _evaluate(claim, conv, deadline=deadline, ring=R)
     entries = [p for v in values.values() for p in flat(v) if not isinstance(p, int)]
     largest = max((R.nterms(p) for p in entries), default=0)
     conditions = []
@@ -496,7 +580,7 @@ def _exact_pass(claim: Claim, deadline: _Deadline, rank_witness: list[Any], back
         basis = [R(g.as_expr()) for g in G.exprs]
         method = "Gröbner basis ideal membership"
         steps.append("Gröbner basis (grevlex) of the hypotheses: " + "; ".join(R.text(g) for g in basis))
-        for label, poly in _conclusion_polys(claim, values):
+        for label, poly in _conclusion_polys(claim, values, ring=R):
             deadline.check("reducing the conclusion")
             quotients, rem = poly.div(basis)
             if rem != 0:
@@ -526,7 +610,7 @@ def _exact_pass(claim: Claim, deadline: _Deadline, rank_witness: list[Any], back
                 if line is not None:
                     steps.append(line)
                     done.append(c)
-        for label, poly in _conclusion_polys(claim, values, done):
+        for label, poly in _conclusion_polys(claim, values, done, ring=R):
             deadline.check("expanding the conclusion")
             if poly != 0:
                 if solved:
