@@ -160,7 +160,8 @@ def class_matrix(c: Claim, group: TransformationClass,
         if e.d != 1 and all(e.d != d for d in dens):
             dens.append(e.d)
     den = functools.reduce(lambda x, y: x * y, dens, R.one)
-    rows = [[(R(e.n) * den.exquo(R(e.d))).as_expr() for e in row] for row in entries]
+    # entries without a denominator are taken as they are (most classes have none: no division at all)
+    rows = [[(R(e.n) * (den if e.d == 1 else den.exquo(R(e.d)))).as_expr() for e in row] for row in entries]
     return sympy.Matrix(rows), params
 
 
