@@ -97,6 +97,11 @@ def work(tmp_path: Path, bomb_bytes: bytes, manifest_bytes: bytes) -> Path:
     (w / "huge_answers.csv").write_text(f"id,1\ns1,\"({DIGITS[:100]}, 1, 1)\"\n")
     (w / "long_answers.csv").write_text(f"id,1\ns1,\"({DIGITS}, 1, 1)\"\n")
     (w / "nul_answers.csv").write_bytes(b"id,1\ns1,(1\x00, 2, 3)\n")
+    # theorem files: parentheses 100 deep, bytes that are not UTF-8, a fifo
+    (w / "deep.thm").write_text("points A B C D\npoint X = meet " + "(" * 100 + "join A B" + ")" * 100
+                                + " (join C D)\nprove collinear A B X\n")
+    (w / "binary.thm").write_bytes(b"points A\xff\xfe B\n\x00\x01")
+    os.mkfifo(w / "fifo.thm")
     return w
 
 
@@ -157,6 +162,12 @@ CASES = [
     ("join-zero-denominator", ("join", "1/0,2", "0,1"), 2, r"denominator is zero"),
     ("join-python-code", ("join", "__import__('os').system('true')", "0,1"), 2, r"NonNumericError: .* not a number"),
     ("join-missing-argument", ("join", "0,1"), 2, r"Missing argument 'Q'"),
+    # prove FILE and discover FILE: the statement language's readers
+    ("prove-deep-file", ("prove", "deep.thm"), 2, r"deep\.thm:2:\d+: parentheses nested more than 32 deep"),
+    ("discover-deep-file", ("discover", "deep.thm"), 2, r"deep\.thm:2:\d+: parentheses nested more than 32 deep"),
+    ("discover-binary-file", ("discover", "binary.thm"), 2, r"binary\.thm:1:\d+: the file is not UTF-8 text"),
+    ("discover-missing-file", ("discover", "missing.thm"), 2, r"missing\.thm.*No such file"),
+    ("discover-fifo", ("discover", "fifo.thm"), 2, r"fifo\.thm"),
     # prove
     ("prove-unknown-claim", ("prove", "no-such-claim"), 2, r"no claim named 'no-such-claim'"),
     ("prove-10kB-name", ("prove", WORDS), 2, r"claim name of 10000 characters"),
