@@ -32,20 +32,15 @@ import os
 os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")  # before NumPy loads its BLAS
 
 import json
-import sys
 from collections.abc import Callable
 
 import numpy as np
-from timing import medians
-
-try:
-    import geometer
-except ImportError:  # pragma: no cover - a set-up problem, reported plainly
-    sys.exit("bench_metric.py needs geometer, a benchmark-only dependency: .venv/bin/pip install geometer")
+from timing import import_geometer, medians
 
 from pgsym.numeric import affine as na
 from pgsym.numeric import metric as nm
 
+geometer = import_geometer("bench_metric.py")
 N = 10**6
 REPEATS = 11
 GEOMETER_REPEATS = 1  # geometer takes seconds per call on 10⁶ rows

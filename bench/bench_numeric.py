@@ -27,18 +27,13 @@ import os
 os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")  # before NumPy loads its BLAS
 
 import json
-import sys
 
 import numpy as np
-from timing import medians
-
-try:
-    import geometer
-except ImportError:  # pragma: no cover - a set-up problem, reported plainly
-    sys.exit("bench_numeric.py needs geometer, a benchmark-only dependency: .venv/bin/pip install geometer")
+from timing import import_geometer, medians
 
 import pgsym.numeric as pn
 
+geometer = import_geometer("bench_numeric.py")
 N = 10**6
 REPEATS = 21
 GEOMETER_REPEATS = 5

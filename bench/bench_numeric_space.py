@@ -23,19 +23,14 @@ import os
 
 os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")  # before NumPy loads its BLAS
 
-import sys
 from collections.abc import Callable
 
 import numpy as np
-from timing import medians, report
-
-try:
-    import geometer
-except ImportError:  # pragma: no cover - a set-up problem, reported plainly
-    sys.exit("bench_numeric_space.py needs geometer, a benchmark-only dependency: .venv/bin/pip install geometer")
+from timing import import_geometer, medians, report
 
 import pgsym.numeric as pn
 
+geometer = import_geometer("bench_numeric_space.py")
 N = 10**6
 REPEATS = 7
 GEOMETER_REPEATS = 1  # geometer takes seconds per call on 10⁶ rows

@@ -11,6 +11,7 @@ from __future__ import annotations
 import json
 import multiprocessing as mp
 import statistics
+import sys
 import time
 from collections.abc import Callable
 from typing import Any
@@ -89,3 +90,12 @@ def medians(functions: dict[str, Callable[[], object]], repeats: int) -> dict[st
             f()
             times[name].append(time.perf_counter() - t0)
     return {name: statistics.median(ts) for name, ts in times.items()}
+
+
+def import_geometer(script: str) -> Any:
+    """The geometer package (the numeric benchmarks' second baseline), or a plain exit naming the set-up step."""
+    try:
+        import geometer
+    except ImportError:  # a set-up problem, reported plainly
+        sys.exit(f"{script} needs geometer, a benchmark-only dependency: .venv/bin/pip install geometer")
+    return geometer
