@@ -21,7 +21,9 @@ from pgsym import ring as alg
 from pgsym.proofs import Claim, prove
 from pgsym.proofs.operations import OPERATIONS, Operation, _conic_from_points
 
-BUDGET_S = 1.0
+# the target is 1 s (bench/bench_proofs.py measures it); the suite allows 5× for a loaded machine, which still
+# fails the expansion without a frame (minutes)
+BUDGET_S = 5.0
 
 
 def _second_point(node, v, scalar):
