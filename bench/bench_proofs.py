@@ -8,18 +8,20 @@ builds the same conclusion as SymPy expressions and calls ``simplify`` on each c
 true means the ratio is a lower bound. A global budget keeps the script near 90 s; claims left when it
 runs out are not reported.
 
-Last, three classical theorems stated in general position (every point free, nothing placed by hand):
-Pappus, Pascal (conic through five free points, the sixth built from the polar of a free point) and
-Desargues for two tetrahedra in P³. ``ours_s`` is ``prove`` as shipped (frame chosen without loss of
-generality, python-flint), with ``ours_sympy_ring_s`` the same on SymPy's ring (the browser's fallback);
-the baselines, each in a child process with a time limit, are the SymPy-expression route (constructions
-as SymPy expressions, each conclusion polynomial ``expand``-ed) and the engine as it was (SymPy's ring,
-no normalisation). Medians of three runs.
+Last, three classical theorems stated in general position, read from the corpus (tests/theorems/: pappus,
+pascal with the sixth point as the second intersection of a line, and two tetrahedra in perspective in P³).
+``ours_s`` is ``prove`` as shipped (frame chosen without loss of generality, python-flint), with
+``ours_sympy_ring_s`` the same on SymPy's ring (the browser's fallback); the baselines, each in a child
+process with a time limit, are the SymPy-expression route (constructions as SymPy expressions, each
+conclusion polynomial ``expand``-ed) and the engine as it was (SymPy's ring, no normalisation). Medians of
+three runs.
 """
 
 from __future__ import annotations
 
+import functools
 import time
+from pathlib import Path
 
 from timing import median_time, report, report_against_timeout, run_with_timeout
 
@@ -66,62 +68,15 @@ def _naive(name: str) -> bool:
 GENERAL_TIMEOUT_S = 15.0
 
 
-def _pappus_general():
-    from pgsym.proofs import Claim
-
-    c = Claim("pappus-general-position", "Pappus, every point free")
-    A, B, A2, B2 = (c.free_point(n) for n in ("A", "B", "A'", "B'"))
-    s, t = c.params("s t")
-    C, C2 = c.combine("C", A, B, 1, s), c.combine("C'", A2, B2, 1, t)
-    X = c.meet("X", c.join("AB'", A, B2), c.join("A'B", A2, B))
-    Y = c.meet("Y", c.join("AC'", A, C2), c.join("A'C", A2, C))
-    Z = c.meet("Z", c.join("BC'", B, C2), c.join("B'C", B2, C))
-    c.conclude_collinear(X, Y, Z)
-    return c
+# the corpus's statements (tests/theorems/), every point free: the same theorems the corpus test proves
+GENERAL = {"pappus": "pappus.thm", "pascal": "pascal.thm", "desargues_3d": "tetrahedra-perspective.thm"}
+CORPUS = Path(__file__).resolve().parent.parent / "tests" / "theorems"
 
 
-def _pascal_general():
-    # the second point F of the line AP on the conic ABCDE: the polar of P meets AP at H, and F is the harmonic
-    # conjugate of A with respect to P and H, built with the complete quadrangle R, S, U, W
-    from pgsym.proofs import Claim
+def _general(name: str):  # type: ignore[no-untyped-def]
+    from pgsym.proofs.language import read_statement
 
-    c = Claim("pascal-general-position", "Pascal, conic through five free points")
-    A, B, C, D, E, P, R = (c.free_point(n) for n in "ABCDEPR")
-    (s,) = c.params("s")
-    K = c.conic_through("K", A, B, C, D, E)
-    m = c.join("m", A, P)
-    H = c.meet("H", c.polar("p", K, P), m)
-    S = c.combine("S", R, A, 1, s)
-    U = c.meet("U", c.join("PS", P, S), c.join("RH", R, H))
-    W = c.meet("W", c.join("HS", H, S), c.join("RP", R, P))
-    F = c.meet("F", c.join("UW", U, W), m)
-    pairs = (("X", A, B, D, E), ("Y", B, C, E, F), ("Z", C, D, F, A))
-    c.conclude_collinear(*(c.meet(n, c.join(n + "1", p, q), c.join(n + "2", u, v)) for n, p, q, u, v in pairs))
-    return c
-
-
-def _desargues_3d_general():
-    from pgsym.proofs import Claim
-
-    c = Claim("desargues-3d-general-position", "Desargues for two tetrahedra in perspective")
-    O = c.free_point3("O")
-    A = [c.free_point3(f"A{i}") for i in range(1, 5)]
-    B = [c.combine(f"B{i + 1}", A[i], O, 1, t) for i, t in enumerate(c.params("t1 t2 t3 t4"))]
-
-    def face(P, *idx):
-        return c.plane_through(f"{P}{''.join(map(str, idx))}", *((A if P == "A" else B)[n - 1] for n in idx))
-
-    def edge_meet(i, j):
-        k, l = (n for n in (1, 2, 3, 4) if n not in (i, j))
-        return c.point_on_planes(f"X{i}{j}", face("A", i, j, k), face("A", i, j, l), face("B", i, j, k))
-
-    X = {e: edge_meet(*e) for e in ((1, 2), (1, 3), (1, 4), (2, 3), (2, 4), (3, 4))}
-    for other in ((2, 3), (2, 4), (3, 4)):
-        c.conclude_coplanar(X[1, 2], X[1, 3], X[1, 4], X[other])
-    return c
-
-
-GENERAL = {"pappus": _pappus_general, "pascal": _pascal_general, "desargues_3d": _desargues_3d_general}
+    return read_statement(CORPUS / GENERAL[name])
 
 
 def _expression_route(name: str) -> bool:
@@ -129,7 +84,7 @@ def _expression_route(name: str) -> bool:
 
     from pgsym.proofs.engine import _conclusion_polys, _evaluate
 
-    claim = GENERAL[name]()
+    claim = _general(name)
     values = _evaluate(claim, sympy.sympify)
     return all(sympy.expand(expr) == 0 for _, expr in _conclusion_polys(claim, values))
 
@@ -137,13 +92,14 @@ def _expression_route(name: str) -> bool:
 def _previous_engine(name: str) -> bool:
     from pgsym.proofs.engine import prove
 
-    return prove(GENERAL[name](), timeout=None, backend="sympy", normalise_coordinates=False).proved
+    return prove(_general(name), timeout=None, backend="sympy", normalise_coordinates=False).proved
 
 
 def _general_position() -> None:
     from pgsym.proofs.engine import prove
 
-    for name, build in GENERAL.items():
+    for name in GENERAL:
+        build = functools.partial(_general, name)
         assert prove(build()).proved
         mine = median_time(lambda build=build: prove(build()), 3)
         fallback = median_time(lambda build=build: prove(build(), backend="sympy"), 3)
