@@ -23,7 +23,7 @@ import numpy as np
 
 from ..errors import CoincidentPointsError, DegenerateConfigurationError
 from ._arrays import DEGENERATE, check_option
-from .metric import _PART, _arrays, _check, _flag_unsafe, _resolve, _run, _scaled
+from .metric import _PART, _arrays, _check, _either_point_ideal, _flag_unsafe, _resolve, _run, _scaled
 from .tolerances import INCIDENT_RTOL
 
 __all__ = ["is_parallel", "midpoint", "parallel_line"]
@@ -217,8 +217,4 @@ def midpoint(
     arrays = _arrays([(a, "a"), (b, "b")], axis, "midpoint", (3, 4))
     k = arrays[0].shape[-1]
     result = _run(_midpoint_kernel, "midpoint", [(a, k, "a"), (b, k, "b")], k, out, axis, 1)
-
-    def ideal_rows(rows: list[np.ndarray]) -> np.ndarray:
-        return (rows[0][:, -1] == 0) | (rows[1][:, -1] == 0)
-
-    return _resolve(result, arrays, "midpoint", ideal, nonfinite, axis, ideal_rows, _midpoint_robust)
+    return _resolve(result, arrays, "midpoint", ideal, nonfinite, axis, _either_point_ideal, _midpoint_robust)

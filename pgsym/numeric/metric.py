@@ -356,6 +356,11 @@ def _point_kernel(ins: list[np.ndarray], o: np.ndarray, ws: list[np.ndarray]) ->
     np.sqrt(o, out=o)
 
 
+def _either_point_ideal(rows: list[np.ndarray]) -> np.ndarray:
+    """The rows where either of two points is ideal (last coordinate zero)."""
+    return (rows[0][:, -1] == 0) | (rows[1][:, -1] == 0)
+
+
 def point_distance(x: Any, y: Any, *, ideal: str = "raise", nonfinite: str = "raise", axis: int = -1) -> Any:
     """Euclidean distances between broadcast arrays of points of P² (k = 3) or of space (k = 4).
 
@@ -366,11 +371,7 @@ def point_distance(x: Any, y: Any, *, ideal: str = "raise", nonfinite: str = "ra
     arrays = _arrays([(x, "x"), (y, "y")], axis, "point_distance", (3, 4))
     k = arrays[0].shape[-1]
     result = _run(_point_kernel, "point_distance", [(x, k, "x"), (y, k, "y")], None, None, axis, 4)
-
-    def ideal_rows(rows: list[np.ndarray]) -> np.ndarray:
-        return (rows[0][:, -1] == 0) | (rows[1][:, -1] == 0)
-
-    values = _resolve(result, arrays, "point_distance", ideal, nonfinite, axis, ideal_rows, _robust_point)
+    values = _resolve(result, arrays, "point_distance", ideal, nonfinite, axis, _either_point_ideal, _robust_point)
     return values[()] if not isinstance(values, tuple) and values.ndim == 0 else values
 
 
