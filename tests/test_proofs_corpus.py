@@ -5,8 +5,7 @@ the configuration is rebuilt at the counterexample's exact rational values with 
 and pgsym's core objects (joins, conics, Plücker lines), never with the engine or the formulas of
 the operations table, and the conclusion is checked there.
 
-A true theorem of ``KNOWN_OPEN`` that the engine leaves "unknown" is reported as an expected failure
-naming the reason: never "proved" wrongly, never "false"; any other unknown verdict fails.
+Every true theorem must be proved and every false one refuted: an "unknown" verdict fails.
 """
 
 from __future__ import annotations
@@ -27,12 +26,6 @@ from pgsym.proofs.language import parse_statement, read_statement
 
 CORPUS = sorted((Path(__file__).parent / "theorems").glob("*.thm"))
 LIMIT = 10.0  # seconds per theorem (most take milliseconds; bench/bench_proofs.py measures them)
-# true theorems the engine leaves "unknown" today: no frame applies (cross-ratio and tangency conclusions,
-# points on a conic) and the expansion is too large to start; any other unknown theorem is a regression
-KNOWN_OPEN = {
-    "chasles", "conic-tangent-to-five-lines", "desargues-involution", "harmonic-chord", "quadrilateral-harmonic",
-    "second-intersection-on-conic", "six-tangents", "steiner", "tangent-touches", "three-lines-concurrent",
-}
 
 
 class Undefined(Exception):
@@ -216,8 +209,6 @@ def test_theorem(path):
     elapsed = time.perf_counter() - start
     if claim.expected:
         assert verdict.status != "false", f"a true theorem refuted: {verdict.reason}"
-        if verdict.status == "unknown" and path.stem in KNOWN_OPEN:
-            pytest.xfail(f"not proved within {LIMIT:g} s ({elapsed:.1f} s): {verdict.reason}")
         assert verdict.proved, f"{verdict.status} after {elapsed:.1f} s: {verdict.reason}"
     else:
         assert verdict.status == "false", f"a false theorem came out {verdict.status}: {verdict.reason}"

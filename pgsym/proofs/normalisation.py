@@ -4,7 +4,8 @@ Every geometry prover does this first. When a claim is built only from construct
 commute with every homography (``Operation.group == "projective"``), its free objects are
 generic (each coordinate a parameter of its own), and its conclusions are projectively
 invariant (an incidence, a collinearity, a concurrency, a coplanarity, an equality up to
-scale, an equality of cross-ratios), then the conclusion polynomial vanishes identically as
+scale, an equality of cross-ratios of collinear points or concurrent lines, a point on a conic, a tangent,
+six points on a conic, lines of P³ that meet), then the conclusion polynomial vanishes identically as
 soon as it vanishes for the configurations whose first four free points of P² (five of P³,
 three of P¹; or free lines / planes, dually) are a fixed frame:
 
@@ -149,9 +150,11 @@ def _obstacle(claim: Claim, counts: Counter) -> str | None:
     if claim.hypotheses:
         return "the claim has equation hypotheses on coordinates"
     for c in claim.conclusions:
+        if c.kind == "zero" and c.args[0].operation.conclusion and c.args[0].operation.group == "projective":
+            continue  # a quantity of the table that a homography maps by an invertible linear map
         if c.kind not in _INVARIANT_CONCLUSIONS:
             return f"the conclusion '{c.text}' is not projectively invariant"
-        if c.kind == "equal_ratio" and any(a.op not in ("cross_ratio", "const") for a in c.args):
+        if c.kind == "equal_ratio" and any(a.op != "const" and a.operation.group != "projective" for a in c.args):
             return f"the conclusion '{c.text}' compares ratios that are not cross-ratios"
     for node in claim.nodes.values():
         if node.op == "const":
