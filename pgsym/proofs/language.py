@@ -121,6 +121,10 @@ _KINDS = ("point", "line", "point3", "plane", "line3", "conic", "point1", "ratio
 _OPERATIONS = ("join", "meet", "plane", "conic", "tangent", "polar", "second", "harmonic", "crossratio",
                "midpoint", "apply", "dual")
 _PREDICATES = ("collinear", "concurrent", "coplanar", "on", "tangent", "meet", "conconic", "equal", "harmonic")
+# Euclidean constructions and predicates (relative to the absolute)
+_OPERATIONS += ("parallel", "perpendicular", "bisector", "foot", "reflect", "rotate", "translate", "circle",
+                "centre", "invert", "dist2", "area", "segratio", "add", "sub", "mul")
+_PREDICATES += ("perpendicular", "parallel", "equallength", "equalangle", "concyclic", "equalarea")
 KEYWORDS = frozenset({"title", "expect", "params", "prove", "on", "through", *_PLURALS, *_KINDS, *_OPERATIONS,
                       *_PREDICATES})
 
@@ -216,6 +220,12 @@ def _show(tok: _Token) -> str:
 
 def _parse_arg(cur: _Line, depth: int) -> Any:
     tok = cur.next()
+    if tok.kind == "number" or (tok.text == "-" and cur.peek().kind == "number"):
+        # a number argument (a cosine, a squared radius, a term of ratio arithmetic), kept as one token
+        if tok.text == "-":
+            num = cur.next()
+            return _Token("number", "-" + num.text, tok.line, tok.col)
+        return tok
     if tok.kind == "name":
         if tok.text in _OPERATIONS:
             raise StatementSyntaxError(f"the operation {tok.text!r} inside an argument needs parentheses: "
@@ -283,13 +293,20 @@ def _canonical(e: Any) -> str:
 _Builder = Callable[[Claim, str, list[Node]], Node]
 
 
+def _kind_of(a: Any) -> str:
+    """The kind of an argument: a node's kind, ``number`` for a number, ``param`` for a parameter name."""
+    if isinstance(a, Node):
+        return a.kind
+    return "number" if isinstance(a, sympy.Rational) else "param"
+
+
 def _by_kind(table: dict[tuple[str, ...], _Builder]) -> Callable[[Claim, str, list[Node], _Token], Node]:
     def build(claim: Claim, name: str, args: list[Node], tok: _Token) -> Node:
-        kinds = tuple(a.kind for a in args)
+        kinds = tuple(_kind_of(a) for a in args)
         builder = table.get(kinds)
         if builder is None:
             accepted = "; ".join(" ".join(k) for k in table)
-            got = " ".join(f"{a.kind} {a.name}" for a in args) or "nothing"
+            got = " ".join(f"{_kind_of(a)} {getattr(a, 'name', a)}" for a in args) or "nothing"
             raise StatementKindError(f"{tok.text} takes ({accepted}), got {got}", tok.line, tok.col)
         return builder(claim, name, args)
     return build
@@ -323,6 +340,31 @@ _BUILD: dict[str, Callable[[Claim, str, list[Node], _Token], Node]] = {
     "dual": _by_kind({(_C,): lambda c, n, a: c.dual_conic(n, *a)}),
 }
 
+# Euclidean constructions (numbers and parameter names allowed where a cosine, sine or squared radius goes)
+_N, _R = ("number", "param"), "ratio"
+_BUILD.update({
+    "parallel": _by_kind({(_L, _P): lambda c, n, a: c.parallel(n, *a)}),
+    "perpendicular": _by_kind({(_L, _P): lambda c, n, a: c.perpendicular(n, *a)}),
+    "bisector": _by_kind({(_P, _P): lambda c, n, a: c.bisector(n, *a)}),
+    "foot": _by_kind({(_P, _L): lambda c, n, a: c.foot(n, *a)}),
+    "reflect": _by_kind({(_P, _P): lambda c, n, a: c.reflect_point(n, *a),
+                         (_P, _L): lambda c, n, a: c.reflect_line(n, *a)}),
+    "rotate": _by_kind({(_P, _P, x, y): (lambda c, n, a: c.rotate(n, *a)) for x in _N for y in _N}),
+    "translate": _by_kind({(_P, _P, _P): lambda c, n, a: c.translate(n, *a)}),
+    "circle": _by_kind({(_P, _P): lambda c, n, a: c.circle(n, *a), (_P, _P, _P): lambda c, n, a: c.circle3(n, *a),
+                        **{(_P, x): (lambda c, n, a: c.circle_radius(n, *a)) for x in _N}}),
+    "centre": _by_kind({(_C,): lambda c, n, a: c.centre(n, *a)}),
+    "invert": _by_kind({(_P, _C): lambda c, n, a: c.invert(n, *a)}),
+    "dist2": _by_kind({(_P, _P): lambda c, n, a: c.dist2(n, *a)}),
+    "area": _by_kind({(_P, _P, _P): lambda c, n, a: c.area(n, *a)}),
+    "segratio": _by_kind({(_P,) * 4: lambda c, n, a: c.segratio(n, *a)}),
+    **{op: _by_kind({(x, y): (lambda c, n, a, op=op: getattr(c, op)(n, *a))
+                     for x in (_R, "number") for y in (_R, "number") if (x, y) != ("number", "number")})
+       for op in ("add", "sub", "mul")},
+})
+_BUILD["second"] = _by_kind({(_C, _P, _P): lambda c, n, a: c.second_intersection(n, *a),
+                             (_C, _C, _P): lambda c, n, a: c.circles_second(n, *a)})
+
 _Conclude = Callable[[Claim, list[Any]], None]
 
 
@@ -339,6 +381,16 @@ _PROVE: dict[str, dict[tuple[str, ...], _Conclude]] = {
               ("ratio", "ratio"): lambda c, a: c.conclude_equal_ratio(*a),
               ("ratio", "number"): lambda c, a: c.conclude_equal_ratio(*a)},
 }
+# Euclidean predicates
+_PROVE.update({
+    "perpendicular": {(_L, _L): lambda c, a: c.conclude_perpendicular(*a)},
+    "parallel": {(_L, _L): lambda c, a: c.conclude_parallel(*a)},
+    "equallength": {(_P,) * 4: lambda c, a: c.conclude_equal_length(*a)},
+    "equalangle": {(_P,) * 6: lambda c, a: c.conclude_equal_angle(*a)},
+    "concyclic": {(_P,) * 4: lambda c, a: c.conclude_concyclic(*a)},
+    "equalarea": {(_P,) * 6: lambda c, a: c.conclude_equal_area(*a)},
+})
+_PROVE["equal"][("ratio", "param")] = lambda c, a: c.conclude_equal_ratio(*a)
 
 
 class _Reader:
@@ -369,6 +421,12 @@ class _Reader:
 
     def _value(self, e: Any, name: str | None = None, kind: str | None = None) -> Node:
         """The node of an expression; named when ``name`` is given, else named by its text (and shared)."""
+        if isinstance(e, _Token) and name is None and e.kind == "number":
+            return sympy.Rational(Fraction(e.text))  # type: ignore[return-value]
+        if isinstance(e, _Token) and name is None and e.text not in self.claim.nodes:
+            param = next((p for p in self.claim.parameters if str(p) == e.text), None)
+            if param is not None:
+                return param  # type: ignore[return-value]
         if isinstance(e, _Token):
             node = self._lookup(e)
             if name is None:
@@ -392,6 +450,8 @@ class _Reader:
         node = _BUILD[e.op](self.claim, key, args, e.tok)
         if e.op == "conic" and args and args[0].kind == _P:
             self.first_point[key] = args[0]
+        if e.op == "circle" and node.op in ("circle", "circle3"):  # a known point: A of circle O A, circle A B C
+            self.first_point[key] = args[1] if node.op == "circle" else args[0]
         return node
 
     def _coordinates(self, name: str, kind: str, e: _Tuple) -> Node:
@@ -496,7 +556,7 @@ class _Reader:
                                          f"{first.name} and the {second.kind} {second.name}", what.line, what.col)
             self.claim.point_on_line(name, first, second)
             return
-        if what.text == "conic" and kind == "point":
+        if what.text in ("conic", "circle") and kind == "point":
             conic = self._value(_parse_arg(cur, 0))
             if conic.kind != _C:
                 raise StatementKindError(f"'on conic' takes a conic, got the {conic.kind} {conic.name}",
@@ -535,7 +595,7 @@ class _Reader:
             ratio = self._value(_Call("crossratio", [_Token("name", a.name, 0, 0) for a in args], pred))
             self.claim.conclude_equal_ratio(ratio, -1)
             return
-        kinds = tuple("number" if isinstance(a, sympy.Rational) else a.kind for a in args)
+        kinds = tuple(_kind_of(a) for a in args)
         table = _PROVE[pred.text]
         conclude = table.get(kinds)
         if conclude is None:
