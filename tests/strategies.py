@@ -209,7 +209,9 @@ def euclidean_programs(draw, max_steps: int = 3) -> dict:
     steps = draw(st.lists(st.tuples(st.sampled_from(ops), st.integers(0, 20), st.integers(0, 20),
                                     st.integers(0, 20)), min_size=1, max_size=max_steps))
     predicates = ["collinear", "perpendicular", "parallel", "equallength", "concyclic", "equalangle", "unit",
-                  "equalarea", "area"]
+                  "equalarea", "area",
+                  # true statements on the program's points, so that proofs are compared too
+                  "foot-perpendicular", "mirror-length", "circumcentre-length", "inverse-on-ray", "rotation-angle"]
     conclusion = (draw(st.sampled_from(predicates)), draw(st.lists(st.integers(0, 30), min_size=6, max_size=6)))
     return {"steps": steps, "conclusion": conclusion}
 

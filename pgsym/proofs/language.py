@@ -27,11 +27,12 @@ starting with a letter; keywords are not names):
                 | "point" NAME "on" "line" arg [arg]            one parameter: on line l, or on line A B
                 | "point3" NAME "on" "line" arg arg
                 | "point" NAME "on" "conic" arg ["through" arg] one parameter; through a point of the conic
+                | "point" NAME "on" "circle" arg ["through" arg] the same for a circle (its known point by default)
                 | "prove" PREDICATE arg+
     PLURAL     := points | lines | points3 | planes | points1 | conics | matrices | matrices4 | matrices2
     KIND       := point | line | point3 | plane | line3 | conic | point1 | ratio | matrix
     expr       := arg | OPERATION arg+
-    arg        := NAME | "(" expr ")" | "(" coord ("," coord)+ ")"
+    arg        := NAME | "(" expr ")" | "(" coord ("," coord)+ ")" | ["-"] NUMBER
     coord      := ["-"] (NUMBER | NAME)                         NUMBER: digits ["/" digits]
 
 Operations (chosen by the kinds of their arguments):
@@ -51,11 +52,38 @@ Operations (chosen by the kinds of their arguments):
 ``dual``           conic → its dual conic (the matrix adj C)
 =================  =================================================================================
 
+Euclidean operations (relative to the absolute: l∞ and the circular points; every formula is right for
+any homogeneous representative; each states its non-degeneracy condition in words):
+
+=================  =================================================================================
+``parallel``       line l, point P → the line through P parallel to l
+``perpendicular``  line l, point P → the line through P perpendicular to l
+``bisector``       A B → the perpendicular bisector of the segment AB (A ≠ B)
+``foot``           point P, line l → the foot of the perpendicular from P to l
+``reflect``        X P → X reflected in the point P; X l → X reflected in the line l
+``rotate``         X O c s → X rotated about O by the angle with cos c, sin s (numbers with
+                   c² + s² = 1, checked; or parameter names, then c² + s² = 1 is a hypothesis)
+``translate``      X A B → X moved by the vector from A to B
+``circle``         O A → centre O through A; A B C → through three points; O r → centre O, squared
+                   radius r (a number or a parameter name)
+``centre``         circle (or conic) → its centre, the pole of l∞
+``second``         circles K L, common point A → their second common point (on the radical axis)
+``invert``         X K → the inverse of X in the circle K
+``dist2``          A B → the squared distance (a ratio)
+``area``           A B C → the signed area of the triangle (a ratio; positive counter-clockwise)
+``segratio``       A B C D → the signed ratio AB / CD of parallel segments (a ratio)
+``add sub mul``    two ratios (or a ratio and a number) → their sum, difference, product
+=================  =================================================================================
+
 Predicates of ``prove``: ``collinear`` (three points of P² or P³), ``concurrent`` (three lines),
 ``coplanar`` (four points of P³), ``on`` (point on line, plane, line3 or conic), ``tangent`` (line
 touching a conic), ``meet`` (two lines of P³ meet), ``conconic`` (six points on a conic, or six lines
 tangent to one), ``equal`` (two objects equal up to scale; two ratios, or a ratio and a number),
-``harmonic`` (A B C D: the cross-ratio is −1). Several ``prove`` lines must all hold. Parts of the Python
+``harmonic`` (A B C D: the cross-ratio is −1); Euclidean: ``perpendicular`` and ``parallel`` (two lines),
+``equallength`` (A B C D: AB and CD equally long), ``equalangle`` (A B C D E F: the oriented angle ∠ABC, from
+line BA to line BC, equals ∠DEF modulo π), ``concyclic`` (four points on one circle, or on one line: the
+line with l∞ is the degenerate member of the circles' family), ``equalarea`` (A B C D E F: equal signed
+areas). Several ``prove`` lines must all hold. Parts of the Python
 API with no statement form: ``formula`` (an arbitrary function), ``combine`` with given coefficients,
 equation hypotheses (``assume_zero``), exact (not projective) equality, ranks and degrees of freedom.
 

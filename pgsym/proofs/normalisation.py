@@ -19,6 +19,18 @@ three of P¹; or free lines / planes, dually) are a fixed frame:
 * the configurations with the chosen points in general position are Zariski-dense, so a
   polynomial that vanishes on them vanishes identically.
 
+Euclidean claims use smaller groups (``Operation.group``): the affine group (three free points to
+(0, 0), (1, 0), (0, 1); midpoints, parallels, centres, signed areas), the orientation-preserving
+similarities (two free points to (0, 0), (1, 0); perpendiculars, circles, inversions, rotations by a
+fixed angle — no reflection is used, so oriented angles and signed areas keep their sign) and the
+orientation-preserving isometries (one point to (0, 0), a second onto the x-axis; circles of a fixed
+radius). The frame of the largest group that every construction commutes with and that keeps the
+conclusion is used. A conclusion on ratios is kept when both sides change by the same factor: under a
+similarity of ratio k a squared distance gains k², a signed area det M = k², a ratio of parallel
+segments nothing, so ``|AB|² = |AC|² + |CB|²`` and ``area ABC = area DEF`` keep the similarity frame
+while ``|AB|² = 1`` keeps only the isometry frame (on the frame A = (0, 0), B = (1, 0) it would be
+"proved"); under an affine map a signed area gains det M, a squared distance no such factor.
+
 Anything else — a fixed object (the line at infinity, the circular points), a matrix, a
 formula, a combination with fixed coefficients, an equation hypothesis, a conclusion on raw
 coordinates — keeps the claim as it is: :func:`normalise` then says why.
@@ -42,7 +54,7 @@ import sympy
 
 from .claims import Claim, Node
 
-__all__ = ["FRAMES", "Normalisation", "normalise"]
+__all__ = ["FRAMES", "GROUPS", "Normalisation", "normalise"]
 
 #: affine frames (last coordinate 1, so they fit free points in the chart w = 1), by kind: no three of the
 #: four points of P² collinear, no four of the five points of P³ coplanar, the three points of P¹ distinct
@@ -91,7 +103,13 @@ class Normalisation:
         >>> Normalisation("projective", ["A"], "point", {}, "", frame=[(0, 0, 1)]).describe()[:31]
         'without loss of generality A = '
         """
-        where = ", ".join(f"{n} = {tuple(f)}" for n, f in zip(self.objects, self.frame, strict=True))
+        def shown(f: tuple[Any, ...]) -> str:
+            # a metric frame in the chart w = 1 reads as inhomogeneous coordinates, e.g. A = (0, 0)
+            if self.group != "projective" and len(f) == 3 and f[-1] == 1:
+                return f"({f[0]}, {f[1]})"
+            return str(tuple(f))
+
+        where = ", ".join(f"{n} = {shown(f)}" for n, f in zip(self.objects, self.frame, strict=True))
         return f"without loss of generality {where} ({self.group} frame): {self.justification}"
 
 
@@ -234,6 +252,13 @@ def _obstacle(claim: Claim, counts: Counter, group: str = "projective") -> str |
             if group == "projective":
                 return f"the conclusion '{c.text}' compares ratios that are not cross-ratios"
             return f"the conclusion '{c.text}' compares ratios that the group scales differently"
+        if c.kind == "proportional" and any(a.kind in ("ratio", "scalar") for a in c.args):
+            # two ratios "equal up to scale" are equal ratios: the group must scale both alike (|AB|⁴ ∝ |AB|² is
+            # no invariant statement, though it holds on the frame A = (0, 0), B = (1, 0))
+            r, s = (_character(a, group) if a.kind == "ratio" else None for a in c.args)
+            if r is not None and s is not None and (r == s or _ZERO in (r, s)):
+                continue
+            return f"the conclusion '{c.text}' compares quantities that the group may scale differently"
         if c.kind not in _INVARIANT_CONCLUSIONS or c.kind == "zero":
             return f"the conclusion '{c.text}' is not {_INVARIANT_WORDS[group]}"
     for node in claim.nodes.values():
@@ -330,8 +355,8 @@ def normalise(claim: Claim) -> tuple[Normalisation | None, str]:
     >>> c = Claim("unit", "a distance equal to a number: not scale-invariant")
     >>> A, B = c.free_point("A"), c.free_point("B")
     >>> c.conclude_equal_ratio(c.dist2("d", A, B), 1)
-    >>> normalise(c)[0].describe()[:63]
-    'without loss of generality A = (0, 0, 1), B = (B_x, 0, 1) (eucl'
+    >>> normalise(c)[0].describe()[:57]
+    'without loss of generality A = (0, 0), B = (B_x, 0) (eucl'
     """
     counts = _parameter_counts(claim)
     why = _obstacle(claim, counts)
