@@ -430,3 +430,33 @@ def test_numbers_and_parameters_are_arguments_of_the_metric_constructions():
     assert c.nodes["C"].data == (sympy.Rational(-3, 5), sympy.Rational(4, 5))
     assert c.nodes["K"].data == (sympy.Symbol("r"),)
     assert prove(c).proved  # |AC| = |AB|: 2|AB|² = |AC|² + |AB|²
+
+
+def test_ratios_equal_up_to_scale_need_the_same_scaling():
+    # |AB|⁴ ∝ |AB|² means |AB|² ∈ {0, 1}: false, yet true on the frame A = (0, 0), B = (1, 0)
+    c = Claim("square", "|AB|⁴ = |AB|²", expected=False)
+    A, B = c.free_point("A"), c.free_point("B")
+    d = c.dist2("d", A, B)
+    c.conclude_proportional(c.mul("dd", d, d), d)
+    n, why = normalise(c)
+    assert n is not None and n.group == "euclidean"  # isometries scale nothing, so that frame is safe
+    assert _exact_pass(c, _Deadline(10), [], None, n)[0] == "nonzero"
+    assert prove(c).refuted
+
+
+@pytest.mark.parametrize(("text", "status", "words"), [
+    # a rotation by a parameter angle: c² + s² = 1 is a hypothesis (Gröbner basis), no frame
+    ("params c s\npoints A B\npoint C = rotate B A c s\nprove equallength A B A C", "proved", "Gröbner"),
+    ("params c s\npoints A B\npoint C = rotate B A c s\nprove equallength A B B C", "false", "hypothesis"),
+    # a circle of squared radius 0 is no circle: the condition fails for every value of the parameters
+    ("points O A\nconic K = circle O 0\nprove on A K", "degenerate", "K has nonzero radius (0 ≠ 0)"),
+    # a quarter turn: area ABC = |AB|²/2, positive counter-clockwise, negative for the other turn
+    ("points A B\npoint C = rotate B A 0 1\nprove equal (area A B C) (mul (dist2 A B) 1/2)", "proved", "polynomial"),
+    ("points A B\npoint C = rotate B A 0 -1\nprove equal (area A B C) (mul (dist2 A B) 1/2)", "false", "random"),
+])
+def test_rotations_radii_and_orientation(text, status, words):
+    v = prove(parse_statement(text))
+    assert v.status == status
+    assert words in (v.method + " " + (v.reason or ""))
+    if v.refuted:
+        assert v.counterexample.recheck()

@@ -92,8 +92,10 @@ class Operation:
       counterpart), ``exact`` mapping coefficient data to SymPy rationals;
     * ``description(names, data)``: how the construction reads, e.g. ``A × B``;
     * ``group``: the group whose action the construction commutes with (``"projective"``: mapping the
-      arguments by any homography maps the result by it; ``"affine"``, ``"similarity"`` for constructions
-      that use l∞ or the circular points), or ``None`` when its value depends on the representatives or on
+      arguments by any homography maps the result by it; ``"affine"`` for constructions that use l∞ (midpoint,
+      parallel, centre, signed area), ``"similarity"`` for those that use the circular points (perpendicular,
+      circles, inversion, squared distance, angles; they commute with every orientation-preserving
+      similarity), ``"euclidean"`` for fixed lengths), or ``None`` when its value depends on the representatives or on
       data the group does not act on (``combine`` with coefficients, a matrix applied, a formula). Choosing
       coordinates without loss of generality is allowed only under a group every construction commutes with.
       A construction with a free parameter (a point on a line or on a conic) counts as commuting when the
