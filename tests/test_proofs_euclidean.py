@@ -139,6 +139,12 @@ def test_a_few_values_by_hand():
     for x, want in ((3, 3), (2, 5)):
         p = OPERATIONS["invert"].formula(None, [(x, 0, 1), K], int)
         assert (Fraction(p[0], p[2]), p[1]) == (want, 0)
+    # K: x² + y² − 2x − 2y = 0 and L: x² + y² − x − 3y = 0 (through (0, 0), (1, 3), (−1, 1)) meet at (0, 0) and,
+    # on the radical axis K − L = −x + y = 0, where 2x² − 4x = 0: at (2, 2); circles scaled by 3 and −2, A = (0, 0, 5)
+    K = ((3, 0, -3), (0, 3, -3), (-3, -3, 0))
+    L = ((-2, 0, 1), (0, -2, 3), (1, 3, 0))
+    x = OPERATIONS["circles_second"].formula(None, [K, L, (0, 0, 5)], int)
+    assert (Fraction(x[0], x[2]), Fraction(x[1], x[2])) == (2, 2)
 
 
 # -- theorems ------------------------------------------------------------------------------------------------
@@ -438,7 +444,7 @@ def test_ratios_equal_up_to_scale_need_the_same_scaling():
     A, B = c.free_point("A"), c.free_point("B")
     d = c.dist2("d", A, B)
     c.conclude_proportional(c.mul("dd", d, d), d)
-    n, why = normalise(c)
+    n, _ = normalise(c)
     assert n is not None and n.group == "euclidean"  # isometries scale nothing, so that frame is safe
     assert _exact_pass(c, _Deadline(10), [], None, n)[0] == "nonzero"
     assert prove(c).refuted
