@@ -605,7 +605,7 @@ class Claim:
         """
         return self._construct("circle", name, (o, a))
 
-    circle_centre_point = circle
+    circle_centre_point = circle_center_point = circle
 
     def circle_radius(self, name: str, o: Any, r2: Any = None) -> Node:
         """The circle with centre O and squared radius ``r2`` (a number or a parameter; default a new
@@ -634,6 +634,8 @@ class Claim:
     def centre(self, name: str, k: Any) -> Node:
         """The centre of a circle (or conic): the pole of the line at infinity, ``adj(K) (0, 0, 1)ᵀ``."""
         return self._construct("centre", name, (k,))
+
+    center = centre
 
     def point_on_circle(self, name: str, k: Any, p: Any, t: Any = None) -> Node:
         """A point of the circle K with one parameter (through its known point P): :meth:`point_on_conic`."""
