@@ -500,3 +500,18 @@ def test_rotations_radii_and_orientation(text, status, words):
     assert words in (v.method + " " + (v.reason or ""))
     if v.refuted:
         assert v.counterexample.recheck()
+
+
+def test_concyclic_points_that_always_lie_on_one_line_are_degenerate_not_proved():
+    # B, C and the foot X of D on BC are collinear for every choice of the points, so det(x² + y², x, y, 1) of
+    # B, B, C, X vanishes identically although no circle passes through them: a statement about no circle
+    c = Claim("line", "B, B, C and a point of BC on one circle")
+    _A, B, C, D = (c.free_point(n) for n in "ABCD")
+    X = c.foot("X", D, c.join("l", C, B))
+    c.conclude_concyclic(B, B, C, X)
+    v = prove(c)
+    assert v.status == "degenerate" and "B, B, C, X do not all lie on one line" in v.reason
+    # four points of which three are collinear only by accident are still decided: here refuted
+    c = Claim("accident", "A, B, C, D on one circle")
+    c.conclude_concyclic(*(c.free_point(n) for n in "ABCD"))
+    assert prove(c).refuted

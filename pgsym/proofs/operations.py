@@ -21,6 +21,7 @@ True
 
 from __future__ import annotations
 
+import itertools
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 from typing import Any
@@ -817,7 +818,10 @@ _EUCLIDEAN = (
          lambda n, name, d: [], None, None, group="affine", constructible=False, conclusion=True),
     _sim("concyclic", (_POINT,) * 4, "scalar", _concyclic_q,
          lambda n, d: f"det of the rows (x² + y², xw, yw, w²) of {', '.join(n)}",
-         lambda n, name, d: [], None, None, constructible=False, conclusion=True),
+         # four points of one line make the determinant vanish too: "concyclic" is then no statement about a circle
+         lambda n, name, d: [f"{', '.join(n)} do not all lie on one line"],
+         lambda node, value, a: [[alg.det(list(t)) for t in itertools.combinations(a, 3)]], None,
+         constructible=False, conclusion=True),
     _sim("equal_angle", (_POINT,) * 6, "scalar", _equalangle_q,
          lambda n, d: f"tan ∠{''.join(n[:3])} − tan ∠{''.join(n[3:])} (numerators)",
          lambda n, name, d: [f"{n[1]} ≠ {n[0]}", f"{n[1]} ≠ {n[2]}", f"{n[4]} ≠ {n[3]}", f"{n[4]} ≠ {n[5]}"],
