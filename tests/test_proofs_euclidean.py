@@ -511,7 +511,7 @@ def test_concyclic_points_that_always_lie_on_one_line_are_degenerate_not_proved(
     c.conclude_concyclic(B, B, C, X)
     v = prove(c)
     assert v.status == "degenerate" and "B, B, C, X do not all lie on one line" in v.reason
-    # four points of which three are collinear only by accident are still decided: here refuted
+    # four free points are decided as usual: refuted
     c = Claim("accident", "A, B, C, D on one circle")
     c.conclude_concyclic(*(c.free_point(n) for n in "ABCD"))
     assert prove(c).refuted
