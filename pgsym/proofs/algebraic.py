@@ -60,7 +60,7 @@ from ..errors import ObjectTypeError, PgsymError
 from ..exact import is_zero
 from ..exact import sign as exact_sign
 from .claims import Claim, Node
-from .polynomials import PolynomialRing
+from .polynomials import PolynomialRing, default_backend
 
 __all__ = [
     "MAX_POLYGON",
@@ -451,7 +451,7 @@ class _Tower:
     def __init__(self, claim: Claim, gens: Sequence[sympy.Symbol]) -> None:
         roots = roots_of(claim)
         self.order = [r.symbol for r in reversed(roots)]
-        self.R = PolynomialRing([*self.order, *gens], integral=False, order="lex", backend="sympy")
+        self.R = PolynomialRing([*self.order, *gens], integral=False, order="lex", backend=default_backend())
         self.basis: list[Any] = []
         self.text: list[str] = []
 
@@ -468,7 +468,11 @@ class _Tower:
     def reduce(self, p: Any) -> Any:
         if not self.basis or isinstance(p, int):
             return p
-        return p.rem(self.basis)
+        if self.R.backend == "sympy":
+            return p.rem(self.basis)
+        for g in reversed(self.basis):  # the latest root is the highest variable: its remainder first
+            p = divmod(p, g)[1]
+        return p
 
 
 def _evaluate(claim: Claim, scalar: Callable[[Any], Any], tower: _Tower, deadline: Any) -> dict[Node, Any]:
@@ -505,6 +509,10 @@ def _zeta_value(modulus: int) -> sympy.Expr:
     z = sympy.Symbol("z")
     target = complex(math.cos(2 * math.pi / modulus), math.sin(2 * math.pi / modulus))
     roots = sympy.Poly(sympy.cyclotomic_poly(modulus, z), z).all_roots()
+    angle = 2 * sympy.pi / modulus
+    radicals = sympy.cos(angle) + sympy.I * sympy.sin(angle)
+    if not radicals.has(sympy.cos, sympy.sin):
+        return radicals
     return min(roots, key=lambda r: abs(complex(r.evalf(30)) - target))  # selection only; roots differ by > 0.1
 
 
@@ -546,23 +554,30 @@ def _branches(claim: Claim, tower: _Tower, values: dict[Node, Any], point: dict[
         yield _Branch(sgn, sub, named, text or "the principal root of unity")
 
 
-def _vanishes(R: PolynomialRing, p: Any, sub: dict[sympy.Symbol, Any]) -> bool:
+def _vanishes(R: PolynomialRing, p: Any, sub: dict[sympy.Symbol, Any], tower: _Tower | None = None) -> bool:
+    if tower is not None:  # one root of unity and nothing else: Q[ζ]/Φ_M is the field Q(ζ), zero iff remainder zero
+        return tower.reduce(p) == 0
     e = _sympy_value(R, p, sub)
     return bool(e == 0) if e.is_Rational else is_zero(e)
 
 
 def _check_branch(claim: Claim, R: PolynomialRing, values: dict[Node, Any], reqs: list[tuple[str, list[Any]]],
-                  branch: _Branch, deadline: Any) -> tuple[str, list[Any]]:
+                  branch: _Branch, deadline: Any, tower: _Tower | None = None) -> tuple[str, list[Any]]:
     from .engine import _conclusion_polys
+
+    roots = roots_of(claim)
+    if tower is not None and not (len(roots) == 1 and roots[0].kind == "unity"):
+        tower = None
+    vanishes = (lambda p, sub: _vanishes(R, p, sub, tower))
 
     for text, polys in reqs:
         deadline.check("checking a branch")
-        if all(_vanishes(R, p, branch.values) for p in polys):
+        if all(vanishes(p, branch.values) for p in polys):
             return "degenerate", [text]
     residuals = []
     for _label, poly in _conclusion_polys(claim, values):
         deadline.check("evaluating the conclusion on a branch")
-        if not _vanishes(R, poly, branch.values):
+        if not vanishes(poly, branch.values):
             residuals.append(_sympy_value(R, poly, branch.values))
     return ("fails", residuals) if residuals else ("holds", [])
 
@@ -664,9 +679,14 @@ def prove_algebraic(claim: Claim, timeout: float | None = 10.0, seed: int = 0, i
                 steps.append(f"{label} is not in the ideal, but c·({label}) is for every polynomial c of the "
                              f"condition {needed}: it vanishes wherever {needed}")
             if failing is None:
+                from .operations import flat
+
+                entries = [p for v in values.values() for p in flat(v) if not isinstance(p, int)]
                 certificate = Certificate("ideal membership modulo the defining equations (Wu's method: a "
                                           "triangular set with unit initials)", R.field + f"[{len(R.symbols)} "
-                                          "variables, lex, roots first]", steps, 0)
+                                          "variables, lex, roots first]", steps,
+                                          max((R.nterms(p) for p in entries), default=0), backend=R.backend,
+                                          largest_degree=max((R.degree(p) for p in entries), default=0))
                 return done(Status.PROVED, method=certificate.method, certificate=certificate,
                             conditions=conditions, branches=_every_root(roots))
             return _sample(claim, failing, R, rng=_rng(claim, seed), instances=instances, deadline=deadline,
@@ -703,7 +723,7 @@ def _sample(claim: Claim, failing: tuple[str, Any], R0: PolynomialRing, rng: ran
         branches = list(_branches(claim, tower, values, point))
         if not branches:
             continue
-        results = [(b, _check_branch(claim, tower.R, values, reqs, b, deadline)) for b in branches]
+        results = [(b, _check_branch(claim, tower.R, values, reqs, b, deadline, tower)) for b in branches]
         if any(kind == "degenerate" for b, (kind, _) in results if b.named):
             continue
         for b, (kind, residuals) in results:
