@@ -568,7 +568,9 @@ def _check_branch(claim: Claim, R: PolynomialRing, values: dict[Node, Any], reqs
     roots = roots_of(claim)
     if tower is not None and not (len(roots) == 1 and roots[0].kind == "unity"):
         tower = None
-    vanishes = (lambda p, sub: _vanishes(R, p, sub, tower))
+
+    def vanishes(p: Any, sub: dict[sympy.Symbol, Any]) -> bool:
+        return _vanishes(R, p, sub, tower)
 
     for text, polys in reqs:
         deadline.check("checking a branch")
@@ -692,8 +694,8 @@ def prove_algebraic(claim: Claim, timeout: float | None = 10.0, seed: int = 0, i
             return _sample(claim, failing, R, rng=_rng(claim, seed), instances=instances, deadline=deadline,
                            done=done, counterexample=Counterexample)
     except _Timeout as err:
-        return done(Status.UNKNOWN, reason=f"timed out after {timeout} s while {err.args[0] if err.args else 'working'}",
-                    branches="no decision")
+        stage = err.args[0] if err.args else "working"
+        return done(Status.UNKNOWN, reason=f"timed out after {timeout} s while {stage}", branches="no decision")
     except PgsymError as err:
         return done(Status.UNKNOWN, reason=f"the exact evaluation could not decide: {err}", branches="no decision")
 

@@ -283,8 +283,9 @@ class Verdict:
             lines.append("  provided that: " + "; ".join(c.text for c in self.conditions))
         if self.counterexample is not None:
             lines.append("  counterexample: " + ", ".join(f"{k} = {v}" for k, v in self.counterexample.values.items()))
-            if self.counterexample.branch:
-                lines.append("  on the roots: " + ", ".join(f"{k} = {v}" for k, v in self.counterexample.branch.items()))
+            branch = self.counterexample.branch
+            if branch:
+                lines.append("  on the roots: " + ", ".join(f"{k} = {v}" for k, v in branch.items()))
         if self.branches:
             lines.append(f"  roots: {self.branches}")
         if self.reason:
