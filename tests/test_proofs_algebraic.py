@@ -135,18 +135,58 @@ def test_two_internal_bisectors_and_one_external_are_not_concurrent():
         assert sympy.sympify(value) == sympy.sqrt((p[0] - q[0]) ** 2 + (p[1] - q[1]) ** 2)
 
 
-def test_a_statement_true_on_the_internal_branch_only_is_not_proved():
-    # A = (0, 0), B = (t², 0), C = (0, 1): |AB| = t², |AC| = 1, so the root d_A_B has the two components ±t²;
-    # the internal bisector at A has the direction (1, 0) + (0, 1) and passes through (1, 1), the external
-    # one (on the other component) has the direction (1, −1) and does not.
+def test_a_statement_true_on_the_internal_branch_only_is_proved_for_that_branch_only():
+    # A = (0, 0), B = (t², 0), C = (0, 1): |AB| = t², |AC| = 1 are polynomials, so the named branch is rational:
+    # d_A_B = t², d_A_C = 1. The internal bisector at A has the direction (1, 0) + (0, 1) and passes through
+    # (1, 1); with d_A_C = −1 it is the external one, direction (1, −1), which does not.
     c = Claim("one-branch", "the internal bisector of ∠BAC passes through (1, 1)")
     (t,) = c.params("t")
     A, B, C = c.point("A", 0, 0), c.point("B", t * t, 0), c.point("C", 0, 1)
     c.conclude_incident(c.point("P", 1, 1), c.angle_bisector("a", B, A, C))
     v = prove(c)
+    assert v.proved
+    assert v.branches.startswith("proved for the named branch only (d_A_B = t**2, d_A_C = 1")
+    assert "d_A_C = -1, aᵀP does not vanish" in v.branches
+
+
+def test_equal_lengths_make_the_named_branch_rational():
+    # B = (t, 0), C = (0, t): |AB| = |AC| = |t|, so d_A_C = d_A_B on the named branch (whatever the sign of t):
+    # the internal bisector has the direction d_A_B·(t, 0) + d_A_B·(0, t), through (1, 1)
+    c = Claim("isosceles", "the internal bisector of a right isosceles angle at the origin is y = x")
+    (t,) = c.params("t")
+    A, B, C = c.point("A", 0, 0), c.point("B", t, 0), c.point("C", 0, t)
+    c.conclude_incident(c.point("P", 1, 1), c.angle_bisector("a", B, A, C))
+    v = prove(c)
+    assert v.proved and v.branches.startswith("proved for the named branch only (d_A_C = d_A_B")
+
+
+def test_a_named_branch_without_an_evident_sign_stays_unknown():
+    # B = (t, 0), C = (0, t³): d_A_B = ±t, d_A_C = ±t³, and the named branch (|t|, |t|³) is d_A_B·d_A_C = t⁴ > 0,
+    # a union of two components the engine does not find: it holds there at every instance but is not proved
+    c = Claim("not-evident", "the internal bisector of ∠BAC passes through (1, 1)")
+    (t,) = c.params("t")
+    A, B, C = c.point("A", 0, 0), c.point("B", t, 0), c.point("C", 0, t**3)
+    c.conclude_incident(c.point("P", 1, 1), c.angle_bisector("a", B, A, C))
+    v = prove(c)
     assert v.status == "unknown" and not v.proved
-    assert v.branches.startswith("holds on the named branch only")
+    assert v.branches.startswith("holds on the named branch only (a is the internal bisector of ∠BAC)")
     assert "not proved" in v.branches and "a is the external bisector of ∠BAC" in v.branches
+
+
+def test_wu_half_angle_parametrisation_proves_the_internal_bisector():
+    # B = 0, A = p²(1 − t², 2t), C = q²(1 − u², 2u): |BA| = p²(1 + t²), |BC| = q²(1 + u²) (every configuration
+    # has this form); the internal bisector passes through B + (1 − t², 2t)/(1 + t²) + (1 − u², 2u)/(1 + u²)
+    c = Claim("wu", "the internal bisector through the sum of the unit vectors")
+    p, q, t, u = c.params("p q t u")
+    B = c.point("B", 0, 0)
+    A = c.point("A", p * p * (1 - t * t), 2 * p * p * t)
+    C = c.point("C", q * q * (1 - u * u), 2 * q * q * u)
+    E = c.point("E", (1 - t * t) * (1 + u * u) + (1 - u * u) * (1 + t * t), 2 * t * (1 + u * u) + 2 * u * (1 + t * t),
+                (1 + t * t) * (1 + u * u))
+    c.conclude_incident(E, c.angle_bisector("b", A, B, C))
+    v, elapsed = timed(c)
+    assert v.proved and elapsed < 10
+    assert "d_A_B = p**2*(t**2 + 1)" in v.branches and "does not vanish" in v.branches
 
 
 def test_the_same_statement_for_the_external_bisector_fails_on_the_named_branch():

@@ -691,6 +691,15 @@ def prove_algebraic(claim: Claim, timeout: float | None = 10.0, seed: int = 0, i
                                           largest_degree=max((R.degree(p) for p in entries), default=0))
                 return done(Status.PROVED, method=certificate.method, certificate=certificate,
                             conditions=conditions, branches=_every_root(roots))
+            named = _named_branch_proof(claim, values, tower, deadline)
+            if named is not None:
+                text, lines = named
+                certificate = Certificate("ideal membership on the named branch: the named roots replaced by their "
+                                          "rational values there, then reduction modulo the remaining equations",
+                                          R.field + f"[{len(R.symbols)} variables, lex, roots first]",
+                                          [*steps, *lines], 0, backend=R.backend)
+                return done(Status.PROVED, method=certificate.method, certificate=certificate,
+                            conditions=conditions, branches=text)
             return _sample(claim, failing, R, rng=_rng(claim, seed), instances=instances, deadline=deadline,
                            done=done, counterexample=Counterexample)
     except _Timeout as err:
@@ -698,6 +707,101 @@ def prove_algebraic(claim: Claim, timeout: float | None = 10.0, seed: int = 0, i
         return done(Status.UNKNOWN, reason=f"timed out after {timeout} s while {stage}", branches="no decision")
     except PgsymError as err:
         return done(Status.UNKNOWN, reason=f"the exact evaluation could not decide: {err}", branches="no decision")
+
+
+def _evidently_positive(e: sympy.Expr, gens: Sequence[sympy.Symbol]) -> bool:
+    """Every term has even exponents and a positive coefficient: positive wherever it is not zero."""
+    poly = sympy.Poly(e, *gens) if gens else None
+    if poly is None:
+        return bool(e > 0)
+    return not poly.is_zero and all(c > 0 and all(k % 2 == 0 for k in m) for m, c in poly.terms())
+
+
+def _rational_root(q: sympy.Expr, gens: Sequence[sympy.Symbol]) -> sympy.Expr | None:
+    """s with s² = q when q is the square of a polynomial with rational coefficients (else None)."""
+    coeff, factors = sympy.factor_list(q, *gens) if gens else (q, [])
+    if coeff < 0 or any(e % 2 for _, e in factors):
+        return None
+    c = sympy.sqrt(coeff)
+    if not c.is_Rational:
+        return None
+    return c * sympy.Mul(*(f ** (e // 2) for f, e in factors))
+
+
+def _named_branch_proof(claim: Claim, values: dict[Node, Any], tower: _Tower, deadline: Any
+                        ) -> tuple[str, list[str]] | None:
+    """Prove the conclusion on the named branch when that branch is rational: a named root whose square is the
+    square of a polynomial s (e.g. |AB| for B = A + p²(1 − t², 2t), the tangent half-angle of Wu's school), or
+    equals the square of an earlier root. The sign of the named root is then evident (s·w_A w_B a sum of even
+    powers with positive coefficients), the root is replaced by ±s, and the conclusion must reduce to zero."""
+    from .engine import _conclusion_polys
+
+    R = tower.R
+    roots = roots_of(claim)
+    gens = [g for g in R.symbols if g not in {r.symbol for r in roots}]
+    sub: dict[sympy.Symbol, sympy.Expr] = {}
+    lines = []
+    squares: dict[sympy.Symbol, sympy.Expr] = {}
+    orients: dict[sympy.Symbol, sympy.Expr] = {}
+    for r in roots:
+        deadline.check("looking for a rational named branch")
+        if r.kind == "unity":
+            continue
+        q = R.to_expr(tower.reduce(r.square(values)))
+        squares[r.symbol] = q
+        if not r.named or q.free_symbols & {x.symbol for x in roots}:
+            continue
+        orient = R.to_expr(r.orient(values)) if r.orient is not None else sympy.Integer(1)
+        orients[r.symbol] = orient
+        candidates = []  # (value up to sign, an expression with the sign of value·orient on the named branch)
+        s = _rational_root(q, gens)
+        if s is not None:
+            candidates.append((s, s * orient))
+        # the same square as an earlier length d_j: d = ±d_j; on the named branch d_j·orient_j > 0, so the sign of
+        # d_j·orient is that of orient_j·orient (or d_j's value there, when it has one)
+        same = next((t for t, qt in squares.items() if t != r.symbol and sympy.expand(qt - q) == 0), None)
+        if same is not None:
+            candidates.append((sub[same], sub[same] * orient) if same in sub else (same, orients[same] * orient))
+        known = [*gens, *(x for x in squares if x != r.symbol)]
+        for value, sign_of in candidates:
+            product = sympy.expand(sign_of)
+            if _evidently_positive(product, known):
+                sub[r.symbol] = value
+                break
+            if _evidently_positive(-product, known):
+                sub[r.symbol] = -value
+                break
+        else:
+            continue
+        lines.append(f"on the named branch {r.symbol} = {sub[r.symbol]} (its square is {r.symbol}² = {q}; "
+                     f"its sign is that of the named root, as ({sub[r.symbol]})·({orient}) > 0)")
+    if not sub:
+        return None
+    others = []
+    for label, poly in _conclusion_polys(claim, values):
+        deadline.check("reducing the conclusion on the named branch")
+        expr = R.to_expr(tower.reduce(poly))
+        named = tower.reduce(R(sympy.expand(expr.xreplace(sub))))
+        if named != 0:
+            return None
+        lines.append(f"{label} reduces to 0 on the named branch")
+        for signs in itertools.product((1, -1), repeat=len(sub)):
+            flipped = {k: e * v for e, (k, v) in zip(signs, sub.items(), strict=True)}
+            if not others and tower.reduce(R(sympy.expand(expr.xreplace(flipped)))) != 0:
+                others.append((label, flipped))
+    words = ", ".join(f"{k} = {v}" for k, v in sub.items())
+    if others:
+        label, flipped = others[0]
+        other = f"on the other branch {', '.join(f'{k} = {v}' for k, v in flipped.items())}, {label} does not vanish"
+    else:
+        other = "it holds with every sign of these roots as well"
+    return (f"proved for the named branch only ({words}: {_named_words(claim, sub)}); {other}", lines)
+
+
+def _named_words(claim: Claim, sub: dict[sympy.Symbol, sympy.Expr]) -> str:
+    signs = {r.symbol: 1 for r in roots_of(claim)}
+    readings = [f(signs) for f in _data(claim).readings]
+    return "; ".join(readings) or "the named roots"
 
 
 def _every_root(roots: list[Root]) -> str:
@@ -749,7 +853,8 @@ def _sample(claim: Claim, failing: tuple[str, Any], R0: PolynomialRing, rng: ran
                     reason=f"{label} is not in the ideal of the defining equations; the conclusion holds on the "
                            f"named branch at {seen} random instances, but fails on another branch, e.g. at {at} "
                            f"with {b.text}: not proved",
-                    branches=f"holds on the named branch only ({PRINCIPAL}) at {seen} random instances; not proved; "
+                    branches=f"holds on the named branch only ({_named_words(claim, {})}) at {seen} random instances; "
+                             "not proved; "
                              f"fails on the branch {b.text}")
     return done(Status.UNKNOWN,
                 reason=f"{label} has the nonzero remainder {R0.text(poly)[:200]} modulo the defining equations, "
