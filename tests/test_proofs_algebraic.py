@@ -12,11 +12,12 @@ import time
 import pytest
 import sympy
 from hypothesis import given, settings
-from strategies import integers
+from strategies import homogeneous_vectors, integers
 
 from pgsym.errors import ObjectTypeError
 from pgsym.proofs import Claim, prove
-from pgsym.proofs.algebraic import _cyclotomic_combination, roots_of
+from pgsym.proofs.algebraic import _branches, _cyclotomic_combination, _evaluate, _Tower, roots_of
+from pgsym.proofs.engine import _Deadline
 from pgsym.proofs.errors import StatementKindError, StatementSyntaxError
 from pgsym.proofs.language import parse_statement
 
@@ -353,6 +354,54 @@ def test_cosine_and_sine_of_a_rational_angle_as_polynomials_in_a_root_of_unity(k
         terms = _cyclotomic_combination(m, [k], imaginary)
         value = sum(c * zeta**e for e, c in terms)
         assert abs(complex(sympy.N(value - expected, 30))) < 1e-20
+
+
+@settings(max_examples=30, deadline=None)
+@given(homogeneous_vectors(3, allow_ideal=False), homogeneous_vectors(3, allow_ideal=False),
+       homogeneous_vectors(3, allow_ideal=False))
+def test_the_named_branch_is_the_internal_bisector_for_any_representatives(a, b, cc):
+    # points with any nonzero w (negative ones too): on the named branch the engine's line is the internal
+    # bisector computed here from the inhomogeneous points with SymPy's square roots (and the external one
+    # on the branch with one length negated)
+    pa, pb, pc = ([sympy.Rational(v[0], v[2]), sympy.Rational(v[1], v[2])] for v in (a, b, cc))
+    if pa == pb or pc == pb:
+        return
+    c = Claim("bisector", "x")
+    A, B, C = (c.point(n, *v) for n, v in zip("ABC", (a, b, cc), strict=True))
+    c.angle_bisector("b", A, B, C)
+    tower = _Tower(c, [])
+    values = _evaluate(c, lambda e: tower.R(e), tower, _Deadline(None))
+    line = values[c.nodes["b"]]
+    for branch in _branches(c, tower, values, {}):
+        mine = sympy.Matrix([tower.R.to_expr(v).xreplace(branch.values) if not isinstance(v, int) else v
+                             for v in line])
+        internal = all(s > 0 for s in branch.signs.values()) or all(s < 0 for s in branch.signs.values())
+        exact = bisector_line(pa, pb, pc, internal=internal)
+        if all(not nonzero(sympy.expand(e)) for e in exact):
+            continue  # A, B, C on a line with A, C on opposite sides: the bisector is undefined
+        assert all(not nonzero(sympy.expand(e)) for e in mine.cross(exact)), (branch.text, mine, exact)
+        assert ("internal" in branch.text) == internal
+
+
+@settings(max_examples=20, deadline=None)
+@given(homogeneous_vectors(3, allow_ideal=False), homogeneous_vectors(3, allow_ideal=False),
+       integers(12))
+def test_a_rotation_by_degrees_agrees_with_sympy_cos_and_sin(x_, o_, k):
+    # rotate X about O by 15k degrees, any representatives: on ζ = e^{2πi/M} the engine's point is
+    # O + R(X − O) with R built here from SymPy's exact cos and sin of 15k°
+    degrees = 15 * k
+    c = Claim("rotation", "x")
+    c.rotate_degrees("Y", c.point("X", *x_), c.point("O", *o_), degrees)
+    tower = _Tower(c, [])
+    values = _evaluate(c, lambda e: tower.R(e), tower, _Deadline(None))
+    (branch,) = _branches(c, tower, values, {})
+    y = [tower.R.to_expr(v).xreplace(branch.values) if not isinstance(v, int) else sympy.Integer(v)
+         for v in values[c.nodes["Y"]]]
+    px, po = (sympy.Matrix([sympy.Rational(v[0], v[2]), sympy.Rational(v[1], v[2])]) for v in (x_, o_))
+    th = sympy.pi * degrees / 180
+    expected = po + sympy.Matrix([[sympy.cos(th), -sympy.sin(th)], [sympy.sin(th), sympy.cos(th)]]) * (px - po)
+    for i in range(2):
+        assert not nonzero(sympy.expand(y[i] - expected[i] * y[2]))
 
 
 # -- the statement language -----------------------------------------------------------------------------------

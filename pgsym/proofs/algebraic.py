@@ -177,9 +177,10 @@ def _bisector(claim: Claim, name: str, a: Any, b: Any, c: Any, internal: bool) -
 
     def line(pa: Any, pb: Any, pc: Any, uba: Any, ubc: Any) -> tuple[Any, ...]:
         va, vc = _vector(pb, pa), _vector(pb, pc)
-        # unit vectors va/(w_A w_B |BA|), vc/(w_C w_B |BC|), times |BA||BC| w_A w_B² w_C: added or subtracted
-        ux = ubc * pc[2] * va[0] + sgn * uba * pa[2] * vc[0]
-        uy = ubc * pc[2] * va[1] + sgn * uba * pa[2] * vc[1]
+        # the unit vectors are va/d_BA and vc/d_BC (d_BA = w_A w_B |BA| on the named branch): added or
+        # subtracted, times d_BA d_BC
+        ux = ubc * va[0] + sgn * uba * vc[0]
+        uy = ubc * va[1] + sgn * uba * vc[1]
         return alg.cross(pb, (ux, uy, ux - ux))
 
     word = "internal" if internal else "external"
