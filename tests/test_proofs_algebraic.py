@@ -463,3 +463,22 @@ def test_the_branch_semantics_are_in_every_output():
     assert data["branches"].startswith("fails on the named branch")
     assert set(data["counterexample"]["branch"]) == {"d_A_B", "d_A_C", "d_B_C"}
     assert "on the roots:" in v.summary() and "*Roots:*" in v.to_markdown() and "Roots:" in v.to_latex()
+
+
+def test_the_command_line_says_which_roots_a_verdict_covers(tmp_path):
+    from click.testing import CliRunner
+
+    from pgsym.cli import main
+
+    (tmp_path / "incentre.thm").write_text("points A B C\nline a = anglebisector B A C\nline b = anglebisector A B C\n"
+                                           "line c = anglebisector A C B\nprove concurrent a b c\n")
+    (tmp_path / "mixed.thm").write_text("expect false\npoints A B C\nline a = anglebisector B A C\n"
+                                        "line b = anglebisector A B C\nline c = exbisector A C B\n"
+                                        "prove concurrent a b c\n")
+    result = CliRunner().invoke(main, ["prove", str(tmp_path / "incentre.thm"), str(tmp_path / "mixed.thm")])
+    assert result.exit_code == 0, result.output
+    assert "[proved for every choice of root]" in result.output
+    assert "[fails on the named branch]" in result.output
+    result = CliRunner().invoke(main, ["prove", "--json", str(tmp_path / "mixed.thm")])
+    (data,) = json.loads(result.output[result.output.index("["):])  # after the progress line on stderr
+    assert data["status"] == "false" and set(data["counterexample"]["branch"]) == {"d_A_B", "d_A_C", "d_B_C"}
