@@ -333,6 +333,27 @@ def test_a_wrong_pentagon_ratio_is_refuted_at_the_principal_root():
     assert nonzero(((1 + sympy.sqrt(5)) / 2) ** 2 * s2 - sympy.Rational(3, 2) * s2)
 
 
+@pytest.mark.parametrize("internal", [True, False])
+def test_the_bisector_of_an_equilateral_triangle_mixes_a_root_of_unity_and_lengths(internal):
+    # C = B rotated about A by 60°: |AC| = |AB|; with C's representative w_C = 2 the roots are d_A_C = 2 d_A_B on
+    # the named branch. The internal bisector at A is the median to BC; the external one is not.
+    c = Claim("equilateral", "the bisector at A passes through the midpoint of BC", expected=internal)
+    A, B = c.free_point("A"), c.free_point("B")
+    C = c.rotate_degrees("C", B, A, 60)
+    b = (c.angle_bisector if internal else c.external_bisector)("b", B, A, C)
+    c.conclude_incident(c.midpoint("M", B, C), b)
+    v = prove(c)
+    if internal:
+        assert v.proved and v.branches.startswith("proved for the named branch only (d_A_C = 2*d_A_B")
+        return
+    assert v.refuted and v.counterexample.recheck()
+    a, b_ = (sympy.Matrix(point_of(v.counterexample.values, n)) for n in "AB")
+    cc = a + sympy.Matrix([[sympy.Rational(1, 2), -sympy.sqrt(3) / 2], [sympy.sqrt(3) / 2, sympy.Rational(1, 2)]]) * (
+        b_ - a)
+    m = (b_ + cc) / 2
+    assert nonzero(sympy.expand(bisector_line(b_, a, cc, internal=False).dot(sympy.Matrix([m[0], m[1], 1]))))
+
+
 @pytest.mark.parametrize("n", range(3, 14))
 def test_every_regular_polygon_closes_and_has_equal_sides(n):
     c = Claim(f"polygon-{n}", f"the regular {n}-gon: vertex n is A, and |V1 V2| = |AB|")

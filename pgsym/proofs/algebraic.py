@@ -760,9 +760,16 @@ def _named_branch_proof(claim: Claim, values: dict[Node, Any], tower: _Tower, de
             candidates.append((s, s * orient))
         # the same square as an earlier length d_j: d = ±d_j; on the named branch d_j·orient_j > 0, so the sign of
         # d_j·orient is that of orient_j·orient (or d_j's value there, when it has one)
-        same = next((t for t, qt in squares.items() if t != r.symbol and sympy.expand(qt - q) == 0), None)
-        if same is not None:
-            candidates.append((sub[same], sub[same] * orient) if same in sub else (same, orients[same] * orient))
+        # (or d = ±λ d_j when q = λ² q_j for a polynomial λ, e.g. a representative with w = 2)
+        for same, qt in squares.items():
+            if same == r.symbol or qt == 0 or same not in orients:  # only named lengths have a named sign
+                continue
+            num, den = sympy.fraction(sympy.cancel(q / qt))
+            lam = _rational_root(num, gens) if den == 1 else None
+            if lam is not None:
+                candidates.append((lam * sub[same], lam * sub[same] * orient) if same in sub
+                                  else (lam * same, lam * orients[same] * orient))
+                break
         known = [*gens, *(x for x in squares if x != r.symbol)]
         for value, sign_of in candidates:
             product = sympy.expand(sign_of)
