@@ -162,16 +162,27 @@ def test_equal_lengths_make_the_named_branch_rational():
 
 
 def test_a_named_branch_without_an_evident_sign_stays_unknown():
-    # B = (t, 0), C = (0, t³): d_A_B = ±t, d_A_C = ±t³, and the named branch (|t|, |t|³) is d_A_B·d_A_C = t⁴ > 0,
-    # a union of two components the engine does not find: it holds there at every instance but is not proved
+    # B = (t, 0), C = (0, t(t² − t + 1)): |AC|² = λ²|AB|² with λ = t² − t + 1, positive (discriminant −3) but not a
+    # sum of even powers, so the engine cannot see that d_A_C = λ d_A_B on the named branch: the internal bisector
+    # passes through (1, 1) at every instance it tries, the external one does not, and the verdict is unknown
     c = Claim("not-evident", "the internal bisector of ∠BAC passes through (1, 1)")
     (t,) = c.params("t")
-    A, B, C = c.point("A", 0, 0), c.point("B", t, 0), c.point("C", 0, t**3)
+    A, B, C = c.point("A", 0, 0), c.point("B", t, 0), c.point("C", 0, t * (t * t - t + 1))
     c.conclude_incident(c.point("P", 1, 1), c.angle_bisector("a", B, A, C))
     v = prove(c)
     assert v.status == "unknown" and not v.proved
     assert v.branches.startswith("holds on the named branch only (a is the internal bisector of ∠BAC)")
     assert "not proved" in v.branches and "a is the external bisector of ∠BAC" in v.branches
+
+
+def test_a_polynomial_ratio_of_lengths_with_an_evident_sign_is_proved_on_the_named_branch():
+    # B = (t, 0), C = (0, t³): |AC| = t²|AB|, so d_A_C = t² d_A_B on the named branch
+    c = Claim("evident", "the internal bisector of ∠BAC passes through (1, 1)")
+    (t,) = c.params("t")
+    A, B, C = c.point("A", 0, 0), c.point("B", t, 0), c.point("C", 0, t**3)
+    c.conclude_incident(c.point("P", 1, 1), c.angle_bisector("a", B, A, C))
+    v = prove(c)
+    assert v.proved and v.branches.startswith("proved for the named branch only (d_A_C = t**2*d_A_B")
 
 
 def test_wu_half_angle_parametrisation_proves_the_internal_bisector():
