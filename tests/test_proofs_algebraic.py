@@ -182,7 +182,7 @@ def test_a_polynomial_ratio_of_lengths_with_an_evident_sign_is_proved_on_the_nam
     A, B, C = c.point("A", 0, 0), c.point("B", t, 0), c.point("C", 0, t**3)
     c.conclude_incident(c.point("P", 1, 1), c.angle_bisector("a", B, A, C))
     v = prove(c)
-    assert v.proved and v.branches.startswith("proved for the named branch only (d_A_C = t**2*d_A_B")
+    assert v.proved and v.branches.startswith("proved for the named branch only (d_A_C = d_A_B*t**2")
 
 
 def test_wu_half_angle_parametrisation_proves_the_internal_bisector():
