@@ -11,7 +11,7 @@ quantities, the *roots*, each tied to the parameters by one defining equation:
   length positive): then each ``anglebisector`` is internal and each ``exbisector`` external. Changing the
   sign of ``d_A_B`` swaps internal and external at A and at B together;
 * an **intersection root** ``e_X`` with ``e² = β² − αγ``, the discriminant of a line meeting a conic
-  (:func:`line_conic_points`): the two common points are ``(−β ± e) P + α Q``. The statement names no root
+  (:func:`line_conic_intersection`): the two common points are ``(−β ± e) P + α Q``. The statement names no root
   (``intersection`` is either point, ``intersections`` both in either order, ``tangentfrom`` either tangent),
   so a conclusion must hold for both;
 * a **root of unity** ``zeta_M`` with ``Φ_M(zeta_M) = 0`` (the cyclotomic polynomial), for rotations by an
@@ -25,11 +25,18 @@ conclusion polynomial whose remainder modulo them is zero vanishes on every poin
 every choice of the roots — this is Wu's method with unit initials. For roots of unity only this is also
 necessary: a rational statement true for ζ is true for every conjugate (apply the Galois automorphism).
 
-**Named branches.** When the remainder is not zero, the claim is evaluated exactly at random rational
-instances on every choice of signs of the square roots (exact algebraic numbers, decided by
-:func:`pgsym.exact.is_zero`). A failure on the named branch (principal lengths, either intersection root)
-refutes the claim, with the branch said; a claim that holds on the named branch at every instance but fails
-on another is *unknown* ("holds on the named branch only"), never *proved*.
+**Named branches.** When the remainder is not zero, the named branch is tried as a rational branch: a
+named length whose square is the square of a polynomial s (Wu's school: B = 0, A = p²(1 − t², 2t) gives
+|BA| = p²(1 + t²)), or a polynomial multiple λ of an earlier length, is replaced by ±s (or ±λ·d_j) with the sign
+the named root has wherever that sign is evident (a sum of even powers with positive coefficients); if the
+conclusion then reduces to zero the verdict is "proved for the named branch only", naming the other branch
+where it fails. Otherwise the claim is evaluated exactly at random rational instances on every choice of signs
+of the square roots (exact algebraic numbers, decided by :func:`pgsym.exact.is_zero`). A failure on the named
+branch (principal lengths, either intersection root) refutes the claim, with the branch said; a claim that
+holds on the named branch at every instance but fails on another is *unknown* ("holds on the named branch
+only … not proved"), never *proved*. When the defining equations generate a field (generic lengths, a single
+root of unity) a rational statement true on one branch is true on all (the Galois group permutes them), so
+one-branch statements need a reducible tower, which is exactly what the rational named branch detects.
 
 >>> from pgsym.proofs.claims import Claim
 >>> from pgsym.proofs.engine import prove
@@ -59,7 +66,6 @@ from .. import ring as alg
 from ..errors import ObjectTypeError, PgsymError
 from ..exact import is_zero
 from ..exact import sign as exact_sign
-from .claims import Claim, Node
 from .polynomials import PolynomialRing, default_backend
 
 __all__ = [
@@ -85,9 +91,6 @@ MAX_POLYGON = 24
 
 MAX_ROOTS = 8
 """The most square roots one claim may use: the exact evaluation visits every choice of their signs (2⁸)."""
-
-PRINCIPAL = "every length root positive (each anglebisector internal, each exbisector external), " \
-            "either root of each intersection, ζ = e^{2πi/M}"
 
 
 @dataclass(eq=False)
@@ -868,3 +871,7 @@ def _sample(claim: Claim, failing: tuple[str, Any], R0: PolynomialRing, rng: ran
                 reason=f"{label} has the nonzero remainder {R0.text(poly)[:200]} modulo the defining equations, "
                        f"yet the conclusion held on every branch at {seen} random instances (a degenerate component?)",
                 branches=f"held on every branch at {seen} random instances; not proved")
+
+
+# last, so that either module may be imported first: claims.py attaches the constructions above to Claim at its end
+from .claims import Claim, Node  # noqa: E402
