@@ -375,6 +375,16 @@ def test_every_regular_polygon_closes_and_has_equal_sides(n):
     assert v.proved and t < 10
 
 
+@pytest.mark.parametrize("n", [7, 13])
+def test_six_vertices_of_a_regular_polygon_lie_on_a_conic(n):
+    # they lie on the circumcircle; ζ_28 and ζ_52 have degree φ(28) = 12 and φ(52) = 24
+    c = Claim(f"polygon-{n}-conic", "six vertices of a regular polygon lie on a conic")
+    A, B = c.free_point("A"), c.free_point("B")
+    c.conclude_conconic(A, B, *(c.polygon_vertex(f"V{k}", A, B, n, k) for k in range(2, 6)))
+    v, t = timed(c)
+    assert v.proved and t < 10 and f"e^(2πi/{4 * n})" in v.branches
+
+
 @settings(max_examples=25, deadline=None)
 @given(integers(40), integers(6))
 def test_cosine_and_sine_of_a_rational_angle_as_polynomials_in_a_root_of_unity(k, n):
