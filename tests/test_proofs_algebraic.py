@@ -20,6 +20,7 @@ from pgsym.proofs.algebraic import _branches, _cyclotomic_combination, _evaluate
 from pgsym.proofs.engine import _Deadline
 from pgsym.proofs.errors import StatementKindError, StatementSyntaxError
 from pgsym.proofs.language import parse_statement
+from pgsym.proofs.polynomials import available_backends
 
 x = sympy.Symbol("x")
 
@@ -105,6 +106,18 @@ def test_the_three_internal_bisectors_are_concurrent():
     assert v.proved and t < 10
     # the lengths are shared: flipping |AB| swaps internal and external at A and B together (an excentre)
     assert "swapped in pairs" in v.branches
+
+
+@pytest.mark.parametrize("backend", available_backends())
+def test_both_polynomial_backends_prove_the_incentre(backend):
+    from pgsym.proofs.engine import prove as prove_with
+
+    c = Claim("incentre", "the internal bisectors of a triangle meet in the incentre")
+    A, B, C = triangle(c)
+    c.conclude_concurrent(c.angle_bisector("a", B, A, C), c.angle_bisector("b", A, B, C),
+                          c.angle_bisector("c", A, C, B))
+    v = prove_with(c, backend=backend)
+    assert v.proved and v.certificate.backend == backend
 
 
 def test_one_internal_and_two_external_bisectors_meet_in_an_excentre():

@@ -452,10 +452,11 @@ def polygon_vertex(self: Claim, name: str, a: Any, b: Any, n: int, k: int) -> No
 class _Tower:
     """The defining equations as a triangular set (a lex Gröbner basis: leading terms root², or ζ^φ(M))."""
 
-    def __init__(self, claim: Claim, gens: Sequence[sympy.Symbol]) -> None:
+    def __init__(self, claim: Claim, gens: Sequence[sympy.Symbol], backend: str | None = None) -> None:
         roots = roots_of(claim)
         self.order = [r.symbol for r in reversed(roots)]
-        self.R = PolynomialRing([*self.order, *gens], integral=False, order="lex", backend=default_backend())
+        self.R = PolynomialRing([*self.order, *gens], integral=False, order="lex",
+                                backend=backend or default_backend())
         self.basis: list[Any] = []
         self.text: list[str] = []
 
@@ -619,13 +620,14 @@ def recheck_branch(claim: Claim, values: dict[str, Any], branch: dict[str, str])
     return kind == "fails"
 
 
-def prove_algebraic(claim: Claim, timeout: float | None = 10.0, seed: int = 0, instances: int = 4) -> Any:
+def prove_algebraic(claim: Claim, timeout: float | None = 10.0, seed: int = 0, instances: int = 4,
+                    backend: str | None = None) -> Any:
     """Decide a claim with square roots (called by :func:`pgsym.proofs.engine.prove` when the claim has roots).
 
     Proved for every choice of root when the conclusion is in the ideal of the defining equations (possibly
     after a non-degeneracy condition); otherwise evaluated exactly at ``instances`` random rational instances on
     every choice of signs of the roots: false (with the branch) when the named branch fails, unknown when only
-    another branch fails.
+    another branch fails. ``backend`` chooses the polynomial arithmetic as in :func:`~pgsym.proofs.engine.prove`.
     """
     from .engine import _alarm, _Deadline, _rng, _Timeout
     from .verdicts import Certificate, Condition, Counterexample, Status, Verdict
@@ -651,7 +653,7 @@ def prove_algebraic(claim: Claim, timeout: float | None = 10.0, seed: int = 0, i
             from .engine import _conclusion_polys
 
             params = [p for p in claim.parameters if p not in rootsyms]
-            tower = _Tower(claim, params)
+            tower = _Tower(claim, params, backend)
             R = tower.R
             cache: dict[Any, Any] = {}
 
