@@ -104,6 +104,7 @@ def test_the_three_internal_bisectors_are_concurrent():
                           c.angle_bisector("c", A, C, B))
     v, t = timed(c)
     assert v.proved and t < 10
+    assert v.core_check.startswith("3 algebraic objects agree")  # with metric.angle_bisectors
     # the lengths are shared: flipping |AB| swaps internal and external at A and B together (an excentre)
     assert "swapped in pairs" in v.branches
 
@@ -280,15 +281,15 @@ def test_the_tangents_from_a_point_touch_the_circle():
 
 
 def test_the_common_points_of_two_circles_lie_on_both():
-    c = Claim("two-circles", "the common points of two circles are equidistant from each centre")
+    c = Claim("two-circles", "the common points of two circles lie on both")
     O, A, Q, B = (c.free_point(n) for n in "OAQB")
     K, L = c.formula("K", "conic", circle, O, A), c.formula("L", "conic", circle, Q, B)
     X, Y = c.circle_intersections(("X", "Y"), K, L)
     c.conclude_on_conic(X, L)
     c.conclude_on_conic(Y, K)
-    c.conclude_equal_ratio(c.formula("OX", "ratio", dist2, O, X), c.formula("OY", "ratio", dist2, O, Y))
     v, t = timed(c)
     assert v.proved and t < 10
+    assert v.core_check.startswith("2 algebraic objects agree with pgsym's core")
 
 
 # -- rotations and regular polygons -------------------------------------------------------------------------
@@ -310,6 +311,7 @@ def _napoleon(angles):
 def test_napoleon_theorem_holds_for_every_conjugate_of_the_sixth_root_of_unity():
     v, t = timed(_napoleon((-60, -60, -60)))
     assert v.proved and t < 10
+    assert v.core_check.startswith("3 algebraic objects agree with pgsym's core")  # metric.rotation(1/2, −√3/2)
     assert "ζ = e^(2πi/12)" in v.branches  # cos 60° = (ζ + ζ⁻¹)/2, sin 60° with i = ζ³
 
 

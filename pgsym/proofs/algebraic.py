@@ -118,6 +118,8 @@ class Root:
 class _Algebraic:
     roots: list[Root] = field(default_factory=list)
     readings: list[Callable[[dict[sympy.Symbol, int]], str]] = field(default_factory=list)
+    # (object, its arguments, the candidates pgsym's core builds from their exact values) for the core check
+    core: list[tuple[Node, tuple[Node, ...], Callable[..., Any]]] = field(default_factory=list)
 
 
 def _data(claim: Claim) -> _Algebraic:
@@ -197,6 +199,13 @@ def _bisector(claim: Claim, name: str, a: Any, b: Any, c: Any, internal: bool) -
         return f"{name} is the {'internal' if same else 'external'} bisector of ∠{a.name}{b.name}{c.name}"
 
     _data(claim).readings.append(reading)
+
+    def core(pa: Any, pb: Any, pc: Any) -> tuple[Any, ...]:
+        from .. import metric, projective_plane
+
+        return metric.angle_bisectors(projective_plane.join(pb, pa), projective_plane.join(pb, pc))
+
+    _data(claim).core.append((node, (a, b, c), core))
     return node
 
 
@@ -281,6 +290,16 @@ def _meet_points(claim: Claim, names: Sequence[str], l: Node | None, k: Node, m:
         out.append(claim.formula(name, "point", point, *base, root.node, description=desc,
                                  conditions=[f"{what} meet ({name} is defined)"]))
     root.text += "; " + (f"{names[0]} takes +e, {names[1]} −e" if len(names) > 1 else f"{names[0]} takes +e")
+
+    def core(*objs: Any) -> tuple[Any, ...]:
+        from ..conics import Conic
+
+        if m is None:
+            return Conic(objs[1]).intersections(objs[0])
+        return Conic(objs[0]).intersections(Conic(objs[1]))
+
+    for node in out:
+        _data(claim).core.append((node, tuple(base), core))
     readers = list(zip(names, (1, -1), strict=False))
     _data(claim).readings.append(
         lambda signs: ", ".join(f"{n} = the {'first' if signs[root.symbol] * s > 0 else 'second'} root "
@@ -336,7 +355,16 @@ def _tangents(claim: Claim, names: Sequence[str], p: Any, k: Any) -> list[Node]:
     polar = claim.polar(f"_polar_{k.name}_{p.name}_{'_'.join(names)}", k, p)
     touch = _meet_points(claim, [f"_touch_{n}" for n in names], polar, k, None,
                          f"the polar of {p.name} and {k.name}")
-    return [claim.join(n, p, t) for n, t in zip(names, touch, strict=True)]
+    lines = [claim.join(n, p, t) for n, t in zip(names, touch, strict=True)]
+
+    def core(pp: Any, kk: Any) -> tuple[Any, ...]:
+        from ..conics import Conic
+
+        return Conic(kk).tangents_from(pp)
+
+    for line in lines:
+        _data(claim).core.append((line, (p, k), core))
+    return lines
 
 
 def tangent_from(self: Claim, name: str, p: Any, k: Any) -> Node:
@@ -412,8 +440,25 @@ def _turn(claim: Claim, name: str, x: Node, o: Node, turns: Fraction, powers: Se
         two_w = 2 * px[2]
         return (two_w * po[0] + cr * u[0] - ci * u[1], two_w * po[1] + ci * u[0] + cr * u[1], two_w * po[2])
 
-    return claim.formula(name, "point", rotated, *args, description=description,
+    node = claim.formula(name, "point", rotated, *args, description=description,
                          conditions=[f"{x.name} and {o.name} are finite points"])
+
+    def core(px: Any, po: Any) -> tuple[Any, ...]:
+        from .. import metric
+        from ..projective_plane import Point
+
+        angle = 2 * sympy.pi * turns
+        step = metric.rotation(sympy.cos(angle), sympy.sin(angle), po)
+        (ox, oy), total, current = po.dehomogenize(), [0, 0], px
+        for j in range(max(powers) + 1):  # O + Σ_j R^j (X − O) over the powers, walking round O
+            if j in powers:
+                cx, cy = current.dehomogenize()
+                total = [total[0] + cx - ox, total[1] + cy - oy]
+            current = step(current)
+        return (Point(ox + total[0], oy + total[1]),)
+
+    _data(claim).core.append((node, (x, o), core))
+    return node
 
 
 def rotate_degrees(self: Claim, name: str, x: Any, o: Any, degrees: int) -> Node:
@@ -507,6 +552,12 @@ def _sympy_value(R: PolynomialRing, p: Any, sub: dict[sympy.Symbol, Any]) -> sym
     if isinstance(p, (int, Fraction)):
         return sympy.Rational(p)
     return R.to_expr(p).xreplace(sub)
+
+
+def _radical_zeta(modulus: int) -> bool:
+    """SymPy writes cos and sin of 2π/M with radicals (M | 24 or M | 20, and a few more)."""
+    angle = 2 * sympy.pi / modulus
+    return not (sympy.cos(angle) + sympy.I * sympy.sin(angle)).has(sympy.cos, sympy.sin)
 
 
 def _zeta_value(modulus: int) -> sympy.Expr:
@@ -620,6 +671,54 @@ def recheck_branch(claim: Claim, values: dict[str, Any], branch: dict[str, str])
     return kind == "fails"
 
 
+def _proportional(u: Sequence[Any], v: Sequence[Any]) -> bool:
+    return all(is_zero(sympy.expand(u[i] * v[j] - u[j] * v[i])) for i in range(len(u)) for j in range(i + 1, len(u)))
+
+
+def _core_object(node: Node, value: Any, tower: _Tower, branch: _Branch) -> Any:
+    """A point, line or conic matrix of pgsym's core with the exact coordinates of ``value`` on the branch."""
+    from ..projective_plane import Line, Point
+    from .operations import flat
+
+    if node.kind == "conic":
+        return sympy.Matrix([[_sympy_value(tower.R, x, branch.values) for x in row] for row in value])
+    coords = [_sympy_value(tower.R, x, branch.values) for x in flat(value)]
+    return (Point if node.kind == "point" else Line)(*coords)
+
+
+def _core_check(claim: Claim, rng: random.Random, deadline: Any) -> str:
+    """At a rational instance, on the named branch, every algebraic object must be one of the objects pgsym's
+    core builds from the same exact arguments (``metric.angle_bisectors``, ``Conic.intersections``,
+    ``Conic.tangents_from``, ``metric.rotation``), so the proof's formulas and the library cannot drift."""
+    from .operations import flat
+
+    records = _data(claim).core
+    if not records:
+        return "not needed"
+    slow = [r.modulus for r in roots_of(claim) if r.kind == "unity" and not _radical_zeta(r.modulus)]
+    if slow:  # exact decisions about roots of unity without radicals (cos 2π/7, …) take too long
+        return f"skipped: e^(2πi/{slow[0]}) has no expression in radicals here"
+    for _ in range(8):
+        deadline.check("comparing with pgsym's core objects")
+        point, tower, values = _instance(claim, rng, 6, deadline)
+        branch = next((b for b in _branches(claim, tower, values, point) if b.named), None)
+        if branch is None:
+            continue
+
+        try:
+            for node, args, build in records:
+                mine = [_sympy_value(tower.R, x, branch.values) for x in flat(values[node])]
+                candidates = build(*(_core_object(a, values[a], tower, branch) for a in args))
+                if not any(_proportional(mine, list(c.coords)) for c in candidates):
+                    return f"MISMATCH at {node.name}"
+        except PgsymError as err:  # a degenerate instance or an undecidable cos(2π/7): try another
+            last = str(err)
+            continue
+        return f"{len(records)} algebraic objects agree with pgsym's core at a rational instance (named branch)"
+    return "skipped: no rational instance where the core could build every object" + (
+        f" ({last[:80]})" if "last" in locals() else "")
+
+
 def prove_algebraic(claim: Claim, timeout: float | None = 10.0, seed: int = 0, instances: int = 4,
                     backend: str | None = None) -> Any:
     """Decide a claim with square roots (called by :func:`pgsym.proofs.engine.prove` when the claim has roots).
@@ -695,8 +794,12 @@ def prove_algebraic(claim: Claim, timeout: float | None = 10.0, seed: int = 0, i
                                           "variables, lex, roots first]", steps,
                                           max((R.nterms(p) for p in entries), default=0), backend=R.backend,
                                           largest_degree=max((R.degree(p) for p in entries), default=0))
+                core = _core_check(claim, _rng(claim, seed), deadline)
+                if core.startswith("MISMATCH"):
+                    return done(Status.UNKNOWN, core_check=core, branches="no decision",
+                                reason=f"pgsym's core and the proof formulas disagree ({core})")
                 return done(Status.PROVED, method=certificate.method, certificate=certificate,
-                            conditions=conditions, branches=_every_root(roots))
+                            conditions=conditions, branches=_every_root(roots), core_check=core)
             named = _named_branch_proof(claim, values, tower, deadline)
             if named is not None:
                 text, lines = named
@@ -704,8 +807,12 @@ def prove_algebraic(claim: Claim, timeout: float | None = 10.0, seed: int = 0, i
                                           "rational values there, then reduction modulo the remaining equations",
                                           R.field + f"[{len(R.symbols)} variables, lex, roots first]",
                                           [*steps, *lines], 0, backend=R.backend)
+                core = _core_check(claim, _rng(claim, seed), deadline)
+                if core.startswith("MISMATCH"):
+                    return done(Status.UNKNOWN, core_check=core, branches="no decision",
+                                reason=f"pgsym's core and the proof formulas disagree ({core})")
                 return done(Status.PROVED, method=certificate.method, certificate=certificate,
-                            conditions=conditions, branches=text)
+                            conditions=conditions, branches=text, core_check=core)
             return _sample(claim, failing, R, rng=_rng(claim, seed), instances=instances, deadline=deadline,
                            done=done, counterexample=Counterexample)
     except _Timeout as err:
