@@ -499,6 +499,17 @@ def test_malformed_square_root_statements_raise_named_errors(text, error):
         parse_statement(text)
 
 
+def test_more_than_eight_square_roots_are_refused():
+    # every choice of signs is visited: 2⁸ branches at most; five points give ten lengths
+    c = Claim("many", "x")
+    P = [c.free_point(f"P{i}") for i in range(5)]
+    for i, (a, b, d) in enumerate(((1, 0, 2), (3, 0, 4), (2, 1, 3), (4, 1, 2))):  # lengths 01 02 03 04 12 13 14
+        c.angle_bisector(f"b{i}", P[a], P[b], P[d])
+    with pytest.raises(ObjectTypeError, match="more than 8 square roots"):
+        c.angle_bisector("b4", P[3], P[2], P[4])  # 23 and 24: the ninth length is refused
+    assert len(roots_of(c)) == 8
+
+
 def test_polygon_and_rotation_arguments_are_checked():
     c = Claim("x", "x")
     A, B = c.free_point("A"), c.free_point("B")
