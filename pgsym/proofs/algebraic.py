@@ -302,8 +302,9 @@ def _meet_points(claim: Claim, names: Sequence[str], l: Node | None, k: Node, m:
         _data(claim).core.append((node, tuple(base), core))
     readers = list(zip(names, (1, -1), strict=False))
     _data(claim).readings.append(
-        lambda signs: ", ".join(f"{n} = the {'first' if signs[root.symbol] * s > 0 else 'second'} root "
-                                f"(+e ↦ {'+' if signs[root.symbol] * s > 0 else '−'})" for n, s in readers))
+        lambda signs: ", ".join(f"{n} = (−β {'+' if signs[root.symbol] * s > 0 else '−'} √Δ)·P + α·Q, the "
+                                f"{'first' if signs[root.symbol] * s > 0 else 'second'} common point of {what}"
+                                for n, s in readers))
     return out
 
 
@@ -936,6 +937,21 @@ def _every_root(roots: list[Root]) -> str:
     return "proved for every choice of root: " + "; ".join(parts)
 
 
+def _coordinates(claim: Claim, tower: _Tower, values: dict[Node, Any], branch: _Branch) -> str:
+    """The exact coordinates of the claim's algebraic points on a branch, as text ("; X = (1, 2 + √3)")."""
+    from .operations import flat
+
+    out = []
+    for node, _args, _build in _data(claim).core:
+        if node.kind != "point" or node.name.startswith("_"):
+            continue
+        x, y, w = (_sympy_value(tower.R, v, branch.values) for v in flat(values[node]))
+        if w == 0 or is_zero(w):
+            continue
+        out.append(f"{node.name} = ({sympy.radsimp(x / w)}, {sympy.radsimp(y / w)})")
+    return "; " + "; ".join(out) if out else ""
+
+
 def _sample(claim: Claim, failing: tuple[str, Any], R0: PolynomialRing, rng: random.Random, instances: int,
             deadline: Any, done: Callable[..., Any], counterexample: Any) -> Any:
     from .verdicts import Status
@@ -954,6 +970,7 @@ def _sample(claim: Claim, failing: tuple[str, Any], R0: PolynomialRing, rng: ran
             continue
         for b, (kind, residuals) in results:
             if kind == "fails" and b.named:
+                b.text += _coordinates(claim, tower, values, b)
                 ce = counterexample({str(s): Fraction(int(v.p), int(v.q)) for s, v in point.items()},
                                     residuals, claim, branch={str(s): str(v) for s, v in b.values.items()})
                 return done(Status.FALSE, counterexample=ce,
@@ -961,6 +978,7 @@ def _sample(claim: Claim, failing: tuple[str, Any], R0: PolynomialRing, rng: ran
                             reason=f"the conclusion fails on the named branch ({b.text})",
                             branches=f"fails on the named branch: {b.text}")
             if kind == "fails" and other_failure is None:
+                b.text += _coordinates(claim, tower, values, b)
                 other_failure = (point, b, residuals)
         seen += 1
         if seen >= instances:
