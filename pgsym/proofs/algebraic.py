@@ -146,9 +146,20 @@ def _new_root(claim: Claim, name: str, kind: str, text: str, named: bool, **kw: 
                               "the exact evaluation visits every choice of their signs")
     (sym,) = claim.params(name)
     node = claim._free(f"_{name}", "scalar", (sym,))
+    node.root = True  # type: ignore[attr-defined]  # normalisation: not a free object, fixed by its equation
     root = Root(sym, node, kind, text, named, **kw)
     data.roots.append(root)
     return root
+
+
+def _similar(node: Node) -> Node:
+    """Mark a construction as commuting with the orientation-preserving similarities (the frame A = (0, 0),
+    B = (1, 0) of :mod:`~pgsym.proofs.normalisation`): a bisector stays the bisector of the same kind (lengths
+    scale by k > 0, so the named roots stay positive), the common points of a line and a circle or two circles
+    and the tangents from a point go to those of the images (either root: the pair is what is mapped), and a
+    rotation by a fixed angle commutes with every direct similarity."""
+    node.group = "similarity"  # type: ignore[attr-defined]
+    return node
 
 
 # -- coordinates --------------------------------------------------------------------------------------------
@@ -189,10 +200,10 @@ def _bisector(claim: Claim, name: str, a: Any, b: Any, c: Any, internal: bool) -
         return alg.cross(pb, (ux, uy, ux - ux))
 
     word = "internal" if internal else "external"
-    node = claim.formula(name, "line", line, a, b, c, dba.node, dbc.node,
+    node = _similar(claim.formula(name, "line", line, a, b, c, dba.node, dbc.node,
                          description=f"{word} bisector of ∠{a.name}{b.name}{c.name}",
                          conditions=[f"{a.name} ≠ {b.name}, {c.name} ≠ {b.name} and {a.name}, {b.name}, {c.name} "
-                                     f"not on one line through {b.name} in opposite directions ({name} is defined)"])
+                                     f"not on one line through {b.name} in opposite directions ({name} is defined)"]))
 
     def reading(signs: dict[sympy.Symbol, int]) -> str:
         same = signs[dba.symbol] * signs[dbc.symbol] * sgn > 0
@@ -287,8 +298,8 @@ def _meet_points(claim: Claim, names: Sequence[str], l: Node | None, k: Node, m:
             return _line_conic(line_of(vl, vk, vm), vk, e, sgn)
 
         desc = f"{'the other' if sgn < 0 else 'a'} common point of {what}"
-        out.append(claim.formula(name, "point", point, *base, root.node, description=desc,
-                                 conditions=[f"{what} meet ({name} is defined)"]))
+        out.append(_similar(claim.formula(name, "point", point, *base, root.node, description=desc,
+                                          conditions=[f"{what} meet ({name} is defined)"])))
     root.text += "; " + (f"{names[0]} takes +e, {names[1]} −e" if len(names) > 1 else f"{names[0]} takes +e")
 
     def core(*objs: Any) -> tuple[Any, ...]:
@@ -441,8 +452,8 @@ def _turn(claim: Claim, name: str, x: Node, o: Node, turns: Fraction, powers: Se
         two_w = 2 * px[2]
         return (two_w * po[0] + cr * u[0] - ci * u[1], two_w * po[1] + ci * u[0] + cr * u[1], two_w * po[2])
 
-    node = claim.formula(name, "point", rotated, *args, description=description,
-                         conditions=[f"{x.name} and {o.name} are finite points"])
+    node = _similar(claim.formula(name, "point", rotated, *args, description=description,
+                                  conditions=[f"{x.name} and {o.name} are finite points"]))
 
     def core(px: Any, po: Any) -> tuple[Any, ...]:
         from .. import metric
@@ -490,7 +501,7 @@ def polygon_vertex(self: Claim, name: str, a: Any, b: Any, n: int, k: int) -> No
         raise ObjectTypeError(f"polygon: n is an integer from 3 to {MAX_POLYGON} and k an integer, got {n!r}, {k!r}")
     k %= n
     return _turn(self, name, b, a, Fraction(1, n), range(k), f"vertex {k} of the regular {n}-gon {a.name} {b.name} …") \
-        if k else self.formula(name, "point", lambda p: p, a, description=f"vertex 0 of the regular {n}-gon")
+        if k else _similar(self.formula(name, "point", lambda p: p, a, description=f"vertex 0 of the regular {n}-gon"))
 
 
 # -- the proof -------------------------------------------------------------------------------------------
@@ -526,14 +537,22 @@ class _Tower:
         return p
 
 
-def _evaluate(claim: Claim, scalar: Callable[[Any], Any], tower: _Tower, deadline: Any) -> dict[Node, Any]:
-    from .engine import _map
+def _evaluate(claim: Claim, scalar: Callable[[Any], Any], tower: _Tower, deadline: Any,
+              estimate: bool = False) -> dict[Node, Any]:
+    """Every object's value, reduced modulo the roots' equations as they appear; with ``estimate`` a construction
+    that would need more than the engine's MAX_WORK term products raises before it starts (a product in C cannot
+    be interrupted by the time limit)."""
+    from .engine import MAX_WORK, _estimate, _map, _TooLarge
 
     by_node = {r.node: r for r in roots_of(claim)}
     values: dict[Node, Any] = {}
     for node in claim.nodes.values():
         deadline.check(f"constructing {node.name}")
         args = [values[a] for a in node.args if isinstance(a, Node)]
+        if estimate:
+            work = _estimate(lambda v, node=node: node.operation.formula(node, v, scalar), args, tower.R)
+            if work is not None and work > MAX_WORK:
+                raise _TooLarge(f"{node.name} would need about {work:.1e} term products")
         values[node] = _map(node.operation.formula(node, args, scalar), tower.reduce)
         if node in by_node:
             tower.add(by_node[node], values)
@@ -729,7 +748,7 @@ def prove_algebraic(claim: Claim, timeout: float | None = 10.0, seed: int = 0, i
     every choice of signs of the roots: false (with the branch) when the named branch fails, unknown when only
     another branch fails. ``backend`` chooses the polynomial arithmetic as in :func:`~pgsym.proofs.engine.prove`.
     """
-    from .engine import _alarm, _Deadline, _rng, _Timeout
+    from .engine import _alarm, _Deadline, _rng, _Timeout, _TooLarge
     from .verdicts import Certificate, Condition, Counterexample, Status, Verdict
 
     start = time.perf_counter()
@@ -751,18 +770,21 @@ def prove_algebraic(claim: Claim, timeout: float | None = 10.0, seed: int = 0, i
     try:
         with _alarm(timeout):
             from .engine import _conclusion_polys
+            from .normalisation import normalise
 
-            params = [p for p in claim.parameters if p not in rootsyms]
+            norm, _why = normalise(claim)
+            sub = norm.substitution if norm is not None else {}
+            params = [p for p in claim.parameters if p not in rootsyms and p not in sub]
             tower = _Tower(claim, params, backend)
             R = tower.R
             cache: dict[Any, Any] = {}
 
             def conv(e: Any) -> Any:
                 if e not in cache:
-                    cache[e] = R(e)
+                    cache[e] = R(sympy.sympify(e).xreplace(sub) if sub else e)
                 return cache[e]
 
-            values = _evaluate(claim, conv, tower, deadline)
+            values = _evaluate(claim, conv, tower, deadline, estimate=True)
             reqs = _requirements(claim, values)
             conditions = []
             for text, polys in reqs:
@@ -772,9 +794,11 @@ def prove_algebraic(claim: Claim, timeout: float | None = 10.0, seed: int = 0, i
                                 "value of the parameters and every choice of root)", branches="no decision")
                 if not text.endswith("is not the zero vector"):
                     conditions.append(Condition(text, raw=[p for p in polys if p != 0][:3]))
+            if norm is not None and norm.condition:
+                conditions.append(Condition(f"{norm.condition} (frame)"))
             steps = ["triangular set (lex, roots first; a Gröbner basis): " + "; ".join(tower.text)]
             failing = None
-            for label, poly in _conclusion_polys(claim, values):
+            for label, poly in _conclusion_polys(claim, values, ring=R):
                 deadline.check("reducing the conclusion")
                 if poly == 0:
                     steps.append(f"{label} reduces to 0 modulo the defining equations")
@@ -794,7 +818,8 @@ def prove_algebraic(claim: Claim, timeout: float | None = 10.0, seed: int = 0, i
                                           "triangular set with unit initials)", R.field + f"[{len(R.symbols)} "
                                           "variables, lex, roots first]", steps,
                                           max((R.nterms(p) for p in entries), default=0), backend=R.backend,
-                                          largest_degree=max((R.degree(p) for p in entries), default=0))
+                                          largest_degree=max((R.degree(p) for p in entries), default=0),
+                                          normalisation="" if norm is None else norm.describe())
                 core = _core_check(claim, _rng(claim, seed), deadline)
                 if core.startswith("MISMATCH"):
                     return done(Status.UNKNOWN, core_check=core, branches="no decision",
@@ -807,7 +832,8 @@ def prove_algebraic(claim: Claim, timeout: float | None = 10.0, seed: int = 0, i
                 certificate = Certificate("ideal membership on the named branch: the named roots replaced by their "
                                           "rational values there, then reduction modulo the remaining equations",
                                           R.field + f"[{len(R.symbols)} variables, lex, roots first]",
-                                          [*steps, *lines], 0, backend=R.backend)
+                                          [*steps, *lines], 0, backend=R.backend,
+                                          normalisation="" if norm is None else norm.describe())
                 core = _core_check(claim, _rng(claim, seed), deadline)
                 if core.startswith("MISMATCH"):
                     return done(Status.UNKNOWN, core_check=core, branches="no decision",
@@ -816,6 +842,8 @@ def prove_algebraic(claim: Claim, timeout: float | None = 10.0, seed: int = 0, i
                             conditions=conditions, branches=text, core_check=core)
             return _sample(claim, failing, R, rng=_rng(claim, seed), instances=instances, deadline=deadline,
                            done=done, counterexample=Counterexample)
+    except _TooLarge as err:
+        return done(Status.UNKNOWN, reason=f"the expansion is too large: {err.args[0]}", branches="no decision")
     except _Timeout as err:
         stage = err.args[0] if err.args else "working"
         return done(Status.UNKNOWN, reason=f"timed out after {timeout} s while {stage}", branches="no decision")
