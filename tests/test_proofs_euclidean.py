@@ -515,3 +515,20 @@ def test_concyclic_points_that_always_lie_on_one_line_are_degenerate_not_proved(
     c = Claim("accident", "A, B, C, D on one circle")
     c.conclude_concyclic(*(c.free_point(n) for n in "ABCD"))
     assert prove(c).refuted
+
+
+@pytest.mark.parametrize("text", [
+    # a point M = P + t·Q of a chord whose end Q is a constructed point: the core's Q is another representative,
+    # so the same t is another point of the chord; the recheck must take the formula's point of the core's line
+    "points O P\nconic K = circle O P\npoint Q on circle K\npoint M on line P Q\npoint A on circle K\n"
+    "point B = second K A M\npoint C on circle K\npoint D = second K C M\npoint X = meet (join A D) (join P Q)\n"
+    "point Y = meet (join B C) (join P Q)\nprove equallength M X M Y",
+    # two conclusions, the second a ratio of segments that the counterexample makes non-parallel: the first fails,
+    # so the counterexample stands although the core has no ratio of non-parallel segments
+    "points A B C\npoint O = midpoint A B\npoint G = meet (join A (midpoint B C)) (join B (midpoint C A))\n"
+    "point H = meet (perpendicular (join B C) A) (perpendicular (join C A) B)\nprove collinear O G H\n"
+    "prove equal (segratio O G G H) 1/2",
+])
+def test_counterexamples_of_false_variants_are_confirmed_by_the_core(text):
+    v = prove(parse_statement(text, name="variant"))
+    assert v.refuted and v.counterexample.recheck()

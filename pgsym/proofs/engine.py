@@ -650,8 +650,18 @@ def _exact_pass(claim: Claim, deadline: _Deadline, rank_witness: list[Any], back
 
 # -- the core check -------------------------------------------------------------------------
 
-def _core_objects(claim: Claim, point: dict[Any, Any]) -> dict[Node, Any]:
-    """Build the configuration with pgsym's own objects at an exact rational point."""
+def _core_objects(claim: Claim, point: dict[Any, Any], quantities_may_fail: bool = False,
+                  values: dict[Node, Any] | None = None) -> dict[Node, Any]:
+    """Build the configuration with pgsym's own objects at an exact rational point.
+
+    With the formulas' ``values``, a point ``P + t·Q`` (``Operation.on_span``) is the formula's point when it lies
+    on the core's line PQ: which point of the line it is depends on the representatives of P and Q, which the
+    core chooses its own way, and the parameter t is free anyway.
+
+    With ``quantities_may_fail``, a ratio the core cannot build here (a ratio of segments that a counterexample
+    has made non-parallel) is left out, as a quantity without a core counterpart is: it is no object of the
+    configuration, and the conclusion's own polynomial still decides.
+    """
     R = _converter(claim).R
     frac = _point_evaluator(claim, R, point)
 
@@ -665,10 +675,25 @@ def _core_objects(claim: Claim, point: dict[Any, Any]) -> dict[Node, Any]:
         a = [objs.get(x) for x in node.args if isinstance(x, Node)]
         if build is None or any(x is None for x in a):
             continue
-        obj = build(node, a, exact)
+        try:
+            obj = build(node, a, exact)
+        except (PgsymError, CoreDegenerate):
+            if quantities_may_fail and node.kind == "ratio":
+                continue
+            raise
+        if values is not None and node.operation.on_span and obj is not None:
+            obj = _on_core_span(node, a, values[node], obj)
         if obj is not None:
             objs[node] = obj
     return objs
+
+
+def _on_core_span(node: Node, args: list[Any], value: Any, own: Any) -> Any:
+    """The formula's point as a core object when it lies in the span of the core's arguments, else the core's own."""
+    vec = [sympy.Rational(x.numerator, x.denominator) for x in flat(value)]
+    if sympy.Matrix([list(x.coords) for x in args] + [vec]).rank() > len(args):
+        return own  # not on the core's line: _agree reports the mismatch
+    return type(own)(*vec)
 
 
 def _core_value(obj: Any) -> list[Fraction]:
@@ -704,11 +729,11 @@ def _core_check(claim: Claim, rng: random.Random, deadline: _Deadline) -> str:
     for _ in range(8):
         deadline.check("comparing with pgsym's core objects")
         point = _random_point(claim, rng, 9)
+        values = _evaluate(claim, _point_evaluator(claim, R, point))
         try:
-            objs = _core_objects(claim, point)
+            objs = _core_objects(claim, point, values=values)
         except (PgsymError, CoreDegenerate):
             continue
-        values = _evaluate(claim, _point_evaluator(claim, R, point))
         bad = _agree(claim, objs, values)
         if bad is not None:
             return f"MISMATCH at {bad}"
@@ -806,11 +831,11 @@ def recheck_counterexample(claim: Claim, values: dict[str, Any]) -> bool:
     polynomials are evaluated exactly.
     """
     point = {s: Fraction(values[str(s)]) for s in claim.parameters}
+    vals = _evaluate(claim, _point_evaluator(claim, _converter(claim).R, point))
     try:
-        objs = _core_objects(claim, point)
+        objs = _core_objects(claim, point, quantities_may_fail=True, values=vals)
     except (PgsymError, CoreDegenerate):
         return False
-    vals = _evaluate(claim, _point_evaluator(claim, _converter(claim).R, point))
     if _agree(claim, objs, vals) is not None:
         return False
     if not _on_hypotheses(claim, point):

@@ -103,6 +103,9 @@ class Operation:
       homography maps the family of its values onto the family for the mapped arguments (the parameter changes
       by an invertible substitution), since a generic statement then holds for one family exactly when for the
       other;
+    * ``on_span``: the value is a combination ``s·P + t·Q`` of the arguments' representatives, so which point of
+      their span it is depends on the representatives: the core check takes the formula's point once it lies in
+      the span of the core's own arguments;
     * ``conclusion``: the value is a quantity of a conclusion (zero exactly when the statement holds, e.g. the
       reciprocal product of two lines that meet), so it vanishes identically on a true claim and is never a
       degenerate construction.
@@ -122,6 +125,7 @@ class Operation:
     aliases: tuple[str, ...] = field(default=())
     group: str | None = "projective"
     conclusion: bool = False
+    on_span: bool = False
 
     def result_kind(self, arg_kinds: Sequence[str]) -> str:
         """The kind of the result for arguments of the given kinds."""
@@ -397,7 +401,7 @@ _TABLE = (
     Operation("combine", (_VECTOR_KINDS, _VECTOR_KINDS), 0, _combine,
               lambda n, d: f"{d[0]}·{n[0]} + {d[1]}·{n[1]}",
               lambda n, name, d: [f"{name} is not the zero vector ({n[0]} ≠ {n[1]})"],
-              core=_combine_core, same_kind=True, coefficients=True, group=None),
+              core=_combine_core, same_kind=True, coefficients=True, group=None, on_span=True),
     Operation("plane_through", (_POINT3,) * 3, "plane", lambda node, v, scalar: alg.plane_through(*v),
               lambda n, d: f"plane({', '.join(n)})", lambda n, name, d: [f"{', '.join(n)} are not collinear"],
               core=lambda node, a, exact: space.plane_through(*a)),
@@ -453,7 +457,7 @@ _TABLE = (
               lambda node, value, args: [_pairs(args[0], args[1])],
               core=lambda node, a, exact: _vector(node.kind, (x + exact(node.data[0]) * y
                                                               for x, y in zip(a[0].coords, a[1].coords, strict=True))),
-              same_kind=True, coefficients=True),
+              same_kind=True, coefficients=True, on_span=True),
     Operation("point_of_line", (_LINE,), "point",
               lambda node, v, scalar: alg.cross(v[0], _moment(scalar(node.data[0]))),
               lambda n, d: f"{n[0]} × (1, {d[0]}, {d[0]}²)", lambda n, name, d: [f"{name} is a point of {n[0]}"],
