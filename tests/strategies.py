@@ -256,3 +256,38 @@ def conic_statement_programs(draw) -> tuple[str, int]:
         seen = [" ".join(f"(join {o} {x})" for x in abcd) for o in (p, q)]
         text.append(f"prove equal (crossratio {seen[0]}) (crossratio {seen[1]})")
     return "\n".join(text) + "\n", draw(st.integers(0, 2**16))
+
+
+@st.composite
+def euclidean_programs(draw, max_steps: int = 3) -> dict:
+    """A random program of Euclidean constructions on four free points (see test_proofs_euclidean): steps
+    ``(operation, i, j, k)`` on earlier points by index, and a conclusion ``(predicate, indices)``."""
+    ops = ["midpoint", "foot", "reflect_line", "reflect_point", "circumcentre", "orthocentre", "translate", "rotate",
+           "invert"]
+    steps = draw(st.lists(st.tuples(st.sampled_from(ops), st.integers(0, 20), st.integers(0, 20),
+                                    st.integers(0, 20)), min_size=1, max_size=max_steps))
+    predicates = ["collinear", "perpendicular", "parallel", "equallength", "concyclic", "equalangle", "unit",
+                  "equalarea", "area",
+                  # true statements on the program's points, so that proofs are compared too
+                  "foot-perpendicular", "mirror-length", "circumcentre-length", "inverse-on-ray", "rotation-angle"]
+    conclusion = (draw(st.sampled_from(predicates)), draw(st.lists(st.integers(0, 30), min_size=6, max_size=6)))
+    return {"steps": steps, "conclusion": conclusion}
+
+
+@st.composite
+def euclidean_arguments(draw, kinds: tuple[str, ...]) -> list:
+    """Random rational data of the given kinds ("point": finite (x, y, w), "line": (a, b, c) not at infinity,
+    "circle": a real circle's matrix), with a random nonzero scale for each (to test representatives)."""
+    out = []
+    for kind in kinds:
+        if kind == "point":
+            w = draw(st.integers(1, 5)) * draw(st.sampled_from([1, -1]))
+            out.append((draw(integers(9)), draw(integers(9)), w))
+        elif kind == "line":
+            a, b = draw(integers(9)), draw(integers(9))
+            out.append((a or 1, b, draw(integers(9))))
+        else:
+            cx, cy, r = draw(integers(5)), draw(integers(5)), draw(st.integers(1, 6))
+            out.append(((1, 0, -cx), (0, 1, -cy), (-cx, -cy, cx * cx + cy * cy - r * r)))
+    scales = [draw(nonzero_rationals(5, 4)) for _ in kinds]
+    return [out, scales]
