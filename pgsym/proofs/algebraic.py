@@ -118,6 +118,8 @@ class Root:
 class _Algebraic:
     roots: list[Root] = field(default_factory=list)
     readings: list[Callable[[dict[sympy.Symbol, int]], str]] = field(default_factory=list)
+    # (object, its arguments, the candidates pgsym's core builds from their exact values) for the core check
+    core: list[tuple[Node, tuple[Node, ...], Callable[..., Any]]] = field(default_factory=list)
 
 
 def _data(claim: Claim) -> _Algebraic:
@@ -144,9 +146,20 @@ def _new_root(claim: Claim, name: str, kind: str, text: str, named: bool, **kw: 
                               "the exact evaluation visits every choice of their signs")
     (sym,) = claim.params(name)
     node = claim._free(f"_{name}", "scalar", (sym,))
+    node.root = True  # type: ignore[attr-defined]  # normalisation: not a free object, fixed by its equation
     root = Root(sym, node, kind, text, named, **kw)
     data.roots.append(root)
     return root
+
+
+def _similar(node: Node) -> Node:
+    """Mark a construction as commuting with the orientation-preserving similarities (the frame A = (0, 0),
+    B = (1, 0) of :mod:`~pgsym.proofs.normalisation`): a bisector stays the bisector of the same kind (lengths
+    scale by k > 0, so the named roots stay positive), the common points of a line and a circle or two circles
+    and the tangents from a point go to those of the images (either root: the pair is what is mapped), and a
+    rotation by a fixed angle commutes with every direct similarity."""
+    node.group = "similarity"  # type: ignore[attr-defined]
+    return node
 
 
 # -- coordinates --------------------------------------------------------------------------------------------
@@ -187,16 +200,23 @@ def _bisector(claim: Claim, name: str, a: Any, b: Any, c: Any, internal: bool) -
         return alg.cross(pb, (ux, uy, ux - ux))
 
     word = "internal" if internal else "external"
-    node = claim.formula(name, "line", line, a, b, c, dba.node, dbc.node,
+    node = _similar(claim.formula(name, "line", line, a, b, c, dba.node, dbc.node,
                          description=f"{word} bisector of ∠{a.name}{b.name}{c.name}",
                          conditions=[f"{a.name} ≠ {b.name}, {c.name} ≠ {b.name} and {a.name}, {b.name}, {c.name} "
-                                     f"not on one line through {b.name} in opposite directions ({name} is defined)"])
+                                     f"not on one line through {b.name} in opposite directions ({name} is defined)"]))
 
     def reading(signs: dict[sympy.Symbol, int]) -> str:
         same = signs[dba.symbol] * signs[dbc.symbol] * sgn > 0
         return f"{name} is the {'internal' if same else 'external'} bisector of ∠{a.name}{b.name}{c.name}"
 
     _data(claim).readings.append(reading)
+
+    def core(pa: Any, pb: Any, pc: Any) -> tuple[Any, ...]:
+        from .. import metric, projective_plane
+
+        return metric.angle_bisectors(projective_plane.join(pb, pa), projective_plane.join(pb, pc))
+
+    _data(claim).core.append((node, (a, b, c), core))
     return node
 
 
@@ -278,13 +298,24 @@ def _meet_points(claim: Claim, names: Sequence[str], l: Node | None, k: Node, m:
             return _line_conic(line_of(vl, vk, vm), vk, e, sgn)
 
         desc = f"{'the other' if sgn < 0 else 'a'} common point of {what}"
-        out.append(claim.formula(name, "point", point, *base, root.node, description=desc,
-                                 conditions=[f"{what} meet ({name} is defined)"]))
+        out.append(_similar(claim.formula(name, "point", point, *base, root.node, description=desc,
+                                          conditions=[f"{what} meet ({name} is defined)"])))
     root.text += "; " + (f"{names[0]} takes +e, {names[1]} −e" if len(names) > 1 else f"{names[0]} takes +e")
+
+    def core(*objs: Any) -> tuple[Any, ...]:
+        from ..conics import Conic
+
+        if m is None:
+            return Conic(objs[1]).intersections(objs[0])
+        return Conic(objs[0]).intersections(Conic(objs[1]))
+
+    for node in out:
+        _data(claim).core.append((node, tuple(base), core))
     readers = list(zip(names, (1, -1), strict=False))
     _data(claim).readings.append(
-        lambda signs: ", ".join(f"{n} = the {'first' if signs[root.symbol] * s > 0 else 'second'} root "
-                                f"(+e ↦ {'+' if signs[root.symbol] * s > 0 else '−'})" for n, s in readers))
+        lambda signs: ", ".join(f"{n} = (−β {'+' if signs[root.symbol] * s > 0 else '−'} √Δ)·P + α·Q, the "
+                                f"{'first' if signs[root.symbol] * s > 0 else 'second'} common point of {what}"
+                                for n, s in readers))
     return out
 
 
@@ -336,7 +367,16 @@ def _tangents(claim: Claim, names: Sequence[str], p: Any, k: Any) -> list[Node]:
     polar = claim.polar(f"_polar_{k.name}_{p.name}_{'_'.join(names)}", k, p)
     touch = _meet_points(claim, [f"_touch_{n}" for n in names], polar, k, None,
                          f"the polar of {p.name} and {k.name}")
-    return [claim.join(n, p, t) for n, t in zip(names, touch, strict=True)]
+    lines = [claim.join(n, p, t) for n, t in zip(names, touch, strict=True)]
+
+    def core(pp: Any, kk: Any) -> tuple[Any, ...]:
+        from ..conics import Conic
+
+        return Conic(kk).tangents_from(pp)
+
+    for line in lines:
+        _data(claim).core.append((line, (p, k), core))
+    return lines
 
 
 def tangent_from(self: Claim, name: str, p: Any, k: Any) -> Node:
@@ -412,8 +452,25 @@ def _turn(claim: Claim, name: str, x: Node, o: Node, turns: Fraction, powers: Se
         two_w = 2 * px[2]
         return (two_w * po[0] + cr * u[0] - ci * u[1], two_w * po[1] + ci * u[0] + cr * u[1], two_w * po[2])
 
-    return claim.formula(name, "point", rotated, *args, description=description,
-                         conditions=[f"{x.name} and {o.name} are finite points"])
+    node = _similar(claim.formula(name, "point", rotated, *args, description=description,
+                                  conditions=[f"{x.name} and {o.name} are finite points"]))
+
+    def core(px: Any, po: Any) -> tuple[Any, ...]:
+        from .. import metric
+        from ..projective_plane import Point
+
+        angle = 2 * sympy.pi * turns
+        step = metric.rotation(sympy.cos(angle), sympy.sin(angle), po)
+        (ox, oy), total, current = po.dehomogenize(), [0, 0], px
+        for j in range(max(powers) + 1):  # O + Σ_j R^j (X − O) over the powers, walking round O
+            if j in powers:
+                cx, cy = current.dehomogenize()
+                total = [total[0] + cx - ox, total[1] + cy - oy]
+            current = step(current)
+        return (Point(ox + total[0], oy + total[1]),)
+
+    _data(claim).core.append((node, (x, o), core))
+    return node
 
 
 def rotate_degrees(self: Claim, name: str, x: Any, o: Any, degrees: int) -> Node:
@@ -444,7 +501,7 @@ def polygon_vertex(self: Claim, name: str, a: Any, b: Any, n: int, k: int) -> No
         raise ObjectTypeError(f"polygon: n is an integer from 3 to {MAX_POLYGON} and k an integer, got {n!r}, {k!r}")
     k %= n
     return _turn(self, name, b, a, Fraction(1, n), range(k), f"vertex {k} of the regular {n}-gon {a.name} {b.name} …") \
-        if k else self.formula(name, "point", lambda p: p, a, description=f"vertex 0 of the regular {n}-gon")
+        if k else _similar(self.formula(name, "point", lambda p: p, a, description=f"vertex 0 of the regular {n}-gon"))
 
 
 # -- the proof -------------------------------------------------------------------------------------------
@@ -480,14 +537,22 @@ class _Tower:
         return p
 
 
-def _evaluate(claim: Claim, scalar: Callable[[Any], Any], tower: _Tower, deadline: Any) -> dict[Node, Any]:
-    from .engine import _map
+def _evaluate(claim: Claim, scalar: Callable[[Any], Any], tower: _Tower, deadline: Any,
+              estimate: bool = False) -> dict[Node, Any]:
+    """Every object's value, reduced modulo the roots' equations as they appear; with ``estimate`` a construction
+    that would need more than the engine's MAX_WORK term products raises before it starts (a product in C cannot
+    be interrupted by the time limit)."""
+    from .engine import MAX_WORK, _estimate, _map, _TooLarge
 
     by_node = {r.node: r for r in roots_of(claim)}
     values: dict[Node, Any] = {}
     for node in claim.nodes.values():
         deadline.check(f"constructing {node.name}")
         args = [values[a] for a in node.args if isinstance(a, Node)]
+        if estimate:
+            work = _estimate(lambda v, node=node: node.operation.formula(node, v, scalar), args, tower.R)
+            if work is not None and work > MAX_WORK:
+                raise _TooLarge(f"{node.name} would need about {work:.1e} term products")
         values[node] = _map(node.operation.formula(node, args, scalar), tower.reduce)
         if node in by_node:
             tower.add(by_node[node], values)
@@ -507,6 +572,12 @@ def _sympy_value(R: PolynomialRing, p: Any, sub: dict[sympy.Symbol, Any]) -> sym
     if isinstance(p, (int, Fraction)):
         return sympy.Rational(p)
     return R.to_expr(p).xreplace(sub)
+
+
+def _radical_zeta(modulus: int) -> bool:
+    """SymPy writes cos and sin of 2π/M with radicals (M | 24 or M | 20, and a few more)."""
+    angle = 2 * sympy.pi / modulus
+    return not (sympy.cos(angle) + sympy.I * sympy.sin(angle)).has(sympy.cos, sympy.sin)
 
 
 def _zeta_value(modulus: int) -> sympy.Expr:
@@ -620,6 +691,54 @@ def recheck_branch(claim: Claim, values: dict[str, Any], branch: dict[str, str])
     return kind == "fails"
 
 
+def _proportional(u: Sequence[Any], v: Sequence[Any]) -> bool:
+    return all(is_zero(sympy.expand(u[i] * v[j] - u[j] * v[i])) for i in range(len(u)) for j in range(i + 1, len(u)))
+
+
+def _core_object(node: Node, value: Any, tower: _Tower, branch: _Branch) -> Any:
+    """A point, line or conic matrix of pgsym's core with the exact coordinates of ``value`` on the branch."""
+    from ..projective_plane import Line, Point
+    from .operations import flat
+
+    if node.kind == "conic":
+        return sympy.Matrix([[_sympy_value(tower.R, x, branch.values) for x in row] for row in value])
+    coords = [_sympy_value(tower.R, x, branch.values) for x in flat(value)]
+    return (Point if node.kind == "point" else Line)(*coords)
+
+
+def _core_check(claim: Claim, rng: random.Random, deadline: Any) -> str:
+    """At a rational instance, on the named branch, every algebraic object must be one of the objects pgsym's
+    core builds from the same exact arguments (``metric.angle_bisectors``, ``Conic.intersections``,
+    ``Conic.tangents_from``, ``metric.rotation``), so the proof's formulas and the library cannot drift."""
+    from .operations import flat
+
+    records = _data(claim).core
+    if not records:
+        return "not needed"
+    slow = [r.modulus for r in roots_of(claim) if r.kind == "unity" and not _radical_zeta(r.modulus)]
+    if slow:  # exact decisions about roots of unity without radicals (cos 2π/7, …) take too long
+        return f"skipped: e^(2πi/{slow[0]}) has no expression in radicals here"
+    for _ in range(8):
+        deadline.check("comparing with pgsym's core objects")
+        point, tower, values = _instance(claim, rng, 6, deadline)
+        branch = next((b for b in _branches(claim, tower, values, point) if b.named), None)
+        if branch is None:
+            continue
+
+        try:
+            for node, args, build in records:
+                mine = [_sympy_value(tower.R, x, branch.values) for x in flat(values[node])]
+                candidates = build(*(_core_object(a, values[a], tower, branch) for a in args))
+                if not any(_proportional(mine, list(c.coords)) for c in candidates):
+                    return f"MISMATCH at {node.name}"
+        except PgsymError as err:  # a degenerate instance or an undecidable cos(2π/7): try another
+            last = str(err)
+            continue
+        return f"{len(records)} algebraic objects agree with pgsym's core at a rational instance (named branch)"
+    return "skipped: no rational instance where the core could build every object" + (
+        f" ({last[:80]})" if "last" in locals() else "")
+
+
 def prove_algebraic(claim: Claim, timeout: float | None = 10.0, seed: int = 0, instances: int = 4,
                     backend: str | None = None) -> Any:
     """Decide a claim with square roots (called by :func:`pgsym.proofs.engine.prove` when the claim has roots).
@@ -629,7 +748,7 @@ def prove_algebraic(claim: Claim, timeout: float | None = 10.0, seed: int = 0, i
     every choice of signs of the roots: false (with the branch) when the named branch fails, unknown when only
     another branch fails. ``backend`` chooses the polynomial arithmetic as in :func:`~pgsym.proofs.engine.prove`.
     """
-    from .engine import _alarm, _Deadline, _rng, _Timeout
+    from .engine import _alarm, _Deadline, _rng, _Timeout, _TooLarge
     from .verdicts import Certificate, Condition, Counterexample, Status, Verdict
 
     start = time.perf_counter()
@@ -651,18 +770,21 @@ def prove_algebraic(claim: Claim, timeout: float | None = 10.0, seed: int = 0, i
     try:
         with _alarm(timeout):
             from .engine import _conclusion_polys
+            from .normalisation import normalise
 
-            params = [p for p in claim.parameters if p not in rootsyms]
+            norm, _why = normalise(claim)
+            sub = norm.substitution if norm is not None else {}
+            params = [p for p in claim.parameters if p not in rootsyms and p not in sub]
             tower = _Tower(claim, params, backend)
             R = tower.R
             cache: dict[Any, Any] = {}
 
             def conv(e: Any) -> Any:
                 if e not in cache:
-                    cache[e] = R(e)
+                    cache[e] = R(sympy.sympify(e).xreplace(sub) if sub else e)
                 return cache[e]
 
-            values = _evaluate(claim, conv, tower, deadline)
+            values = _evaluate(claim, conv, tower, deadline, estimate=True)
             reqs = _requirements(claim, values)
             conditions = []
             for text, polys in reqs:
@@ -672,9 +794,11 @@ def prove_algebraic(claim: Claim, timeout: float | None = 10.0, seed: int = 0, i
                                 "value of the parameters and every choice of root)", branches="no decision")
                 if not text.endswith("is not the zero vector"):
                     conditions.append(Condition(text, raw=[p for p in polys if p != 0][:3]))
+            if norm is not None and norm.condition:
+                conditions.append(Condition(f"{norm.condition} (frame)"))
             steps = ["triangular set (lex, roots first; a Gröbner basis): " + "; ".join(tower.text)]
             failing = None
-            for label, poly in _conclusion_polys(claim, values):
+            for label, poly in _conclusion_polys(claim, values, ring=R):
                 deadline.check("reducing the conclusion")
                 if poly == 0:
                     steps.append(f"{label} reduces to 0 modulo the defining equations")
@@ -694,20 +818,32 @@ def prove_algebraic(claim: Claim, timeout: float | None = 10.0, seed: int = 0, i
                                           "triangular set with unit initials)", R.field + f"[{len(R.symbols)} "
                                           "variables, lex, roots first]", steps,
                                           max((R.nterms(p) for p in entries), default=0), backend=R.backend,
-                                          largest_degree=max((R.degree(p) for p in entries), default=0))
+                                          largest_degree=max((R.degree(p) for p in entries), default=0),
+                                          normalisation="" if norm is None else norm.describe())
+                core = _core_check(claim, _rng(claim, seed), deadline)
+                if core.startswith("MISMATCH"):
+                    return done(Status.UNKNOWN, core_check=core, branches="no decision",
+                                reason=f"pgsym's core and the proof formulas disagree ({core})")
                 return done(Status.PROVED, method=certificate.method, certificate=certificate,
-                            conditions=conditions, branches=_every_root(roots))
+                            conditions=conditions, branches=_every_root(roots), core_check=core)
             named = _named_branch_proof(claim, values, tower, deadline)
             if named is not None:
                 text, lines = named
                 certificate = Certificate("ideal membership on the named branch: the named roots replaced by their "
                                           "rational values there, then reduction modulo the remaining equations",
                                           R.field + f"[{len(R.symbols)} variables, lex, roots first]",
-                                          [*steps, *lines], 0, backend=R.backend)
+                                          [*steps, *lines], 0, backend=R.backend,
+                                          normalisation="" if norm is None else norm.describe())
+                core = _core_check(claim, _rng(claim, seed), deadline)
+                if core.startswith("MISMATCH"):
+                    return done(Status.UNKNOWN, core_check=core, branches="no decision",
+                                reason=f"pgsym's core and the proof formulas disagree ({core})")
                 return done(Status.PROVED, method=certificate.method, certificate=certificate,
-                            conditions=conditions, branches=text)
+                            conditions=conditions, branches=text, core_check=core)
             return _sample(claim, failing, R, rng=_rng(claim, seed), instances=instances, deadline=deadline,
                            done=done, counterexample=Counterexample)
+    except _TooLarge as err:
+        return done(Status.UNKNOWN, reason=f"the expansion is too large: {err.args[0]}", branches="no decision")
     except _Timeout as err:
         stage = err.args[0] if err.args else "working"
         return done(Status.UNKNOWN, reason=f"timed out after {timeout} s while {stage}", branches="no decision")
@@ -829,6 +965,21 @@ def _every_root(roots: list[Root]) -> str:
     return "proved for every choice of root: " + "; ".join(parts)
 
 
+def _coordinates(claim: Claim, tower: _Tower, values: dict[Node, Any], branch: _Branch) -> str:
+    """The exact coordinates of the claim's algebraic points on a branch, as text ("; X = (1, 2 + √3)")."""
+    from .operations import flat
+
+    out = []
+    for node, _args, _build in _data(claim).core:
+        if node.kind != "point" or node.name.startswith("_"):
+            continue
+        x, y, w = (_sympy_value(tower.R, v, branch.values) for v in flat(values[node]))
+        if w == 0 or is_zero(w):
+            continue
+        out.append(f"{node.name} = ({sympy.radsimp(x / w)}, {sympy.radsimp(y / w)})")
+    return "; " + "; ".join(out) if out else ""
+
+
 def _sample(claim: Claim, failing: tuple[str, Any], R0: PolynomialRing, rng: random.Random, instances: int,
             deadline: Any, done: Callable[..., Any], counterexample: Any) -> Any:
     from .verdicts import Status
@@ -847,6 +998,7 @@ def _sample(claim: Claim, failing: tuple[str, Any], R0: PolynomialRing, rng: ran
             continue
         for b, (kind, residuals) in results:
             if kind == "fails" and b.named:
+                b.text += _coordinates(claim, tower, values, b)
                 ce = counterexample({str(s): Fraction(int(v.p), int(v.q)) for s, v in point.items()},
                                     residuals, claim, branch={str(s): str(v) for s, v in b.values.items()})
                 return done(Status.FALSE, counterexample=ce,
@@ -854,6 +1006,7 @@ def _sample(claim: Claim, failing: tuple[str, Any], R0: PolynomialRing, rng: ran
                             reason=f"the conclusion fails on the named branch ({b.text})",
                             branches=f"fails on the named branch: {b.text}")
             if kind == "fails" and other_failure is None:
+                b.text += _coordinates(claim, tower, values, b)
                 other_failure = (point, b, residuals)
         seen += 1
         if seen >= instances:
