@@ -262,11 +262,12 @@ def test_one_unnamed_intersection_must_work_for_both_roots():
 def test_tangents_from_an_external_point_have_equal_length():
     c = Claim("tangent-lengths", "the two tangents from a point have equal length")
     O, A, P = (c.free_point(n) for n in "OAP")
-    K = c.formula("K", "conic", circle, O, A)
+    K = c.circle("K", O, A)
     S, T = c.line_conic_intersections(("S", "T"), c.polar("p", K, P), K)
-    c.conclude_equal_ratio(c.formula("PS", "ratio", dist2, P, S), c.formula("PT", "ratio", dist2, P, T))
+    c.conclude_equal_ratio(c.dist2("PS", P, S), c.dist2("PT", P, T))
     v, t = timed(c)
     assert v.proved and t < 10
+    assert "similarity frame" in v.certificate.normalisation  # O = (0, 0), A = (1, 0) without loss of generality
 
 
 def test_the_tangents_from_a_point_touch_the_circle():

@@ -81,6 +81,7 @@ __all__ = [
     "polygon_vertex",
     "prove_algebraic",
     "recheck_branch",
+    "roots_of",
     "rotate_degrees",
     "tangent_from",
     "tangents_from",
@@ -357,7 +358,14 @@ def circle_intersection(self: Claim, name: str, k: Any, m: Any) -> Node:
 
 
 def circle_intersections(self: Claim, names: Sequence[str], k: Any, m: Any) -> list[Node]:
-    """Both common points of two circles K and M, in either order (the circles must not be concentric)."""
+    """Both common points of two circles K and M, in either order (the circles must not be concentric).
+
+    >>> c = Claim("x", "x")
+    >>> K = c.conic("K", [[1, 0, 0], [0, 1, 0], [0, 0, -1]])
+    >>> M = c.conic("M", [[1, 0, -1], [0, 1, 0], [-1, 0, -3]])
+    >>> [n.description for n in c.circle_intersections(("X", "Y"), K, M)]
+    ['a common point of K and M', 'the other common point of K and M']
+    """
     k, m = (self._get(x, ("conic",), "intersections") for x in (k, m))
     return _meet_points(self, list(names)[:2], None, k, m, f"{k.name} and {m.name}")
 
@@ -392,7 +400,13 @@ def tangent_from(self: Claim, name: str, p: Any, k: Any) -> Node:
 
 
 def tangents_from(self: Claim, names: Sequence[str], p: Any, k: Any) -> list[Node]:
-    """Both tangents from P to K, in either order."""
+    """Both tangents from P to K, in either order (one root: the two points where the polar of P meets K).
+
+    >>> c = Claim("x", "x")
+    >>> K = c.conic("K", [[1, 0, 0], [0, 1, 0], [0, 0, -1]])
+    >>> [n.name for n in c.tangents_from(("s", "t"), c.free_point("P"), K)], len(roots_of(c))
+    (['s', 't'], 1)
+    """
     return _tangents(self, list(names)[:2], p, k)
 
 
@@ -671,7 +685,14 @@ def _instance(claim: Claim, rng: random.Random, bound: int, deadline: Any):
 
 def recheck_branch(claim: Claim, values: dict[str, Any], branch: dict[str, str]) -> bool:
     """True when, at these rational parameters and these exact values of the roots, the roots satisfy their
-    defining equations, the constructions are defined and the conclusion fails (exact arithmetic throughout)."""
+    defining equations, the constructions are defined and the conclusion fails (exact arithmetic throughout).
+
+    >>> c = Claim("x", "x")
+    >>> A, B, C = (c.point(n, *xy) for n, xy in zip("ABC", ((0, 0), (4, 0), (0, 3))))
+    >>> c.conclude_incident(c.point("P", 1, 1), c.angle_bisector("a", B, A, C))   # the internal one: true
+    >>> recheck_branch(c, {}, {"d_A_B": "4", "d_A_C": "3"}), recheck_branch(c, {}, {"d_A_B": "4", "d_A_C": "-3"})
+    (False, True)
+    """
     from .engine import _Deadline
 
     roots = {str(r.symbol): r for r in roots_of(claim)}
@@ -747,6 +768,12 @@ def prove_algebraic(claim: Claim, timeout: float | None = 10.0, seed: int = 0, i
     after a non-degeneracy condition); otherwise evaluated exactly at ``instances`` random rational instances on
     every choice of signs of the roots: false (with the branch) when the named branch fails, unknown when only
     another branch fails. ``backend`` chooses the polynomial arithmetic as in :func:`~pgsym.proofs.engine.prove`.
+
+    >>> c = Claim("x", "x")
+    >>> A, B, C = (c.free_point(n) for n in "ABC")
+    >>> c.conclude_perpendicular(c.angle_bisector("b", A, B, C), c.external_bisector("e", A, B, C))
+    >>> prove_algebraic(c).branches[:33]
+    'proved for every choice of root: '
     """
     from .engine import _alarm, _Deadline, _rng, _Timeout, _TooLarge
     from .verdicts import Certificate, Condition, Counterexample, Status, Verdict
