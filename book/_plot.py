@@ -232,3 +232,45 @@ def involution_on_a_line(vertices, pairs, y=0.0):
     ax.set_title("Desargues's involution: opposite sides meet $l$ in pairs of one involution", fontsize=9)
     plt.show()
     return drawn
+
+
+def euclidean_figure(points, *, segments=(), lines=(), circles=(), highlight=(), title="", size=(5.6, 4.8),
+                     pad=1.0):
+    """Draw a Euclidean configuration from coordinates (exact numbers are converted to floats here).
+
+    ``points`` maps names to ``(x, y)``; ``segments`` is a list of ``(P, Q, color)`` drawn between two named
+    points, ``lines`` a list of ``(P, Q, color)`` drawn through them across the whole figure, ``circles`` a
+    list of ``(centre, r², color)`` with ``centre`` a name or ``(x, y)``. Points named in ``highlight`` are red.
+    Returns the radii drawn, for the calling cell to compare with its exact squared radii.
+    """
+    pts = {n: np.array([float(c) for c in p]) for n, p in points.items()}
+    xs, ys = zip(*pts.values(), strict=True)
+    lo, hi = np.array([min(xs), min(ys)]) - pad, np.array([max(xs), max(ys)]) + pad
+    radii = []
+    for centre, r2, _color in circles:
+        c = pts[centre] if isinstance(centre, str) else np.array([float(v) for v in centre])
+        r = float(np.sqrt(float(r2)))
+        radii.append(r)
+        lo, hi = np.minimum(lo, c - r - pad / 2), np.maximum(hi, c + r + pad / 2)
+    _fig, ax = plt.subplots(figsize=size)
+    t = np.linspace(0, 2 * np.pi, 400)
+    for (centre, _r2, color), r in zip(circles, radii, strict=True):
+        c = pts[centre] if isinstance(centre, str) else np.array([float(v) for v in centre])
+        ax.plot(c[0] + r * np.cos(t), c[1] + r * np.sin(t), color=color, lw=1.2)
+    span = float(np.max(hi - lo))
+    for p, q, color in lines:
+        a, b = pts[p], pts[q]
+        d = (b - a) / np.linalg.norm(b - a)
+        ax.plot(*np.array([a - 3 * span * d, a + 3 * span * d]).T, color=color, lw=1.0)
+    for p, q, color in segments:
+        ax.plot(*np.array([pts[p], pts[q]]).T, color=color, lw=1.2)
+    for name, p in pts.items():
+        color = "tab:red" if name in highlight else "black"
+        ax.plot(*p, "o", color=color, ms=4)
+        ax.annotate(name, p, xytext=(4, 4), textcoords="offset points", fontsize=9, color=color)
+    ax.set_xlim(lo[0], hi[0])
+    ax.set_ylim(lo[1], hi[1])
+    ax.set_aspect("equal")
+    ax.set_title(title, fontsize=9)
+    plt.show()
+    return radii

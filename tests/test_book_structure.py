@@ -43,7 +43,7 @@ EXERCISES = """() => Array.from(document.querySelectorAll("div.exercise")).map(e
 def test_the_lecture_chapters_are_found():
     chapters = lecture_chapters()
     assert "book/homogeneous-coordinates" in chapters and "book/rectification" in chapters
-    assert len(chapters) == 17 and "book/exercise-sheets" not in chapters and "book/pgsym-errors" not in chapters
+    assert len(chapters) == 18 and "book/exercise-sheets" not in chapters and "book/pgsym-errors" not in chapters
     assert "book/intro" not in chapters and all(page in toc_pages() for page in chapters)
 
 
