@@ -56,6 +56,10 @@ def test_notebook_is_committed_executed(path):
     counts = [c.execution_count for c in code]
     assert counts == list(range(1, len(code) + 1)), "execute the notebook top to bottom in one fresh kernel"
     assert not any(o.get("output_type") == "error" for c in code for o in c.outputs)
+    # a warning on stderr (a glyph missing from the figure's font, a deprecation) shows the reader the
+    # machine's file paths and says something went wrong: chapters print none
+    stderr = [o.get("text", "")[:120] for c in code for o in c.outputs if o.get("name") == "stderr"]
+    assert stderr == [], f"outputs on stderr: {stderr}"
     assert nb.metadata.kernelspec.name == "python3"
 
 
