@@ -45,7 +45,12 @@ SECTION_B = ("anglebisector", "exbisector", "intersection", "intersections", "ta
 _DEGREES = re.compile(r"\brotate\s+\S+\s+\S+\s+-?\d+\s*(?:\)|$)", re.M)
 
 # name -> why the engine cannot decide it yet (reported as xfail; still never wrong)
-KNOWN_OPEN: dict[str, str] = {}
+_TOO_LARGE = "the polynomial expansion is too large for the engine (no frame reduces it enough)"
+KNOWN_OPEN: dict[str, str] = {
+    "blazek-pech": _TOO_LARGE + ": four feet of a point of a circle through a Miquel point",
+    "inversion-circle-circle": _TOO_LARGE + ": the concyclicity of four inverted points of a circle",
+    "miquel-six-circles": _TOO_LARGE + ": a chain of five circles through one another's points",
+}
 
 
 def needs_roots(text: str) -> bool:
@@ -377,10 +382,32 @@ def value(inst: Instance, e: Any) -> Value:
     return OPERATIONS[op](inst, args)
 
 
-def _pt(inst, e):
+def _point(xy: tuple[Any, ...]) -> Value:
+    """A point value: homogeneous (x, y, w), w = 1 for the affine points the constructions make."""
+    return Value("point", tuple(xy) if len(xy) == 3 else (xy[0], xy[1], 1))
+
+
+def _hpt(inst, e):
     v = value(inst, e)
     assert v.kind == "point", v
     return v.v
+
+
+def affine(F, p):
+    if F.zero(p[2], abs(p[0]) + abs(p[1])):
+        raise Undefined("a point at infinity has no affine coordinates")
+    return (p[0] / p[2], p[1] / p[2])
+
+
+def _pt(inst, e):
+    return affine(inst.F, _hpt(inst, e))
+
+
+def cross(F, u, v):
+    out = (u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0])
+    if all(F.zero(x, sum(abs(y) for y in u) * sum(abs(y) for y in v)) for x in out):
+        raise Undefined("the two points (or lines) coincide")
+    return out
 
 
 def _ln(inst, e):
@@ -402,16 +429,16 @@ def _unit(F, p, q):
 
 
 def op_join(inst, a):
-    return Value("line", join(inst.F, _pt(inst, a[0]), _pt(inst, a[1])))
+    return Value("line", cross(inst.F, _hpt(inst, a[0]), _hpt(inst, a[1])))
 
 
 def op_meet(inst, a):
-    return Value("point", meet(inst.F, _ln(inst, a[0]), _ln(inst, a[1])))
+    return _point(cross(inst.F, _ln(inst, a[0]), _ln(inst, a[1])))
 
 
 def op_midpoint(inst, a):
     p, q = _pt(inst, a[0]), _pt(inst, a[1])
-    return Value("point", ((p[0] + q[0]) / 2, (p[1] + q[1]) / 2))
+    return _point(((p[0] + q[0]) / 2, (p[1] + q[1]) / 2))
 
 
 def op_parallel(inst, a):
@@ -433,14 +460,15 @@ def op_bisector(inst, a):
 
 
 def op_foot(inst, a):
-    return Value("point", foot(inst.F, _pt(inst, a[0]), _ln(inst, a[1])))
+    return _point(foot(inst.F, _pt(inst, a[0]), _ln(inst, a[1])))
 
 
 def op_reflect(inst, a):
     x, m = _pt(inst, a[0]), value(inst, a[1])
     if m.kind == "point":
-        return Value("point", (2 * m.v[0] - x[0], 2 * m.v[1] - x[1]))
-    return Value("point", reflect_in_line(inst.F, x, m.v))
+        c = affine(inst.F, m.v)
+        return _point((2 * c[0] - x[0], 2 * c[1] - x[1]))
+    return _point(reflect_in_line(inst.F, x, m.v))
 
 
 def op_rotate(inst, a):
@@ -450,12 +478,12 @@ def op_rotate(inst, a):
         c, s = inst.F.cos_sin(int(a[2][1]))
     else:
         c, s = _number(inst, a[2]), _number(inst, a[3])
-    return Value("point", rotate(x, o, c, s))
+    return _point(rotate(x, o, c, s))
 
 
 def op_translate(inst, a):
     x, p, q = (_pt(inst, e) for e in a)
-    return Value("point", (x[0] + q[0] - p[0], x[1] + q[1] - p[1]))
+    return _point((x[0] + q[0] - p[0], x[1] + q[1] - p[1]))
 
 
 def op_circle(inst, a):
@@ -466,24 +494,25 @@ def op_circle(inst, a):
         return Value("circle", Circle(o[0], o[1], dist2(o, p), (p,)))
     o, second = _pt(inst, a[0]), value(inst, a[1])
     if second.kind == "point":
-        return Value("circle", Circle(o[0], o[1], dist2(o, second.v), (second.v,)))
+        q = affine(F, second.v)
+        return Value("circle", Circle(o[0], o[1], dist2(o, q), (q,)))
     return Value("circle", Circle(o[0], o[1], second.v, ()))
 
 
 def op_centre(inst, a):
     k = _circle(inst, a[0])
-    return Value("point", (k.cx, k.cy))
+    return _point((k.cx, k.cy))
 
 
 def op_second(inst, a):
     k, second, third = _circle(inst, a[0]), value(inst, a[1]), _pt(inst, a[2])
     if second.kind == "circle":  # two circles through a common point: reflect it in the line of centres
         m = second.v
-        return Value("point", reflect_in_line(inst.F, third, join(inst.F, (k.cx, k.cy), (m.cx, m.cy))))
-    p = second.v
+        return _point(reflect_in_line(inst.F, third, join(inst.F, (k.cx, k.cy), (m.cx, m.cy))))
+    p = affine(inst.F, second.v)
     if not on_circle(inst.F, p, k):
         raise Undefined("the point is not on the circle")
-    return Value("point", second_on_line(inst.F, k, p, third))
+    return _point(second_on_line(inst.F, k, p, third))
 
 
 def op_tangent(inst, a):
@@ -495,7 +524,7 @@ def op_invert(inst, a):
     x, k = _pt(inst, a[0]), _circle(inst, a[1])
     d = dist2(x, (k.cx, k.cy))
     f = _div(inst.F, k.r2, d)
-    return Value("point", (k.cx + f * (x[0] - k.cx), k.cy + f * (x[1] - k.cy)))
+    return _point((k.cx + f * (x[0] - k.cx), k.cy + f * (x[1] - k.cy)))
 
 
 def op_dist2(inst, a):
@@ -547,12 +576,12 @@ def _two_points(inst, a):
 
 def op_intersection(inst, a):
     roots = _two_points(inst, a)
-    return Value("point", roots[inst.choice()])
+    return _point(roots[inst.choice()])
 
 
 def op_intersections(inst, a):
     roots = _two_points(inst, a)
-    return [Value("point", r) for r in (roots if inst.choice() == 0 else roots[::-1])]
+    return [_point(r) for r in (roots if inst.choice() == 0 else roots[::-1])]
 
 
 def _tangent_lines(inst, a):
@@ -581,7 +610,7 @@ def op_polygon(inst, a):
     for _ in range(k):
         x = (x[0] + d[0], x[1] + d[1])
         d = (c * d[0] - s * d[1], s * d[0] + c * d[1])
-    return Value("point", x)
+    return _point(x)
 
 
 OPERATIONS: dict[str, Callable[[Instance, list[Any]], Any]] = {
@@ -613,14 +642,12 @@ def _point_on(inst: Instance, name: str, what: str, args: list[Any]) -> Value:
     """The one-parameter points, parametrised as the engine's claims document them (parameter ``X_t``)."""
     F = inst.F
     t = inst.param(f"{name}_t")
-    if what == "line" and len(args) == 2:  # P + t Q on homogeneous representatives (x, y, 1)
+    if what == "line" and len(args) == 2:  # P + t Q on the representatives (x, y, 1) of free points
         p, q = _pt(inst, args[0]), _pt(inst, args[1])
-        w = 1 + t
-        return Value("point", (_div(F, p[0] + t * q[0], w), _div(F, p[1] + t * q[1], w)))
+        return _point((p[0] + t * q[0], p[1] + t * q[1], 1 + t))
     if what == "line":  # l × (1, t, t²)
         a, b, c = _ln(inst, args[0])
-        x, y, w = b * t * t - c * t, c - a * t * t, a * t - b
-        return Value("point", (_div(F, x, w), _div(F, y, w)))
+        return _point((b * t * t - c * t, c - a * t * t, a * t - b))
     k = _circle(inst, args[0])  # on circle: the second point on the line through the known point and (1, t, t²)
     if not k.known:
         raise AssertionError(f"{name}: the circle has no known point")
@@ -630,31 +657,33 @@ def _point_on(inst: Instance, name: str, what: str, args: list[Any]) -> Value:
     if F.zero(direction[0], 1) and F.zero(direction[1], 1):
         raise Undefined("the parameter line is undefined")
     q = (p[0] + direction[0], p[1] + direction[1])
-    return Value("point", second_on_line(F, k, p, q))
+    return _point(second_on_line(F, k, p, q))
 
 
 def _conclusion(inst: Instance, pred: str, args: list[Any]) -> bool:
     F = inst.F
     vals = [value(inst, a) for a in args]
-    v = [x.v for x in vals]
+    h = [x.v for x in vals]  # points homogeneous
     if pred == "collinear":
-        (p, q, r) = v
-        return F.zero(_area(p, q, r), dist2(p, q) + dist2(q, r))
+        return F.zero(_det3(h), _scale(h))
+    if pred == "equal" and vals[0].kind == "point":
+        try:
+            cross(F, h[0], h[1])
+        except Undefined:
+            return True
+        return False
+    if pred == "on" and vals[1].kind == "line":
+        (p, obj) = h
+        return F.zero(obj[0] * p[0] + obj[1] * p[1] + obj[2] * p[2], _scale(h))
+    v = [affine(F, x.v) if x.kind == "point" else x.v for x in vals]
     if pred == "concurrent":
-        d = _det3(v)
-        scale = sum(abs(x) for row in v for x in row) ** 3
-        return F.zero(d, scale)
+        return F.zero(_det3(v), _scale(v))
     if pred == "on":
-        p, obj = v
-        if vals[1].kind == "line":
-            return F.zero(obj[0] * p[0] + obj[1] * p[1] + obj[2], abs(obj[0]) + abs(obj[1]) + abs(obj[2]))
-        return on_circle(F, p, obj)
+        return on_circle(F, v[0], v[1])
     if pred == "tangent":
         (a, b, c), k = v
         return F.zero((a * k.cx + b * k.cy + c) ** 2 - k.r2 * (a * a + b * b), k.r2 * (a * a + b * b))
     if pred == "equal":
-        if vals[0].kind == "point":
-            return F.zero(dist2(v[0], v[1]), dist2(v[0], (0, 0)) + 1)
         return F.zero(v[0] - v[1], abs(v[0]) + abs(v[1]))
     if pred in ("perpendicular", "parallel"):
         (a1, b1, _), (a2, b2, _) = v
@@ -682,6 +711,10 @@ def _conclusion(inst: Instance, pred: str, args: list[Any]) -> bool:
     raise AssertionError(f"no evaluation for the predicate {pred}")
 
 
+def _scale(rows):
+    return sum(abs(x) for row in rows for x in row) ** 3
+
+
 def _det3(m):
     return (m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0])
             + m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]))
@@ -698,7 +731,7 @@ def evaluate(stmt: Statement, inst: Instance) -> bool:
                     inst.param(n)
             elif kind == "points":
                 for n in cmd[1]:
-                    inst.env[n] = Value("point", (inst.param(f"{n}_x"), inst.param(f"{n}_y")))
+                    inst.env[n] = _point((inst.param(f"{n}_x"), inst.param(f"{n}_y")))  # (x, y, 1)
             elif kind == "define":
                 inst.env[cmd[2]] = value(inst, cmd[3])
             elif kind == "define_many":
@@ -797,7 +830,7 @@ def test_evaluator_knows_a_right_answer():
               "C_y": Fraction(3)}
     inst = Instance(Rationals(), values)
     evaluate(stmt, inst)
-    assert inst.env["D"].v == (Fraction(36, 25), Fraction(48, 25))
+    assert inst.env["D"].v == (Fraction(36, 25), Fraction(48, 25), 1)
     assert dist2(inst.env["D"].v, (0, 0)) == Fraction(144, 25)
     # a one-branch statement: the circle about A = (0, 0) through B = (1, 0) meets AB at (±1, 0)
     one = read_text("points A B\nconic c = circle A B\npoint C = intersection (join A B) c\n"
@@ -817,8 +850,20 @@ def _euclid_parser() -> bool:
     return {"foot", "dist2", "bisector"} <= set(getattr(language, "_OPERATIONS", ()))
 
 
+def _roots_parser() -> bool:
+    from pgsym.proofs import language
+
+    return "anglebisector" in getattr(language, "_OPERATIONS", ())
+
+
 ENGINE = _euclid_parser()
+ROOTS = ENGINE and _roots_parser()
 needs_engine = pytest.mark.skipif(not ENGINE, reason="the statement language has no Euclidean constructions yet")
+
+
+def _skip_without_roots(stmt: Statement) -> None:
+    if stmt.roots and not ROOTS:
+        pytest.skip("the statement language has no algebraic points (section B) yet")
 
 
 @needs_engine
@@ -826,6 +871,7 @@ needs_engine = pytest.mark.skipif(not ENGINE, reason="the statement language has
 def test_every_file_parses(path):
     from pgsym.proofs.language import read_statement
 
+    _skip_without_roots(STATEMENTS[path.stem])
     claim = read_statement(path)
     assert claim.expected == STATEMENTS[path.stem].expected
 
@@ -865,6 +911,7 @@ def test_statement(path):
     from pgsym.proofs.language import read_statement
 
     stmt = STATEMENTS[path.stem]
+    _skip_without_roots(stmt)
     claim = read_statement(path)
     start = time.perf_counter()
     verdict = prove(claim, timeout=LIMIT)
