@@ -698,3 +698,18 @@ def is_vector(node: Node) -> bool:
 
 
 _ = alg  # the formulas module is part of the claim vocabulary (see Claim.formula)
+
+
+# -- constructions with square roots: defined in pgsym.proofs.algebraic, methods of every claim ------------------
+from . import algebraic as _algebraic  # noqa: E402  (it needs Claim and Node, defined above)
+
+Claim.angle_bisector = _algebraic.angle_bisector  # type: ignore[attr-defined]
+Claim.external_bisector = _algebraic.external_bisector  # type: ignore[attr-defined]
+Claim.line_conic_intersection = _algebraic.line_conic_intersection  # type: ignore[attr-defined]
+Claim.line_conic_intersections = _algebraic.line_conic_intersections  # type: ignore[attr-defined]
+Claim.circle_intersection = _algebraic.circle_intersection  # type: ignore[attr-defined]
+Claim.circle_intersections = _algebraic.circle_intersections  # type: ignore[attr-defined]
+Claim.tangent_from = _algebraic.tangent_from  # type: ignore[attr-defined]
+Claim.tangents_from = _algebraic.tangents_from  # type: ignore[attr-defined]
+Claim.rotate_degrees = _algebraic.rotate_degrees  # type: ignore[attr-defined]
+Claim.polygon_vertex = _algebraic.polygon_vertex  # type: ignore[attr-defined]

@@ -846,6 +846,10 @@ def prove(claim: Claim, *, timeout: float | None = 10.0, seed: int = 0, core_che
         from .claims import UndefinedConstructionError
 
         raise UndefinedConstructionError(f"claim {claim.name!r} has no conclusion; add one with a conclude_* method")
+    if claim.__dict__.get("algebraic") is not None:  # square roots: branch semantics (pgsym.proofs.algebraic)
+        from .algebraic import prove_algebraic
+
+        return prove_algebraic(claim, timeout=timeout, seed=seed)
     start = time.perf_counter()
     deadline = _Deadline(timeout)
     base = dict(name=claim.name, title=claim.title, statement=claim.statement, expected=claim.expected,

@@ -427,6 +427,8 @@ class _Reader:
             raise StatementSyntaxError(f"{word} must be the first word of its line", head.line, head.col)
         if word == "params":
             self._names(cur, lambda n: self.claim.params(n))
+        elif word in _PLURALS and _algebraic_line(cur):
+            _algebraic_definition(self, word, cur)
         elif word in _PLURALS:
             self._names(cur, lambda n: self._free(_PLURALS[word], n))
         elif word in _KINDS:
@@ -473,6 +475,9 @@ class _Reader:
             return
         if nxt.text != "=":
             raise StatementSyntaxError(f"expected '=' after {name}, found {_show(nxt)}", nxt.line, nxt.col)
+        if _algebraic_line(cur):
+            _algebraic_definition(self, kind, cur, [name])
+            return
         expr = _parse_expr(cur)
         node = self._value(expr, name, kind)
         if node.kind != kind:
@@ -627,3 +632,87 @@ def read_statement(path: str | os.PathLike[str]) -> Claim:
         raise StatementSyntaxError("the file holds binary data (a NUL byte); a theorem is plain text", line, 1,
                                    str(p))
     return parse_statement(text, name=p.stem if p.suffix == STATEMENT_SUFFIX else p.name, source=str(p))
+
+
+# -- constructions with square roots (pgsym.proofs.algebraic): section B of the Euclidean syntax ------------------
+#   line b = anglebisector A B C          line b = exbisector A B C
+#   point X = intersection l K            points X Y = intersections l K     (l a line or a circle, K a circle)
+#   line t = tangentfrom P K              lines s t = tangentsfrom P K
+#   point X = polygon A B n k             point Y = rotate X O DEGREES       (integers; DEGREES may be negative)
+
+_ALGEBRAIC_FORMS: dict[str, tuple[str, int]] = {  # keyword -> (kind of each result, number of results)
+    "anglebisector": ("line", 1), "exbisector": ("line", 1), "intersection": ("point", 1),
+    "intersections": ("point", 2), "tangentfrom": ("line", 1), "tangentsfrom": ("line", 2),
+    "polygon": ("point", 1), "rotate": ("point", 1),
+}
+KEYWORDS = KEYWORDS | frozenset(_ALGEBRAIC_FORMS)
+
+
+def _algebraic_line(cur: _Line) -> bool:
+    """The rest of the line (after ``=``, or after a plural keyword) is a construction with square roots:
+    one of the keywords above; ``rotate`` only with an angle in degrees (three arguments, the last a number)."""
+    toks = cur.toks[cur.i:]
+    if toks and toks[0].kind == "name" and any(t.text == "=" for t in toks):  # plural: skip the names
+        toks = toks[next(i for i, t in enumerate(toks) if t.text == "=") + 1:]
+    if not toks or toks[0].text not in _ALGEBRAIC_FORMS:
+        return False
+    if toks[0].text != "rotate":
+        return True
+    rest = [t for t in toks[1:] if t.kind != "end"]
+    return len(rest) in (3, 4) and rest[-1].kind == "number" and (len(rest) == 3 or rest[-2].text == "-")
+
+
+def _integer(cur: _Line, what: str) -> int:
+    sign = -1 if cur.peek().text == "-" and cur.next() else 1
+    tok = cur.next()
+    if tok.kind != "number" or "/" in tok.text:
+        raise StatementSyntaxError(f"{what} is an integer, found {_show(tok)}", tok.line, tok.col)
+    return sign * int(tok.text)
+
+
+def _algebraic_definition(reader: _Reader, word: str, cur: _Line, names: list[str] | None = None) -> None:
+    """Read ``KIND NAME = FORM args`` or ``PLURAL NAME NAME = FORM args`` (the forms of _ALGEBRAIC_FORMS)."""
+    if names is None:
+        names = []
+        while cur.peek().text != "=":
+            names.append(reader._new_name(cur.name("a name")))
+        cur.expect("=")
+    kind = _PLURALS.get(word, word)
+    form = cur.next()
+    result, count = _ALGEBRAIC_FORMS[form.text]
+    if kind != result or len(names) != count:
+        wanted = f"{result} NAME" if count == 1 else f"{result}s NAME NAME"
+        raise StatementKindError(f"{form.text} gives {'one' if count == 1 else 'two'} {result}"
+                                 f"{'' if count == 1 else 's'}: write '{wanted} = {form.text} …'", form.line, form.col)
+    c = reader.claim
+    if form.text in ("polygon", "rotate"):
+        a, b = (reader._value(_parse_arg(cur, 0)) for _ in range(2))
+        if form.text == "polygon":
+            n, k = _integer(cur, "the number of vertices"), _integer(cur, "the vertex index")
+            c.polygon_vertex(names[0], a, b, n, k)
+        else:
+            c.rotate_degrees(names[0], a, b, _integer(cur, "the angle in degrees"))
+        return
+    args = []
+    while cur.peek().kind != "end":
+        args.append(reader._value(_parse_arg(cur, 0)))
+    kinds = tuple(a.kind for a in args)
+    table: dict[tuple[str, ...], Callable[[], Any]] = {}
+    if form.text in ("anglebisector", "exbisector"):
+        method = c.angle_bisector if form.text == "anglebisector" else c.external_bisector
+        table[(_P, _P, _P)] = lambda: method(names[0], *args)
+    elif form.text.startswith("intersection"):
+        one = form.text == "intersection"
+        table[(_L, _C)] = lambda: (c.line_conic_intersection(names[0], *args) if one
+                                   else c.line_conic_intersections(names, *args))
+        table[(_C, _C)] = lambda: (c.circle_intersection(names[0], *args) if one
+                                   else c.circle_intersections(names, *args))
+    else:
+        table[(_P, _C)] = lambda: (c.tangent_from(names[0], *args) if form.text == "tangentfrom"
+                                   else c.tangents_from(names, *args))
+    build = table.get(kinds)
+    if build is None:
+        accepted = "; ".join(" ".join(k) for k in table)
+        got = " ".join(f"{a.kind} {a.name}" for a in args) or "nothing"
+        raise StatementKindError(f"{form.text} takes ({accepted}), got {got}", form.line, form.col)
+    build()

@@ -134,6 +134,7 @@ class Counterexample:
     values: dict[str, Fraction]
     residuals: list[Fraction]
     claim: Any = None
+    branch: dict[str, str] = field(default_factory=dict)  # exact values of the claim's square roots, if any
 
     def substitution(self) -> dict[Any, Any]:
         """The values as a SymPy substitution ``{symbol: Rational}``.
@@ -151,6 +152,10 @@ class Counterexample:
 
         if self.claim is None:
             return False
+        if self.branch:
+            from .algebraic import recheck_branch
+
+            return recheck_branch(self.claim, self.values, self.branch)
         return recheck_counterexample(self.claim, self.values)
 
     def to_dict(self) -> dict[str, Any]:
@@ -159,7 +164,10 @@ class Counterexample:
         >>> Counterexample({"a": Fraction(1, 2)}, [Fraction(3)]).to_dict()
         {'values': {'a': '1/2'}, 'residuals': ['3']}
         """
-        return {"values": {k: str(v) for k, v in self.values.items()}, "residuals": [str(r) for r in self.residuals]}
+        out = {"values": {k: str(v) for k, v in self.values.items()}, "residuals": [str(r) for r in self.residuals]}
+        if self.branch:
+            out["branch"] = dict(self.branch)
+        return out
 
 
 @dataclass
@@ -189,6 +197,7 @@ class Verdict:
     core_check: str = ""
     expected: bool = True
     elapsed: float = 0.0
+    branches: str = ""  # claims with square roots: which choices of root the verdict covers
 
     def __post_init__(self) -> None:
         self.status = Status(self.status)  # a plain string is accepted and checked
@@ -235,6 +244,8 @@ class Verdict:
             "random_pass": self.random_pass,
             "core_check": self.core_check,
         }
+        if self.branches:
+            out["branches"] = self.branches
         if timing:
             out["elapsed_ms"] = round(1000 * self.elapsed, 2)
         return out
@@ -272,6 +283,11 @@ class Verdict:
             lines.append("  provided that: " + "; ".join(c.text for c in self.conditions))
         if self.counterexample is not None:
             lines.append("  counterexample: " + ", ".join(f"{k} = {v}" for k, v in self.counterexample.values.items()))
+            branch = self.counterexample.branch
+            if branch:
+                lines.append("  on the roots: " + ", ".join(f"{k} = {v}" for k, v in branch.items()))
+        if self.branches:
+            lines.append(f"  roots: {self.branches}")
         if self.reason:
             lines.append(f"  why: {self.reason}")
         return "\n".join(lines)
@@ -314,6 +330,8 @@ class Verdict:
                       "*Residual (should be 0):* "
                       + ", ".join(_short(str(r), 40) for r in self.counterexample.residuals[:4]),
                       ""]
+        if self.branches:
+            lines += [f"*Roots:* {e(self.branches)}", ""]
         if self.reason:
             lines += [f"*Why:* {e(self.reason)}", ""]
         if timing:
@@ -352,6 +370,8 @@ class Verdict:
         if self.counterexample is not None:
             items.append("Counterexample: " + ", ".join(f"{t(k)} = {t(str(v))}"
                                                          for k, v in self.counterexample.values.items()))
+        if self.branches:
+            items.append(f"Roots: {t(self.branches)}")
         if self.reason:
             items.append(f"Why: {t(self.reason)}")
         if timing:

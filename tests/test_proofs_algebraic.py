@@ -1,0 +1,376 @@
+"""Constructions with square roots: proofs for every choice of root, named branches, counterexamples on a branch.
+
+Every counterexample is checked again here with SymPy's own exact arithmetic (square roots, cos and sin of
+rational multiples of π), not with the engine's formulas.
+"""
+
+from __future__ import annotations
+
+import json
+import time
+
+import pytest
+import sympy
+from hypothesis import given, settings
+from strategies import integers
+
+from pgsym.errors import ObjectTypeError
+from pgsym.proofs import Claim, prove
+from pgsym.proofs.algebraic import _cyclotomic_combination, roots_of
+from pgsym.proofs.errors import StatementKindError, StatementSyntaxError
+from pgsym.proofs.language import parse_statement
+
+x = sympy.Symbol("x")
+
+
+# -- helpers: circles and squared distances as formulas of the claim, and an independent exact zero test ------
+
+def circle(o, a):
+    """The circle with centre O through A, for any representatives (O = (ox, oy, ow), A = (ax, ay, aw)):
+    ow·aw²·(x² + y²) − 2 aw²(ox x + oy y) w + (2 aw (ox ax + oy ay) − ow (ax² + ay²)) w²; at A (times aw):
+    ow aw²(ax² + ay²) − 2 aw²(ox ax + oy ay) + 2 aw²(ox ax + oy ay) − ow aw²(ax² + ay²) = 0."""
+    ox, oy, ow = o
+    ax, ay, aw = a
+    k = ow * aw * aw
+    f = 2 * aw * (ox * ax + oy * ay) - ow * (ax * ax + ay * ay)
+    return ((k, 0 * k, -ox * aw * aw), (0 * k, k, -oy * aw * aw), (-ox * aw * aw, -oy * aw * aw, f))
+
+
+def dist2(p, q):
+    """|PQ|² as a ratio: ((w_P q − w_Q p)² summed) / (w_P w_Q)²."""
+    u = (p[2] * q[0] - q[2] * p[0], p[2] * q[1] - q[2] * p[1])
+    return (u[0] * u[0] + u[1] * u[1], (p[2] * q[2]) ** 2)
+
+
+def centroid(a, b, c):
+    return (a[0] * b[2] * c[2] + b[0] * a[2] * c[2] + c[0] * a[2] * b[2],
+            a[1] * b[2] * c[2] + b[1] * a[2] * c[2] + c[1] * a[2] * b[2], 3 * a[2] * b[2] * c[2])
+
+
+def nonzero(expr) -> bool:
+    """An algebraic number is nonzero exactly when its minimal polynomial is not x."""
+    return sympy.minimal_polynomial(sympy.nsimplify(expr) if expr.is_Float else expr, x) != x
+
+
+def timed(claim):
+    start = time.perf_counter()
+    v = prove(claim)
+    return v, time.perf_counter() - start
+
+
+def triangle(c):
+    return tuple(c.free_point(n) for n in "ABC")
+
+
+def bisector_line(p, b, q, internal=True):
+    """The bisector at B of the angle PBQ, exactly: the line through B with direction BP/|BP| ± BQ/|BQ|."""
+    u, v = sympy.Matrix(p) - sympy.Matrix(b), sympy.Matrix(q) - sympy.Matrix(b)
+    d = u / sympy.sqrt(u.dot(u)) + (1 if internal else -1) * v / sympy.sqrt(v.dot(v))
+    return sympy.Matrix([d[1], -d[0], d[0] * b[1] - d[1] * b[0]])  # (d_y, −d_x, d_x b_y − d_y b_x) through B
+
+
+def point_of(values, name):
+    return sympy.Rational(values[f"{name}_x"]), sympy.Rational(values[f"{name}_y"])
+
+
+# -- angle bisectors ---------------------------------------------------------------------------------------
+
+def test_angle_bisector_theorem_in_squared_form_is_proved_for_every_root():
+    # D = b ∩ AC with b the internal bisector at B: |AD|/|DC| = |BA|/|BC|, squared and cross-multiplied
+    c = Claim("bisector-theorem", "the internal bisector divides the opposite side in the ratio of the sides")
+    A, B, C = triangle(c)
+    b = c.angle_bisector("b", A, B, C)
+    D = c.meet("D", b, c.join("AC", A, C))
+    lhs = c.formula("lhs", "ratio", lambda a, d, b_, c_: _times(dist2(a, d), dist2(b_, c_)), A, D, B, C)
+    rhs = c.formula("rhs", "ratio", lambda a, d, b_, c_: _times(dist2(d, c_), dist2(b_, a)), A, D, B, C)
+    c.conclude_equal_ratio(lhs, rhs)
+    v, t = timed(c)
+    assert v.proved and t < 10
+    assert v.branches.startswith("proved for every choice of root")
+    assert "internal and external bisectors alike" in v.branches
+    assert [str(r.symbol) for r in roots_of(c)] == ["d_A_B", "d_B_C"]
+
+
+def _times(r, s):
+    return (r[0] * s[0], r[1] * s[1])
+
+
+def test_the_three_internal_bisectors_are_concurrent():
+    c = Claim("incentre", "the internal bisectors of a triangle meet in the incentre")
+    A, B, C = triangle(c)
+    c.conclude_concurrent(c.angle_bisector("a", B, A, C), c.angle_bisector("b", A, B, C),
+                          c.angle_bisector("c", A, C, B))
+    v, t = timed(c)
+    assert v.proved and t < 10
+    # the lengths are shared: flipping |AB| swaps internal and external at A and B together (an excentre)
+    assert "swapped in pairs" in v.branches
+
+
+def test_one_internal_and_two_external_bisectors_meet_in_an_excentre():
+    c = Claim("excentre", "the internal bisector at A and the external ones at B and C are concurrent")
+    A, B, C = triangle(c)
+    c.conclude_concurrent(c.angle_bisector("a", B, A, C), c.external_bisector("b", A, B, C),
+                          c.external_bisector("c", A, C, B))
+    v, t = timed(c)
+    assert v.proved and t < 10
+
+
+def test_two_internal_bisectors_and_one_external_are_not_concurrent():
+    c = Claim("mixed", "internal bisectors at A and B, external at C, concurrent", expected=False)
+    A, B, C = triangle(c)
+    c.conclude_concurrent(c.angle_bisector("a", B, A, C), c.angle_bisector("b", A, B, C),
+                          c.external_bisector("c", A, C, B))
+    v = prove(c)
+    assert v.refuted and v.as_expected
+    assert "fails on the named branch" in v.branches and "c is the external bisector of ∠ACB" in v.branches
+    ce = v.counterexample
+    assert ce.recheck()
+    # independently: the three bisectors at these rational vertices, with SymPy's square roots
+    a, b, cc = (point_of(ce.values, n) for n in "ABC")
+    lines = [bisector_line(b, a, cc), bisector_line(a, b, cc), bisector_line(a, cc, b, internal=False)]
+    assert nonzero(sympy.Matrix.hstack(*lines).det())
+    # the branch is the named one: every length root is the positive length (free points have w = 1)
+    for key, value in ce.branch.items():
+        p, q = (point_of(ce.values, n) for n in key.split("_")[1:])
+        assert sympy.sympify(value) == sympy.sqrt((p[0] - q[0]) ** 2 + (p[1] - q[1]) ** 2)
+
+
+def test_a_statement_true_on_the_internal_branch_only_is_not_proved():
+    # A = (0, 0), B = (t², 0), C = (0, 1): |AB| = t², |AC| = 1, so the root d_A_B has the two components ±t²;
+    # the internal bisector at A has the direction (1, 0) + (0, 1) and passes through (1, 1), the external
+    # one (on the other component) has the direction (1, −1) and does not.
+    c = Claim("one-branch", "the internal bisector of ∠BAC passes through (1, 1)")
+    (t,) = c.params("t")
+    A, B, C = c.point("A", 0, 0), c.point("B", t * t, 0), c.point("C", 0, 1)
+    c.conclude_incident(c.point("P", 1, 1), c.angle_bisector("a", B, A, C))
+    v = prove(c)
+    assert v.status == "unknown" and not v.proved
+    assert v.branches.startswith("holds on the named branch only")
+    assert "not proved" in v.branches and "a is the external bisector of ∠BAC" in v.branches
+
+
+def test_the_same_statement_for_the_external_bisector_fails_on_the_named_branch():
+    c = Claim("one-branch-false", "the external bisector of ∠BAC passes through (1, 1)", expected=False)
+    (t,) = c.params("t")
+    A, B, C = c.point("A", 0, 0), c.point("B", t * t, 0), c.point("C", 0, 1)
+    c.conclude_incident(c.point("P", 1, 1), c.external_bisector("e", B, A, C))
+    v = prove(c)
+    assert v.refuted and v.counterexample.recheck()
+    t0 = sympy.Rational(v.counterexample.values["t"])
+    # independently: the external bisector at A = (0, 0) of B = (t0², 0), C = (0, 1) misses (1, 1)
+    line = bisector_line((t0**2, 0), (0, 0), (0, 1), internal=False)
+    assert nonzero(line.dot(sympy.Matrix([1, 1, 1])))
+
+
+# -- a line and a circle, two circles, tangents ----------------------------------------------------------------
+
+def test_a_line_through_the_centre_meets_the_circle_in_points_symmetric_about_it():
+    c = Claim("diameter", "a line through the centre meets the circle in two points with midpoint the centre")
+    O, A, P = (c.free_point(n) for n in "OAP")
+    K = c.formula("K", "conic", circle, O, A)
+    X, Y = c.line_conic_intersections(("X", "Y"), c.join("l", O, P), K)
+    c.conclude_proportional(c.midpoint("M", X, Y), O)
+    c.conclude_on_conic(X, K)
+    v, t = timed(c)
+    assert v.proved and t < 10
+    assert "both common points of every intersection" in v.branches
+
+
+def test_one_unnamed_intersection_must_work_for_both_roots():
+    # X is either point of the line OA on the circle: one of them is A itself, whose midpoint with A is A ≠ O
+    c = Claim("antipode", "the line OA meets the circle again in the reflection of A in O", expected=False)
+    O, A = c.free_point("O"), c.free_point("A")
+    K = c.formula("K", "conic", circle, O, A)
+    X = c.line_conic_intersection("X", c.join("l", O, A), K)
+    c.conclude_proportional(c.midpoint("M", X, A), O)
+    v = prove(c)
+    assert v.refuted and v.counterexample.recheck()
+    o, a = (point_of(v.counterexample.values, n) for n in "OA")
+    # independently: the two points of the line OA on the circle are A and 2O − A; one of them is A
+    s = sympy.Symbol("s")
+    pts = [tuple(o[i] + r * (a[i] - o[i]) for i in range(2)) for r in sympy.solve(s**2 - 1, s)]
+    assert a in pts and tuple(2 * o[i] - a[i] for i in range(2)) in pts
+    assert "X = the" in v.branches
+
+
+def test_tangents_from_an_external_point_have_equal_length():
+    c = Claim("tangent-lengths", "the two tangents from a point have equal length")
+    O, A, P = (c.free_point(n) for n in "OAP")
+    K = c.formula("K", "conic", circle, O, A)
+    S, T = c.line_conic_intersections(("S", "T"), c.polar("p", K, P), K)
+    c.conclude_equal_ratio(c.formula("PS", "ratio", dist2, P, S), c.formula("PT", "ratio", dist2, P, T))
+    v, t = timed(c)
+    assert v.proved and t < 10
+
+
+def test_the_tangents_from_a_point_touch_the_circle():
+    c = Claim("tangents", "the lines tangentsfrom P K touch K")
+    O, A, P = (c.free_point(n) for n in "OAP")
+    K = c.formula("K", "conic", circle, O, A)
+    s, t_ = c.tangents_from(("s", "t"), P, K)
+    c.conclude_tangent(s, K)
+    c.conclude_tangent(t_, K)
+    v, t = timed(c)
+    assert v.proved and t < 10
+
+
+def test_the_common_points_of_two_circles_lie_on_both():
+    c = Claim("two-circles", "the common points of two circles are equidistant from each centre")
+    O, A, Q, B = (c.free_point(n) for n in "OAQB")
+    K, L = c.formula("K", "conic", circle, O, A), c.formula("L", "conic", circle, Q, B)
+    X, Y = c.circle_intersections(("X", "Y"), K, L)
+    c.conclude_on_conic(X, L)
+    c.conclude_on_conic(Y, K)
+    c.conclude_equal_ratio(c.formula("OX", "ratio", dist2, O, X), c.formula("OY", "ratio", dist2, O, Y))
+    v, t = timed(c)
+    assert v.proved and t < 10
+
+
+# -- rotations and regular polygons -------------------------------------------------------------------------
+
+def _napoleon(angles):
+    c = Claim("napoleon", "Napoleon's theorem", expected=len(set(angles)) == 1)
+    A, B, C = triangle(c)
+    tips = [c.rotate_degrees(n, p, q, a) for n, p, q, a in zip("XYZ", (C, A, B), (B, C, A), angles, strict=True)]
+    n1 = c.formula("N1", "point", centroid, B, C, tips[0])
+    n2 = c.formula("N2", "point", centroid, C, A, tips[1])
+    n3 = c.formula("N3", "point", centroid, A, B, tips[2])
+    r1, r2, r3 = (c.formula(f"r{i}", "ratio", dist2, p, q) for i, (p, q) in
+                  enumerate(((n1, n2), (n2, n3), (n3, n1)), start=1))
+    c.conclude_equal_ratio(r1, r2)
+    c.conclude_equal_ratio(r2, r3)
+    return c
+
+
+def test_napoleon_theorem_holds_for_every_conjugate_of_the_sixth_root_of_unity():
+    v, t = timed(_napoleon((-60, -60, -60)))
+    assert v.proved and t < 10
+    assert "ζ = e^(2πi/12)" in v.branches  # cos 60° = (ζ + ζ⁻¹)/2, sin 60° with i = ζ³
+
+
+def test_napoleon_with_one_triangle_turned_the_other_way_fails():
+    v = prove(_napoleon((-60, -60, 60)))
+    assert v.refuted and v.counterexample.recheck()
+    a, b, cc = (sympy.Matrix(point_of(v.counterexample.values, n)) for n in "ABC")
+
+    def rot(p, o, deg):
+        th = sympy.pi * deg / 180
+        return o + sympy.Matrix([[sympy.cos(th), -sympy.sin(th)], [sympy.sin(th), sympy.cos(th)]]) * (p - o)
+
+    n1 = (b + cc + rot(cc, b, -60)) / 3
+    n2 = (cc + a + rot(a, cc, -60)) / 3
+    n3 = (a + b + rot(b, a, 60)) / 3
+    sides = [(p - q).dot(p - q) for p, q in ((n1, n2), (n2, n3), (n3, n1))]
+    assert nonzero(sympy.expand(sides[0] - sides[1])) or nonzero(sympy.expand(sides[1] - sides[2]))
+
+
+def test_regular_pentagon_diagonal_ratio_satisfies_the_golden_equation():
+    # d/s = φ, so r = d²/s² = φ² = (3 + √5)/2 satisfies r² − 3r + 1 = 0 (and so does the pentagram's 1/φ²)
+    c = Claim("pentagon", "diagonal and side of a regular pentagon: d⁴ − 3d²s² + s⁴ = 0")
+    A, B = c.free_point("A"), c.free_point("B")
+    C = c.polygon_vertex("C", A, B, 5, 2)
+    s, d = c.formula("s", "ratio", dist2, A, B), c.formula("d", "ratio", dist2, A, C)
+    c.formula("g", "scalar", lambda s, d: (d[0] * d[0] * s[1] * s[1] - 3 * d[0] * d[1] * s[0] * s[1]
+                                           + s[0] * s[0] * d[1] * d[1],), s, d)
+    c.conclude_zero("g")
+    v, t = timed(c)
+    assert v.proved and t < 10
+    assert "star polygons" in v.branches
+
+
+def test_a_wrong_pentagon_ratio_is_refuted_at_the_principal_root():
+    c = Claim("pentagon-wrong", "d² = 3/2 s² in a regular pentagon", expected=False)
+    A, B = c.free_point("A"), c.free_point("B")
+    C = c.polygon_vertex("C", A, B, 5, 2)
+    c.conclude_equal_ratio(c.formula("d", "ratio", dist2, A, C),
+                           c.formula("s", "ratio", lambda a, b: _times(dist2(a, b), (3, 2)), A, B))
+    v = prove(c)
+    assert v.refuted and v.counterexample.recheck()
+    a, b = (point_of(v.counterexample.values, n) for n in "AB")
+    # independently: |AC|² = φ²|AB|² with φ = (1 + √5)/2, which is not 3/2 |AB|²
+    s2 = (a[0] - b[0]) ** 2 + (a[1] - b[1]) ** 2
+    assert nonzero(((1 + sympy.sqrt(5)) / 2) ** 2 * s2 - sympy.Rational(3, 2) * s2)
+
+
+@pytest.mark.parametrize("n", range(3, 14))
+def test_every_regular_polygon_closes_and_has_equal_sides(n):
+    c = Claim(f"polygon-{n}", f"the regular {n}-gon: vertex n is A, and |V1 V2| = |AB|")
+    A, B = c.free_point("A"), c.free_point("B")
+    V2 = c.polygon_vertex("V2", A, B, n, 2)
+    c.conclude_equal_ratio(c.formula("s", "ratio", dist2, A, B), c.formula("t", "ratio", dist2, B, V2))
+    v, t = timed(c)
+    assert v.proved and t < 10
+
+
+@settings(max_examples=25, deadline=None)
+@given(integers(40), integers(6))
+def test_cosine_and_sine_of_a_rational_angle_as_polynomials_in_a_root_of_unity(k, n):
+    # 2 cos(2πk/M) and 2 sin(2πk/M) as integer polynomials in ζ = e^{2πi/M}, checked against SymPy's cos, sin
+    m = 4 * (abs(n) + 1)
+    zeta = sympy.exp(2 * sympy.pi * sympy.I / m)
+    angle = 2 * sympy.pi * k / m
+    for imaginary, expected in ((False, 2 * sympy.cos(angle)), (True, 2 * sympy.sin(angle))):
+        terms = _cyclotomic_combination(m, [k], imaginary)
+        value = sum(c * zeta**e for e, c in terms)
+        assert abs(complex(sympy.N(value - expected, 30))) < 1e-20
+
+
+# -- the statement language -----------------------------------------------------------------------------------
+
+def test_statements_with_square_roots_are_read_and_decided():
+    cases = {
+        "points A B C\nline a = anglebisector B A C\nline b = anglebisector A B C\nline c = anglebisector A C B\n"
+        "prove concurrent a b c": "proved",
+        "points A B C\nline a = anglebisector B A C\nline b = anglebisector A B C\nline c = exbisector A C B\n"
+        "prove concurrent a b c": "false",
+        "conics K\nlines l\npoints X Y = intersections l K\nprove on X K\nprove on Y l": "proved",
+        "points P\nconics K\nlines s t = tangentsfrom P K\nprove tangent s K\nprove tangent t K": "proved",
+        "points P\nconics K\nline t = tangentfrom P K\nprove tangent t K": "proved",
+        "points A B\npoint C = polygon A B 6 2\npoint E = rotate B A -120\npoint D = polygon A B 6 0\n"
+        "prove equal D A\nprove collinear A B (midpoint A B)": "proved",
+        "points A B\npoint C = polygon A B 4 2\npoint D = rotate A B -90\nprove equal C D": "proved",
+        "points A B\npoint C = polygon A B 4 2\npoint D = rotate A B 90\nprove equal C D": "false",
+    }
+    for text, status in cases.items():
+        assert prove(parse_statement(text)).status == status, text
+
+
+def test_rotate_with_an_angle_in_degrees_is_a_root_of_unity_and_rotate_by_90_is_rational():
+    c = parse_statement("points X O\npoint Y = rotate X O 60\npoint Z = rotate X O 90\nprove equal Y Y")
+    assert [str(r.symbol) for r in roots_of(c)] == ["zeta_12"]
+
+
+@pytest.mark.parametrize(("text", "error"), [
+    ("points A B C\npoint b = anglebisector A B C\nprove on A b", StatementKindError),
+    ("points A B\nlines l\npoint X = intersections l A\nprove on X l", StatementKindError),
+    ("points A B\npoints X Y = intersection A B\nprove collinear A B X", StatementKindError),
+    ("points A B\npoint C = polygon A B 5/2 1\nprove collinear A B C", StatementSyntaxError),
+    ("points A B\npoint polygon = polygon A B 5 1\nprove collinear A B A", Exception),
+    ("points A B\nline l = anglebisector A B\nprove on A l", StatementKindError),
+])
+def test_malformed_square_root_statements_raise_named_errors(text, error):
+    with pytest.raises(error):
+        parse_statement(text)
+
+
+def test_polygon_and_rotation_arguments_are_checked():
+    c = Claim("x", "x")
+    A, B = c.free_point("A"), c.free_point("B")
+    with pytest.raises(ObjectTypeError):
+        c.polygon_vertex("P", A, B, 2, 1)
+    with pytest.raises(ObjectTypeError):
+        c.rotate_degrees("R", A, B, 1.5)
+
+
+# -- the verdict says which roots it covers ---------------------------------------------------------------------
+
+def test_the_branch_semantics_are_in_every_output():
+    c = Claim("mixed", "internal bisectors at A and B, external at C, concurrent", expected=False)
+    A, B, C = triangle(c)
+    c.conclude_concurrent(c.angle_bisector("a", B, A, C), c.angle_bisector("b", A, B, C),
+                          c.external_bisector("c", A, C, B))
+    v = prove(c)
+    data = json.loads(v.to_json())
+    assert data["branches"].startswith("fails on the named branch")
+    assert set(data["counterexample"]["branch"]) == {"d_A_B", "d_A_C", "d_B_C"}
+    assert "on the roots:" in v.summary() and "*Roots:*" in v.to_markdown() and "Roots:" in v.to_latex()
