@@ -343,10 +343,15 @@ class Instance:
 
     F: Any
     values: dict[str, Fraction]
-    choices: list[int] = field(default_factory=list)  # per algebraic construction: 0 the named root, 1 the other
+    choices: list[int] = field(default_factory=list)  # per root, in the order met: 0 the first, 1 the other
     rng: random.Random | None = None
-    used: int = 0  # how many algebraic constructions were met
     env: dict[str, Value] = field(default_factory=dict)
+    roots: dict[Any, int] = field(default_factory=dict)  # root -> its index in choices
+    named: list[bool] = field(default_factory=list)  # per root: does the statement name one of its two values
+
+    @property
+    def used(self) -> int:
+        return len(self.roots)
 
     def param(self, name: str) -> Any:
         if name not in self.values:
@@ -355,9 +360,15 @@ class Instance:
             self.values[name] = Fraction(self.rng.randint(-40, 40), self.rng.randint(1, 7))
         return self.F.num(self.values[name])
 
-    def choice(self) -> int:
-        k = self.used
-        self.used += 1
+    def choice(self, key: Any = None, named: bool = False) -> int:
+        """The choice of one root: a length root |PQ| (``key`` the segment, shared by every construction that
+        needs it; the statement names the positive one) or the root of one construction (either value)."""
+        if key is None:
+            key = ("construction", len(self.roots))
+        if key not in self.roots:
+            self.roots[key] = len(self.roots)
+            self.named.append(named)
+        k = self.roots[key]
         return self.choices[k] if k < len(self.choices) else 0
 
 
@@ -552,10 +563,15 @@ def _arith(f: Callable[[Any, Any], Any]):
 
 
 def op_anglebisector(inst, a, external: bool = False):
+    # the bisectors through the length roots ±|BA|, ±|BC|: internal when both have the same sign (as
+    # the statement names them, both positive), external otherwise; a sign is shared by every use of its
+    # segment, so a flip swaps internal and external at both ends of the segment
     F = inst.F
     p, b, q = (_pt(inst, e) for e in a)
     u, v = _unit(F, p, b), _unit(F, q, b)
-    if inst.choice() == 1:
+    s1 = inst.choice(("length", frozenset((repr(a[0]), repr(a[1])))), named=True)
+    s2 = inst.choice(("length", frozenset((repr(a[1]), repr(a[2])))), named=True)
+    if s1 != s2:
         external = not external
     d = (u[0] - v[0], u[1] - v[1]) if external else (u[0] + v[0], u[1] + v[1])
     return Value("line", through(b, d))
@@ -744,22 +760,26 @@ def evaluate(stmt: Statement, inst: Instance) -> bool:
         return ok
 
 
-def branch_count(stmt: Statement) -> int:
-    """How many algebraic constructions the statement has (each with two roots)."""
-    inst = Instance(Floats(), {}, rng=random.Random(0))
-    for _ in range(20):
-        inst = Instance(Floats(), {}, rng=random.Random(inst.used + len(inst.values) + 7 * _))
+def root_kinds(stmt: Statement) -> list[bool]:
+    """Per root of the statement (in the order met): whether the statement names one of its values."""
+    for seed in range(20):
+        inst = Instance(Floats(), {}, rng=random.Random(seed))
         try:
             evaluate(stmt, inst)
-            return inst.used
         except Undefined:
             continue
-    return inst.used
+        return inst.named
+    return inst.named
+
+
+def named_choices(choices: tuple[int, ...], named: list[bool]) -> bool:
+    """Whether a choice of roots is on the named branch: every named root at its named value."""
+    return not any(c and n for c, n in zip(choices, named, strict=True))
 
 
 def truth(stmt: Statement, seed: int, tries: int = 3) -> dict[tuple[int, ...], bool]:
     """At random rational instances: whether the statement holds, per choice of roots (all named: (0, …))."""
-    n = branch_count(stmt) if stmt.roots else 0
+    n = len(root_kinds(stmt)) if stmt.roots else 0
     out: dict[tuple[int, ...], bool] = {}
     for choices in itertools.product((0, 1), repeat=n):
         rng = random.Random(seed)
@@ -812,11 +832,12 @@ def test_statement_says_what_it_expects(name):
     stmt = STATEMENTS[name]
     seed = sum(map(ord, name))
     by_branch = truth(stmt, seed)
-    named = by_branch[(0,) * len(next(iter(by_branch)))]  # every root the named one
-    if stmt.expected:
-        assert named, f"{name} fails at a random instance"
+    kinds = root_kinds(stmt) if stmt.roots else []
+    on_named = [ok for c, ok in by_branch.items() if named_choices(c, kinds)]
+    if stmt.expected:  # every choice of the unnamed roots (intersections, tangents) on the named branch
+        assert all(on_named), f"{name} fails at a random instance"
     else:
-        assert not all(by_branch.values()), f"{name} holds at random instances on every branch"
+        assert not all(on_named), f"{name} holds at random instances on the named branch"
 
 
 def test_evaluator_knows_a_right_answer():
@@ -879,13 +900,17 @@ def test_every_file_parses(path):
 def recheck(stmt: Statement, values: dict[str, Fraction]) -> bool:
     """True when the statement fails at these parameter values, rebuilt by this file's evaluator.
 
-    Without algebraic points the figure is rebuilt in exact rationals. With them every choice of roots is
-    rebuilt in exact radicals: the statement fails if it fails on some choice.
+    Without algebraic points the figure is rebuilt in exact rationals. With them the named branch (every
+    length root positive, i.e. each anglebisector internal) is rebuilt in exact radicals for each choice
+    of the unnamed roots (the two points of an intersection, the two tangents): the statement fails if it
+    fails for one of them.
     """
     if not stmt.roots:
         return not evaluate(stmt, Instance(Rationals(), dict(values)))
-    n = branch_count(stmt)
-    for choices in itertools.product((0, 1), repeat=n):
+    kinds = root_kinds(stmt)
+    for choices in itertools.product((0, 1), repeat=len(kinds)):
+        if not named_choices(choices, kinds):
+            continue
         try:
             if not evaluate(stmt, Instance(Radicals(), dict(values), list(choices))):
                 return True
@@ -898,10 +923,9 @@ def _status(verdict) -> str:
     return str(getattr(verdict, "status", verdict))
 
 
-def _proved_for_all(verdict) -> bool:
-    """Whether the verdict claims every choice of root (not only a named branch)."""
-    text = " ".join(str(getattr(verdict, a, "")) for a in ("reason", "branches", "branch", "scope"))
-    return verdict.proved and "named branch" not in text
+def _named_only(verdict) -> bool:
+    """Whether the verdict says the statement holds on the named branch only (and leaves the rest open)."""
+    return str(getattr(verdict, "branches", "")).startswith("holds on the named branch only")
 
 
 @needs_engine
@@ -922,9 +946,13 @@ def test_statement(path):
         assert status != "false", f"a true statement refuted: {verdict.reason}"
     else:
         assert not verdict.proved, f"a false statement proved: {verdict.reason}"
-    if stmt.roots and verdict.proved and _proved_for_all(verdict):
+    if stmt.roots and verdict.proved:  # proved means for every choice of root: check them all
         by_branch = truth(stmt, seed=sum(map(ord, path.stem)))
-        assert all(by_branch.values()), "proved for every choice of root, but some choice fails"
+        assert all(by_branch.values()), f"proved for every choice of root, but some choice fails: {by_branch}"
+    if _named_only(verdict):
+        by_branch = truth(stmt, seed=sum(map(ord, path.stem)))
+        assert stmt.expected and not all(by_branch.values()), "named branch only, yet it holds on every branch"
+        return  # decided: true on the named branch, and rightly not proved for every choice
     if status == "false":
         values = verdict.counterexample.values
         assert recheck(stmt, values), "the counterexample does not refute the statement when rebuilt here"
