@@ -7,7 +7,8 @@ statement that needs no square root (``"baseline": "budget 1 s"``) and 10 s for 
 (``status``), the expected truth (``expected``) and ``wrong`` when the verdict contradicts it (a false
 statement proved, a true one refuted, a statement that holds on one branch proved for every root).
 
-Then one summary line: the counts proved / refuted / unknown / wrong, the share of statements decided
+Then one summary line: the counts proved / refuted / named (holds on the named branch only: decided, not
+proved for every root) / unknown / wrong, the share of statements decided
 within budget in each class (the targets: 95 % of the rational ones in 1 s, 70 % of those with algebraic
 points in 10 s) and the five slowest statements.
 """
@@ -16,15 +17,15 @@ from __future__ import annotations
 
 import re
 import statistics
-import time
 from pathlib import Path
 
-from timing import report
+from timing import report, run_with_timeout
 
 CORPUS = sorted((Path(__file__).resolve().parent.parent / "tests" / "euclid").glob("*.thm"))
 RATIONAL_BUDGET_S = 1.0
 ROOTS_BUDGET_S = 10.0
 LIMIT_S = 10.0
+HARD_LIMIT_S = 60.0  # a run that overstays the engine's limit this long is stopped and counts as unknown
 # the section B words: a statement using one has algebraic points
 SECTION_B = re.compile(r"\b(anglebisector|exbisector|intersections?|tangentsfrom|tangentfrom|polygon)\b"
                        r"|\brotate\s+\S+\s+\S+\s+-?\d+\s*(?:\)|$)", re.M)
@@ -35,27 +36,38 @@ def needs_roots(text: str) -> bool:
     return bool(SECTION_B.search("\n".join(line.split("#", 1)[0] for line in text.splitlines())))
 
 
-def classify(verdict, expected: bool) -> tuple[str, bool]:
-    """The verdict's word (proved / refuted / unknown) and whether it is wrong for the expected truth.
+def _summary(path: Path) -> dict:
+    """``prove`` on the statement file, as plain words (run in a child process)."""
+    from pgsym.proofs.engine import prove
+    from pgsym.proofs.language import read_statement
 
-    A verdict that holds for a named branch only is ``proved`` when the statement is expected true and
-    not wrong when it is expected false (the false one-branch statements say "for every choice of root").
+    claim = read_statement(path)
+    v = prove(claim, timeout=LIMIT_S)
+    return {"status": str(v.status), "proved": bool(v.proved), "branches": str(getattr(v, "branches", "") or ""),
+            "expected": claim.expected}
+
+
+def classify(verdict: dict, expected: bool) -> tuple[str, bool]:
+    """The verdict's word and whether it is wrong for the expected truth.
+
+    ``proved`` (for every choice of root), ``refuted``, ``named`` (status unknown, but the verdict says the
+    statement holds on the named branch only: decided, and right for a true statement whose other
+    branches fail) or ``unknown``.
     """
-    status = str(verdict.status)
-    named_only = "named branch" in " ".join(str(getattr(verdict, a, "")) for a in ("reason", "branches", "scope"))
-    if verdict.proved:
-        return "proved", (not expected and not named_only)
-    if status == "false":
+    if verdict["proved"]:
+        return "proved", not expected
+    if verdict["status"] == "false":
         return "refuted", expected
+    if verdict["branches"].startswith("holds on the named branch only"):
+        return "named", not expected
     return "unknown", False
 
 
 def main() -> None:
-    from pgsym.proofs.engine import prove
     from pgsym.proofs.language import read_statement
 
     times: dict[str, float] = {}
-    counts = {"proved": 0, "refuted": 0, "unknown": 0, "wrong": 0}
+    counts = {"proved": 0, "refuted": 0, "named": 0, "unknown": 0, "wrong": 0}
     within = {"rational": [0, 0], "roots": [0, 0]}  # decided within budget, total
     for path in CORPUS:
         roots = needs_roots(path.read_text(encoding="utf-8"))
@@ -71,9 +83,10 @@ def main() -> None:
             continue
         runs = []
         for _ in range(3):
-            t = time.perf_counter()
-            verdict = prove(claim, timeout=LIMIT_S)
-            runs.append(time.perf_counter() - t)
+            elapsed, verdict = run_with_timeout(_summary, (path,), HARD_LIMIT_S)
+            if elapsed is None:  # stopped: an unknown verdict at the hard limit
+                elapsed, verdict = HARD_LIMIT_S, {"status": "unknown", "proved": False, "branches": ""}
+            runs.append(elapsed)
             if runs[0] >= RATIONAL_BUDGET_S:
                 break
         times[path.stem] = statistics.median(runs)
