@@ -197,3 +197,38 @@ def circle_pencil(circles, a, b):
     ax.set_title(r"the pencil of conics through $\mathbf{a}, \mathbf{b}, \mathbf{I}, \mathbf{J}$", fontsize=9)
     plt.show()
     return worst
+
+
+def involution_on_a_line(vertices, pairs, y=0.0):
+    """Draw a complete quadrangle, the horizontal line ``y = y`` and the pairs of points where it meets
+    opposite sides (Desargues's involution theorem).
+
+    ``vertices`` maps the names of the four points to ``(x, y)``; ``pairs`` is a list of three entries
+    ``((side, x), (side, x'))``: the two opposite sides (as two-letter names) and the abscissae where they
+    meet the line. Returns the abscissae drawn, pair by pair.
+    """
+    _fig, ax = plt.subplots(figsize=(6.4, 4.2))
+    colors = ("tab:blue", "tab:green", "tab:purple")
+    drawn = []
+    for ((s, x), (t, x2)), color in zip(pairs, colors, strict=True):
+        for side, cut in ((s, x), (t, x2)):
+            p, q = (np.asarray(vertices[n], dtype=float) for n in side)
+            far = max((p, q), key=lambda v: abs(v[1] - y))  # draw the side from its cut to its far vertex
+            ax.plot([float(cut), far[0]], [y, far[1]], color=color, lw=0.9)
+            ax.plot([float(cut)], [y], "o", color=color, ms=5)
+            ax.annotate(side, (float(cut), y), xytext=(-6, -14), textcoords="offset points", color=color, fontsize=8)
+        mid, half = (float(x) + float(x2)) / 2, abs(float(x2) - float(x)) / 2
+        arc = np.linspace(0, np.pi, 60)
+        ax.plot(mid + half * np.cos(arc), y - 0.35 * half * np.sin(arc), ls=":", color=color, lw=1)
+        drawn.append((float(x), float(x2)))
+    lo = min(min(p) for p in drawn) - 1
+    hi = max(max(p) for p in drawn) + 1
+    ax.plot([lo, hi], [y, y], color="tab:red", lw=1.5)
+    ax.annotate(r"$l$", (hi, y), xytext=(4, 4), textcoords="offset points", color="tab:red")
+    for name, (px, py) in vertices.items():
+        ax.plot([float(px)], [float(py)], "o", color="black", ms=4)
+        ax.annotate(name, (float(px), float(py)), xytext=(4, 4), textcoords="offset points", fontsize=9)
+    ax.set_aspect("equal")
+    ax.set_title("Desargues's involution: opposite sides meet $l$ in pairs of one involution", fontsize=9)
+    plt.show()
+    return drawn

@@ -27,7 +27,13 @@ import sympy
 from sympy import Expr, Integer, Matrix
 
 from .conics import Conic, circular_points
-from .errors import DegenerateConfigurationError, DegenerateConicError, InvalidCoordinatesError, ObjectTypeError
+from .errors import (
+    CoincidentPointsError,
+    DegenerateConfigurationError,
+    DegenerateConicError,
+    InvalidCoordinatesError,
+    ObjectTypeError,
+)
 from .exact import Scalar, is_zero, sign, to_exact
 from .homogeneous import require
 from .matrices import adjugate, proportional
@@ -45,6 +51,7 @@ __all__ = [
     "ellipse",
     "foci",
     "hyperbola",
+    "inversion",
     "parabola",
     "radius",
     "semi_axes",
@@ -399,3 +406,29 @@ def cos_intersection_angle(c1: Conic, c2: Conic) -> Expr:
     r1, r2 = squared_radius(c1), squared_radius(c2)
     d2 = squared_distance(center(c1), center(c2))
     return sympy.radsimp((r1 + r2 - d2) / (2 * sympy.sqrt(r1 * r2)))
+
+
+def inversion(point: Point, circle: Conic) -> Point:
+    """The inverse of a point in a real circle with centre ``O`` and radius ``r``: ``O + r² (X − O)/|X − O|²``.
+
+    The inverse lies on the ray from the centre through the point, at the distance ``r²/|OX|``; points of
+    the circle are fixed, an ideal point goes to the centre, and the centre itself (whose inverse is at
+    infinity in every direction) raises :class:`~pgsym.errors.CoincidentPointsError`.
+
+    >>> C = Conic.circle(1, 0, 2)                          # centre (1, 0), r² = 4
+    >>> inversion(Point(3, 0), C), inversion(Point(2, 0), C), inversion(Point(1, 1, 0), C)
+    (Point(3, 0, 1), Point(5, 0, 1), Point(1, 0, 1))
+    """
+    if not isinstance(point, Point) or not isinstance(circle, Conic):
+        raise ObjectTypeError(f"inversion takes a Point and a circle (Conic), got {type(point).__name__} and "
+                              f"{type(circle).__name__}")
+    o = center(circle)
+    r2 = squared_radius(circle)
+    if point.is_ideal:
+        return o
+    (x, y), (ox, oy) = point.dehomogenize(), o.dehomogenize()
+    u, v = x - ox, y - oy
+    d = sympy.expand(u * u + v * v)
+    if is_zero(d):
+        raise CoincidentPointsError(f"inversion: {point!r} is the centre of {circle!r}, whose inverse is at infinity")
+    return _affine(Point(ox + r2 * u / d, oy + r2 * v / d))

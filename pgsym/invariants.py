@@ -36,7 +36,7 @@ from sympy.polys.rings import PolyElement, ring
 from .errors import DegenerateConfigurationError, IdealPointError, ObjectTypeError, UndefinedCrossRatioError
 from .exact import is_zero, primitive_part
 from .hierarchy import CLASSES_2D, CLASSES_3D, TransformationClass, class_by_key, classify
-from .ring import adjugate, cross, det, dot, matmul, matvec, transpose
+from .ring import Quotient, adjugate, cross, det, dot, matmul, matvec, transpose
 
 __all__ = [
     "INVARIANTS",
@@ -50,74 +50,18 @@ __all__ = [
 ]
 
 
-# -- a fraction of polynomials, without gcd cancellation -------------------------------------------
-class _Q:
-    """``n / d`` with ``n``, ``d`` polynomials of one ring; zero exactly when ``n`` is the zero polynomial."""
-
-    __slots__ = ("d", "n")
-
-    def __init__(self, n: PolyElement, d: PolyElement) -> None:
-        self.n, self.d = n, d
-
-    def _lift(self, o: Any) -> _Q:
-        if isinstance(o, _Q):
-            return o
-        return _Q(self.n.ring(o), self.n.ring.one)
-
-    def __add__(self, o: Any) -> _Q:
-        o = self._lift(o)
-        if self.d == o.d:
-            return _Q(self.n + o.n, self.d)
-        return _Q(self.n * o.d + o.n * self.d, self.d * o.d)
-
-    __radd__ = __add__
-
-    def __neg__(self) -> _Q:
-        return _Q(-self.n, self.d)
-
-    def __sub__(self, o: Any) -> _Q:
-        return self + (-self._lift(o))
-
-    def __rsub__(self, o: Any) -> _Q:
-        return self._lift(o) - self
-
-    def __mul__(self, o: Any) -> _Q:
-        o = self._lift(o)
-        return _Q(self.n * o.n, self.d * o.d)
-
-    __rmul__ = __mul__
-
-    def __truediv__(self, o: Any) -> _Q:
-        o = self._lift(o)
-        if not o.n:
-            raise ZeroDivisionError("division by the zero polynomial in an invariant proof")
-        return _Q(self.n * o.d, self.d * o.n)
-
-    def __rtruediv__(self, o: Any) -> _Q:
-        return self._lift(o) / self
-
-    def __pow__(self, k: int) -> _Q:
-        return _Q(self.n**k, self.d**k)
-
-    def is_zero(self) -> bool:
-        return not self.n
-
-    def __bool__(self) -> bool:  # lets pgsym.ring skip zero terms, as it does for numbers
-        return bool(self.n)
-
-
 def _nonzero(x: Any) -> bool:
-    return not x.is_zero() if isinstance(x, _Q) else not is_zero(sympy.sympify(x))
+    return not x.is_zero() if isinstance(x, Quotient) else not is_zero(sympy.sympify(x))
 
 
 def _ex(v: Sequence[Any]) -> list[Any]:
-    return [x if isinstance(x, _Q) else sympy.sympify(x) for x in v]
+    return [x if isinstance(x, Quotient) else sympy.sympify(x) for x in v]
 
 
 def _finite_w(x: Sequence[Any]) -> Any:
     """The last coordinate of a finite point; an ideal point raises (a division would give zoo/nan)."""
     w = x[-1]
-    if (w.n == 0) if isinstance(w, _Q) else is_zero(w):
+    if (w.n == 0) if isinstance(w, Quotient) else is_zero(w):
         raise IdealPointError(f"the point {list(x)} is ideal (last coordinate zero): it has no Euclidean position")
     return w
 
@@ -206,10 +150,10 @@ def _primitive(entries: Sequence[Any]) -> list[Any]:
     Projective objects are defined up to scale, so the common polynomial factor carries no
     information; removing it keeps the proof polynomials small. Non-polynomial data is returned unchanged.
     """
-    if not entries or not all(isinstance(e, _Q) for e in entries):
+    if not entries or not all(isinstance(e, Quotient) for e in entries):
         return list(entries)
     one = entries[0].n.ring.one
-    return [_Q(x, one) for x in primitive_part([e.n for e in entries], [e.d for e in entries])]
+    return [Quotient(x, one) for x in primitive_part([e.n for e in entries], [e.d for e in entries])]
 
 
 def _act(H: Sequence[Sequence[Any]], config: Sequence[tuple[str, Any]]) -> list[tuple[str, Any]]:
@@ -502,7 +446,7 @@ def _symbol_factory() -> tuple[New, list[sympy.Symbol]]:
     return new, made
 
 
-def _matrix_rows(flat: list[_Q], n: int) -> list[list[PolyElement]]:
+def _matrix_rows(flat: list[Quotient], n: int) -> list[list[PolyElement]]:
     return [[e.n for e in flat[i * n : (i + 1) * n]] for i in range(n)]
 
 
@@ -516,15 +460,15 @@ def _prove(key: str) -> Proof:
     R, *gens = ring([*map(str, cls.parameters), *(f"z{i}" for i in range(n_config))], ZZ)
     one = R.one
     zs = iter(gens[cls.n_parameters :])
-    params = [_Q(g, one) for g in gens[: cls.n_parameters]]
-    config = inv.configuration(lambda: _Q(next(zs), one))
+    params = [Quotient(g, one) for g in gens[: cls.n_parameters]]
+    config = inv.configuration(lambda: Quotient(next(zs), one))
     holds, terms = True, 0
     for comp in range(len(cls.components)):
         # the generic element, built in the ring; every quantity is independent of the
         # representative of H (a projective map is defined up to scale), so the polynomial
         # multiple with the denominators cleared is used
-        G = [[e if isinstance(e, _Q) else _Q(R(e), one) for e in row] for row in cls.builder(params, comp)]
-        H = [[_Q(e, one) for e in row] for row in _matrix_rows(_primitive([e for row in G for e in row]), len(G))]
+        G = [[e if isinstance(e, Quotient) else Quotient(R(e), one) for e in row] for row in cls.builder(params, comp)]
+        H = [[Quotient(e, one) for e in row] for row in _matrix_rows(_primitive([e for row in G for e in row]), len(G))]
         before, after = inv.value(config), inv.value(_act(H, config))
         for a, b in zip(after, before, strict=True):
             r = a - b

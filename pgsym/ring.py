@@ -23,6 +23,7 @@ from itertools import combinations
 from typing import Any
 
 __all__ = [
+    "Quotient",
     "adjugate",
     "cross",
     "det",
@@ -215,3 +216,74 @@ def primitive_integer_matrix(rows: Sequence[Sequence[Any]]) -> Matrix:
     n = len(rows[0])
     flat = primitive_integers([x for row in rows for x in row])
     return tuple(tuple(flat[i:i + n]) for i in range(0, len(flat), n))
+
+
+class Quotient:
+    """``n / d`` of two ring elements, never reduced: a fraction of polynomials without gcd cancellation.
+
+    Proofs that divide only by a few known denominators (``1 + t²`` of a rational rotation) clear them
+    at the end instead of paying for a gcd at every step. Numbers mix in as ``x / 1``. It is zero exactly
+    when its numerator is, and it lets the functions above skip zero terms as they do for numbers.
+
+    >>> from sympy import ZZ, ring
+    >>> R, t = ring("t", ZZ)
+    >>> q = (1 - t**2) / Quotient(1 + t**2) + 1
+    >>> q.n, q.d, bool(q - q)
+    (2, t**2 + 1, False)
+    >>> Quotient(t) / (t - t)
+    Traceback (most recent call last):
+    ...
+    ZeroDivisionError: division by a zero quotient
+    """
+
+    __slots__ = ("d", "n")
+
+    def __init__(self, n: Any, d: Any = 1) -> None:
+        self.n, self.d = n, d
+
+    @staticmethod
+    def of(x: Any) -> Quotient:
+        """``x`` itself when it is a quotient, else ``x / 1``."""
+        return x if isinstance(x, Quotient) else Quotient(x)
+
+    def __add__(self, o: Any) -> Quotient:
+        o = Quotient.of(o)
+        if o.d == self.d:
+            return Quotient(self.n + o.n, self.d)
+        return Quotient(self.n * o.d + o.n * self.d, self.d * o.d)
+
+    __radd__ = __add__
+
+    def __neg__(self) -> Quotient:
+        return Quotient(-self.n, self.d)
+
+    def __sub__(self, o: Any) -> Quotient:
+        return self + -Quotient.of(o)
+
+    def __rsub__(self, o: Any) -> Quotient:
+        return Quotient.of(o) + -self
+
+    def __mul__(self, o: Any) -> Quotient:
+        o = Quotient.of(o)
+        return Quotient(self.n * o.n, self.d * o.d)
+
+    __rmul__ = __mul__
+
+    def __truediv__(self, o: Any) -> Quotient:
+        o = Quotient.of(o)
+        if not o.n:
+            raise ZeroDivisionError("division by a zero quotient")
+        return Quotient(self.n * o.d, self.d * o.n)
+
+    def __rtruediv__(self, o: Any) -> Quotient:
+        return Quotient.of(o) / self
+
+    def __pow__(self, k: int) -> Quotient:
+        return Quotient(self.n**k, self.d**k)
+
+    def is_zero(self) -> bool:
+        """Whether the numerator is zero."""
+        return not self.n
+
+    def __bool__(self) -> bool:
+        return bool(self.n)

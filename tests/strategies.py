@@ -198,3 +198,96 @@ def statement_programs(draw) -> tuple[str, int]:
         args = [draw(st.sampled_from(points)), draw(st.sampled_from(lines))]
     text.append(f"prove {kind} {' '.join(args)}")
     return "\n".join(text) + "\n", draw(st.integers(0, 2**16))
+
+
+@st.composite
+def conic_statement_programs(draw) -> tuple[str, int]:
+    """A random theorem on a conic through five free points: second intersections, points on the conic,
+    tangents, polars, joins and meets, concluded by an incidence with the conic, a tangency, six points on
+    a conic, a collinearity, or an equality of the cross-ratios of four points seen from two points — true
+    by construction often enough (Steiner, Chasles) to test proofs as well as refutations: (text, seed)."""
+    free = [f"P{i}" for i in range(6)]  # P5 is off the conic
+    text = [f"points {' '.join(free)}", f"conic K = conic {' '.join(free[:5])}"]
+    points, on_conic, lines = list(free), list(free[:5]), []
+    for i in range(draw(st.integers(1, 4))):
+        step = draw(st.sampled_from(["second", "onconic", "tangent", "polar", "join"]
+                                    + (["meet"] if len(lines) >= 2 else [])))
+        a = draw(st.sampled_from(on_conic))
+        if step == "second":
+            q = draw(st.sampled_from([p for p in points if p != a]))
+            text.append(f"point X{i} = second K {a} {q}")
+            points.append(f"X{i}")
+            on_conic.append(f"X{i}")
+        elif step == "onconic":
+            text.append(f"point X{i} on conic K through {a}")
+            points.append(f"X{i}")
+            on_conic.append(f"X{i}")
+        elif step == "tangent":
+            text.append(f"line t{i} = tangent K {a}")
+            lines.append(f"t{i}")
+        elif step == "polar":
+            text.append(f"line t{i} = polar K {draw(st.sampled_from(points))}")
+            lines.append(f"t{i}")
+        elif step == "join":
+            p, q = draw(st.lists(st.sampled_from(points), min_size=2, max_size=2, unique=True))
+            text.append(f"line t{i} = join {p} {q}")
+            lines.append(f"t{i}")
+        else:
+            l, m = draw(st.lists(st.sampled_from(lines), min_size=2, max_size=2, unique=True))
+            text.append(f"point X{i} = meet {l} {m}")
+            points.append(f"X{i}")
+    kind = draw(st.sampled_from(["on", "collinear", "crossratio", "conconic"] + (["tangent"] if lines else [])))
+    if kind == "on":
+        text.append(f"prove on {draw(st.sampled_from(points))} K")
+    elif kind == "tangent":
+        text.append(f"prove tangent {draw(st.sampled_from(lines))} K")
+    elif kind == "collinear":
+        text.append("prove collinear " + " ".join(draw(st.lists(st.sampled_from(points), min_size=3, max_size=3,
+                                                                   unique=True))))
+    elif kind == "conconic":
+        pool = draw(st.sampled_from([on_conic, points]))
+        pool = pool if len(pool) >= 6 else points
+        text.append("prove conconic " + " ".join(draw(st.lists(st.sampled_from(pool), min_size=6, max_size=6,
+                                                                  unique=True))))
+    else:
+        pool = draw(st.sampled_from([on_conic, points]))
+        pool = pool if len(pool) >= 6 else points
+        p, q, *abcd = draw(st.lists(st.sampled_from(pool), min_size=6, max_size=6, unique=True))
+        seen = [" ".join(f"(join {o} {x})" for x in abcd) for o in (p, q)]
+        text.append(f"prove equal (crossratio {seen[0]}) (crossratio {seen[1]})")
+    return "\n".join(text) + "\n", draw(st.integers(0, 2**16))
+
+
+@st.composite
+def euclidean_programs(draw, max_steps: int = 3) -> dict:
+    """A random program of Euclidean constructions on four free points (see test_proofs_euclidean): steps
+    ``(operation, i, j, k)`` on earlier points by index, and a conclusion ``(predicate, indices)``."""
+    ops = ["midpoint", "foot", "reflect_line", "reflect_point", "circumcentre", "orthocentre", "translate", "rotate",
+           "invert"]
+    steps = draw(st.lists(st.tuples(st.sampled_from(ops), st.integers(0, 20), st.integers(0, 20),
+                                    st.integers(0, 20)), min_size=1, max_size=max_steps))
+    predicates = ["collinear", "perpendicular", "parallel", "equallength", "concyclic", "equalangle", "unit",
+                  "equalarea", "area",
+                  # true statements on the program's points, so that proofs are compared too
+                  "foot-perpendicular", "mirror-length", "circumcentre-length", "inverse-on-ray", "rotation-angle"]
+    conclusion = (draw(st.sampled_from(predicates)), draw(st.lists(st.integers(0, 30), min_size=6, max_size=6)))
+    return {"steps": steps, "conclusion": conclusion}
+
+
+@st.composite
+def euclidean_arguments(draw, kinds: tuple[str, ...]) -> list:
+    """Random rational data of the given kinds ("point": finite (x, y, w), "line": (a, b, c) not at infinity,
+    "circle": a real circle's matrix), with a random nonzero scale for each (to test representatives)."""
+    out = []
+    for kind in kinds:
+        if kind == "point":
+            w = draw(st.integers(1, 5)) * draw(st.sampled_from([1, -1]))
+            out.append((draw(integers(9)), draw(integers(9)), w))
+        elif kind == "line":
+            a, b = draw(integers(9)), draw(integers(9))
+            out.append((a or 1, b, draw(integers(9))))
+        else:
+            cx, cy, r = draw(integers(5)), draw(integers(5)), draw(st.integers(1, 6))
+            out.append(((1, 0, -cx), (0, 1, -cy), (-cx, -cy, cx * cx + cy * cy - r * r)))
+    scales = [draw(nonzero_rationals(5, 4)) for _ in kinds]
+    return [out, scales]

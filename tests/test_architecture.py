@@ -160,3 +160,25 @@ def test_no_helper_of_the_exact_kit_is_written_twice() -> None:
             if "ring." not in ast.unparse(node):
                 copies.append(f"{rel}:{node.lineno} {node.name}")
     assert not copies, f"helpers of pgsym.ring written again instead of used: {copies}"
+
+
+# Classes with ring arithmetic (``+`` and ``*``) outside pgsym.ring, and why each is not a second copy of
+# its number types (a fraction of polynomials is ``ring.Quotient``, written once).
+RING_LIKE = {
+    ("pgsym/hierarchy.py", "_Dual"): "dual numbers a + bε: a Jacobian column by forward differentiation",
+    ("pgsym/proofs/engine.py", "_Cost"): "an estimate of the work of an expansion, not a number",
+}
+
+
+def test_ring_arithmetic_classes_are_written_once() -> None:
+    found = set()
+    for path in SOURCES:
+        rel = str(path.relative_to(ROOT.parent))
+        if path == ROOT / "ring.py" or {"numeric", "vision"} & set(path.parts):
+            continue
+        for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+            if isinstance(node, ast.ClassDef):
+                methods = {f.name for f in node.body if isinstance(f, ast.FunctionDef)}
+                if {"__add__", "__mul__"} <= methods:
+                    found.add((rel, node.name))
+    assert found == set(RING_LIKE), f"ring arithmetic outside pgsym.ring: {sorted(found - set(RING_LIKE))}"

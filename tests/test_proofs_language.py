@@ -218,7 +218,7 @@ def test_title_expect_comments_and_blank_lines():
     ("points A\x07\n", StatementSyntaxError, 1, 9),
     ("expect maybe\n", StatementSyntaxError, 1, 8),
     ("points A B\nprove equal A 3\n", StatementKindError, 2, 7),
-    ("points A B\npoint X on circle A\n", StatementSyntaxError, 2, 12),
+    ("points A B\npoint X on ellipse A\n", StatementSyntaxError, 2, 12),
     ("conics K\npoints A\npoint X on conic K\nprove on X K\n", StatementSyntaxError, 3, 12),
     ("point P = (0, 0, 0)\nprove on P P\n", StatementKindError, 1, 11),                 # the zero vector
     ("point P = (s, 1)\nprove on P P\n", StatementNameError, 1, 12),                    # s is no parameter

@@ -153,3 +153,14 @@ def test_discover_bad_file_exits_2(tmp_path):
 def test_discover_help_shows_an_example():
     result = CliRunner().invoke(main, ["discover", "--help"])
     assert result.exit_code == 0 and "point P = meet (join A B) (join C D)" in result.output
+
+
+def test_discover_says_when_conics_were_looked_for_among_some_points_only(tmp_path):
+    # 13 points: the six-on-a-conic search covers the first 12 (C(12, 6) = 924 determinants) and says so
+    f = tmp_path / "many.thm"
+    f.write_text("points " + " ".join(f"P{i}" for i in range(13)) + "\nprove collinear P0 P1 P2\n", encoding="utf-8")
+    result = CliRunner().invoke(main, ["discover", str(f)])
+    assert result.exit_code == 0, result.output
+    assert "among the first 12 of the 13 points only" in result.stderr
+    f.write_text("points " + " ".join(f"P{i}" for i in range(12)) + "\nprove collinear P0 P1 P2\n", encoding="utf-8")
+    assert "only" not in CliRunner().invoke(main, ["discover", str(f)]).stderr

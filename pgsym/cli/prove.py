@@ -160,7 +160,7 @@ def discover_command(file: str, as_json: bool, timeout: float, all_: bool) -> No
     coplanar points; six points on a conic) are found on a random exact instance; those that do not hold
     by construction are proved by the engine. Exit status 2 for a file that cannot be read.
     """
-    from ..proofs.discovery import discover
+    from ..proofs.discovery import MAX_SIX, discover
     from ..proofs.language import read_statement
 
     try:
@@ -180,3 +180,7 @@ def discover_command(file: str, as_json: bool, timeout: float, all_: bool) -> No
                f"{sum(r.status == 'proved' for r in found)} proved, "
                f"{sum(r.status == 'false' for r in found)} false at a generic point, "
                f"{sum(r.status == 'unknown' for r in found)} unknown", err=True)
+    n_points = sum(n.kind == "point" and not n.name.startswith("_") for n in claim.nodes.values())
+    if n_points > MAX_SIX:
+        click.echo(f"six points on a conic were looked for among the first {MAX_SIX} of the {n_points} points only "
+                   "(the other relations among all of them)", err=True)

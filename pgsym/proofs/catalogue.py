@@ -154,7 +154,7 @@ def class_matrix(c: Claim, group: TransformationClass,
     if len(params) != group.n_parameters:
         raise ObjectTypeError(f"{group.name} has {group.n_parameters} parameters, got the names {names!r}")
     R, *gens = ring(params, sympy.ZZ)
-    entries = [[_Ratio.of(e) for e in row] for row in group.builder([_Ratio(g) for g in gens], 0)]
+    entries = [[alg.Quotient.of(e) for e in row] for row in group.builder([alg.Quotient(g) for g in gens], 0)]
     dens: list[Any] = []
     for e in (e for row in entries for e in row):
         if e.d != 1 and all(e.d != d for d in dens):
@@ -163,47 +163,6 @@ def class_matrix(c: Claim, group: TransformationClass,
     # entries without a denominator are taken as they are (most classes have none: no division at all)
     rows = [[(R(e.n) * (den if e.d == 1 else den.exquo(R(e.d)))).as_expr() for e in row] for row in entries]
     return sympy.Matrix(rows), params
-
-
-class _Ratio:
-    """``n / d`` of polynomials, never reduced: the builders divide only by a few common denominators
-    (``1 + t²``, ``1 + a² + b² + c²``), which are then cleared at once, without any gcd."""
-
-    __slots__ = ("d", "n")
-
-    def __init__(self, n: Any, d: Any = 1) -> None:
-        self.n, self.d = n, d
-
-    @staticmethod
-    def of(x: Any) -> _Ratio:
-        return x if isinstance(x, _Ratio) else _Ratio(x)
-
-    def __add__(self, o: Any) -> _Ratio:
-        o = _Ratio.of(o)
-        if o.d == self.d:
-            return _Ratio(self.n + o.n, self.d)
-        return _Ratio(self.n * o.d + o.n * self.d, self.d * o.d)
-
-    __radd__ = __add__
-
-    def __neg__(self) -> _Ratio:
-        return _Ratio(-self.n, self.d)
-
-    def __sub__(self, o: Any) -> _Ratio:
-        return self + -_Ratio.of(o)
-
-    def __rsub__(self, o: Any) -> _Ratio:
-        return _Ratio.of(o) + -self
-
-    def __mul__(self, o: Any) -> _Ratio:
-        o = _Ratio.of(o)
-        return _Ratio(self.n * o.n, self.d * o.d)
-
-    __rmul__ = __mul__
-
-    def __truediv__(self, o: Any) -> _Ratio:
-        o = _Ratio.of(o)
-        return _Ratio(self.n * o.d, self.d * o.n)
 
 
 def _incident_to_both(c: Claim, free: Callable[[str], object], op: str, name: str, given: str) -> None:

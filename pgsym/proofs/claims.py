@@ -26,7 +26,7 @@ from typing import Any
 import sympy
 
 from .. import ring as alg
-from ..errors import ObjectTypeError
+from ..errors import InvalidCoordinatesError, ObjectTypeError
 from .errors import NonPolynomialClaimError, UndefinedConstructionError
 from .operations import KINDS, OPERATIONS, Operation, constructions, operation
 
@@ -507,6 +507,240 @@ class Claim:
         """
         return self._construct("midpoint", name, (a, b))
 
+    # -- Euclidean constructions (the absolute: l∞ and the circular points, in real form) ----------------------
+    def parallel(self, name: str, l: Any, p: Any) -> Node:
+        """The line through P parallel to l: ``P × (b, −a, 0)``; needs l not the line at infinity.
+
+        >>> c = Claim("x", "x")
+        >>> c.parallel("m", c.free_line("l"), c.free_point("P")).conditions
+        ['l is not the line at infinity', 'P is a finite point']
+        """
+        return self._construct("parallel", name, (l, p))
+
+    def perpendicular(self, name: str, l: Any, p: Any) -> Node:
+        """The line through P perpendicular to l: ``P × C*∞ l = P × (a, b, 0)``.
+
+        >>> c = Claim("x", "x")
+        >>> c.perpendicular("m", c.line("l", 1, 2, 3), c.point("P", 0, 0)).kind
+        'line'
+        """
+        return self._construct("perpendicular", name, (l, p))
+
+    def bisector(self, name: str, a: Any, b: Any) -> Node:
+        """The perpendicular bisector of the segment AB; needs ``A ≠ B``.
+
+        >>> c = Claim("x", "x")
+        >>> c.bisector("m", c.free_point("A"), c.free_point("B")).conditions[0]
+        'A ≠ B'
+        """
+        return self._construct("bisector", name, (a, b))
+
+    def foot(self, name: str, p: Any, l: Any) -> Node:
+        """The foot of the perpendicular from P to l (:func:`pgsym.metric.orthogonal_projection`).
+
+        >>> c = Claim("x", "x")
+        >>> c.foot("F", c.free_point("P"), c.free_line("l")).description
+        'foot of the perpendicular from P to l'
+        """
+        return self._construct("foot", name, (p, l))
+
+    def reflect(self, name: str, x: Any, mirror: Any) -> Node:
+        """X reflected in a point (the half-turn about it) or in a line, as the mirror's kind says.
+
+        >>> c = Claim("x", "x")
+        >>> X = c.free_point("X")
+        >>> c.reflect("Y", X, c.free_point("P")).op, c.reflect("Z", X, c.free_line("l")).op
+        ('reflect_point', 'reflect_line')
+        """
+        kind = self._get(mirror, ("point", "line"), "reflect").kind
+        return self.reflect_point(name, x, mirror) if kind == "point" else self.reflect_line(name, x, mirror)
+
+    def reflect_point(self, name: str, x: Any, p: Any) -> Node:
+        """X reflected in the point P: ``2P − X``."""
+        return self._construct("reflect_point", name, (x, p))
+
+    def reflect_line(self, name: str, x: Any, l: Any) -> Node:
+        """X reflected in the line l (:func:`pgsym.metric.reflection`)."""
+        return self._construct("reflect_line", name, (x, l))
+
+    def rotate(self, name: str, x: Any, o: Any, cos: Any, sin: Any) -> Node:
+        """X rotated about O by the angle with the given cosine and sine.
+
+        Numbers must satisfy ``cos² + sin² = 1`` exactly; parameters (or expressions in them) add that
+        equation as a hypothesis.
+
+        >>> c = Claim("x", "x")
+        >>> c.rotate("Y", c.free_point("X"), c.free_point("O"), sympy.Rational(3, 5), sympy.Rational(4, 5)).kind
+        'point'
+        >>> c.rotate("Z", "X", "O", 1, 1)
+        Traceback (most recent call last):
+        ...
+        pgsym.errors.InvalidCoordinatesError: rotate: cos² + sin² = 2, not 1
+        """
+        c = _polynomial(cos, self.parameters, f"cosine of {name}")
+        s = _polynomial(sin, self.parameters, f"sine of {name}")
+        norm = sympy.expand(c * c + s * s - 1)
+        if norm.is_Rational and norm != 0:
+            raise InvalidCoordinatesError(f"rotate: cos² + sin² = {norm + 1}, not 1")
+        node = self._construct("rotate", name, (x, o), (c, s))
+        if not norm.is_Rational:
+            self.assume_zero(norm, f"({c})² + ({s})² = 1 (the angle of {name})")
+        return node
+
+    def translate(self, name: str, x: Any, a: Any, b: Any) -> Node:
+        """X moved by the vector from A to B.
+
+        >>> c = Claim("x", "x")
+        >>> c.translate("Y", *(c.free_point(n) for n in "XAB")).description
+        'X translated by the vector AB'
+        """
+        return self._construct("translate", name, (x, a, b))
+
+    def circle(self, name: str, o: Any, a: Any) -> Node:
+        """The circle with centre O through A; needs ``O ≠ A`` (a nonzero radius).
+
+        >>> c = Claim("x", "x")
+        >>> c.circle("K", c.point("O", 0, 0), c.point("A", 3, 4)).conditions[0]
+        'K has nonzero radius (O ≠ A)'
+        """
+        return self._construct("circle", name, (o, a))
+
+    circle_centre_point = circle_center_point = circle
+
+    def circle_radius(self, name: str, o: Any, r2: Any = None) -> Node:
+        """The circle with centre O and squared radius ``r2`` (a number or a parameter; default a new
+        parameter ``K_r2``).
+
+        >>> c = Claim("x", "x")
+        >>> c.circle_radius("K", c.free_point("O")).data
+        (K_r2,)
+        """
+        if r2 is None:
+            (r2,) = self.params(f"{name}_r2")
+        r2 = _polynomial(r2, self.parameters, f"squared radius of {name}")
+        return self._construct("circle_radius", name, (o,), (r2,))
+
+    def circle3(self, name: str, a: Any, b: Any, c: Any) -> Node:
+        """The circle through three points; needs them finite and not collinear.
+
+        >>> cl = Claim("x", "x")
+        >>> cl.circle3("K", *(cl.free_point(n) for n in "ABC")).conditions
+        ['A, B, C are finite and not collinear']
+        """
+        return self._construct("circle3", name, (a, b, c))
+
+    circle_through = circle3
+
+    def centre(self, name: str, k: Any) -> Node:
+        """The centre of a circle (or conic): the pole of the line at infinity, ``adj(K) (0, 0, 1)ᵀ``."""
+        return self._construct("centre", name, (k,))
+
+    center = centre
+
+    def point_on_circle(self, name: str, k: Any, p: Any, t: Any = None) -> Node:
+        """A point of the circle K with one parameter (through its known point P): :meth:`point_on_conic`."""
+        return self.point_on_conic(name, k, p, t)
+
+    def circles_second(self, name: str, k: Any, l: Any, a: Any) -> Node:
+        """The second common point of two circles K, L through the common point A (on their radical axis).
+
+        >>> c = Claim("x", "x")
+        >>> A, B, C, D = (c.free_point(n) for n in "ABCD")
+        >>> c.circles_second("X", c.circle3("K", A, B, C), c.circle3("L", A, B, D), A).conditions[0]
+        'K and L are not concentric (A must lie on both)'
+        """
+        return self._construct("circles_second", name, (k, l, a))
+
+    def invert(self, name: str, x: Any, k: Any) -> Node:
+        """The inverse of X in the circle K (:func:`pgsym.conic_metric.inversion`); needs X not the centre."""
+        return self._construct("invert", name, (x, k))
+
+    def dist2(self, name: str, a: Any, b: Any) -> Node:
+        """The squared distance ``|AB|²``, a ratio (numerator, denominator).
+
+        >>> c = Claim("x", "x")
+        >>> c.dist2("d", c.free_point("A"), c.free_point("B")).kind
+        'ratio'
+        """
+        return self._construct("dist2", name, (a, b))
+
+    def area(self, name: str, a: Any, b: Any, c: Any) -> Node:
+        """The signed area of the triangle ABC (positive counter-clockwise): ``det[A B C] / (2 w_A w_B w_C)``."""
+        return self._construct("area", name, (a, b, c))
+
+    def segratio(self, name: str, a: Any, b: Any, c: Any, d: Any) -> Node:
+        """The signed ratio AB / CD of two parallel (or collinear) segments, ``(B − A)·(D − C) / |D − C|²``.
+
+        For segments that are not parallel this is the ratio of the projection of AB on CD to CD.
+        """
+        return self._construct("segratio", name, (a, b, c, d))
+
+    def add(self, name: str, r: Any, s: Any) -> Node:
+        """The sum of two ratios (or numbers)."""
+        return self._construct("add", name, (self._ratio_arg(r), self._ratio_arg(s)))
+
+    def sub(self, name: str, r: Any, s: Any) -> Node:
+        """The difference of two ratios (or numbers)."""
+        return self._construct("sub", name, (self._ratio_arg(r), self._ratio_arg(s)))
+
+    def mul(self, name: str, r: Any, s: Any) -> Node:
+        """The product of two ratios (or numbers).
+
+        >>> c = Claim("x", "x")
+        >>> A, B = c.free_point("A"), c.free_point("B")
+        >>> c.mul("m", c.dist2("d", A, B), 2).description
+        'd · 2'
+        """
+        return self._construct("mul", name, (self._ratio_arg(r), self._ratio_arg(s)))
+
+    def _ratio_arg(self, x: Any) -> Node:
+        """A ratio object, or a number as a constant ratio registered under its own text (names start with a
+        letter, so it clashes with none)."""
+        if isinstance(x, (Node, str)):
+            return self._get(x, ("ratio",), "ratio arithmetic")
+        node = self._ratio(x)
+        del self.nodes[next(k for k, v in self.nodes.items() if v is node)]
+        return self.nodes.setdefault(node.name, node)
+
+    # Euclidean conclusions
+    def conclude_perpendicular(self, l: Any, m: Any) -> None:
+        """Two lines are perpendicular: ``lᵀ C*∞ m = a a' + b b' = 0``."""
+        self._conclude_quantity("perpendicular_to", (l, m), f"{' ⟂ '.join(self._names(l, m))}")
+
+    def conclude_parallel(self, l: Any, m: Any) -> None:
+        """Two lines are parallel (they meet on l∞): ``a b' − a' b = 0``."""
+        self._conclude_quantity("parallel_to", (l, m), f"{' ∥ '.join(self._names(l, m))}")
+
+    def conclude_equal_length(self, a: Any, b: Any, c: Any, d: Any) -> None:
+        """``|AB| = |CD|``: the squared distances are equal.
+
+        >>> c = Claim("x", "x")
+        >>> c.conclude_equal_length(*(c.free_point(n) for n in "ABCD"))
+        >>> c.conclusions[0].text
+        '|AB| = |CD|'
+        """
+        na, nb, nc, nd = self._names(a, b, c, d)
+        r = self.dist2(f"_dist2 {na} {nb}#{len(self.nodes)}", a, b)
+        s = self.dist2(f"_dist2 {nc} {nd}#{len(self.nodes)}", c, d)
+        self._conclude("equal_ratio", (r, s), f"|{na}{nb}| = |{nc}{nd}|")
+
+    def conclude_equal_angle(self, a: Any, b: Any, c: Any, d: Any, e: Any, f: Any) -> None:
+        """The oriented angle ∠ABC (from line BA to line BC) equals ∠DEF modulo π: equal tangents."""
+        n = self._names(a, b, c, d, e, f)
+        self._conclude_quantity("equal_angle", (a, b, c, d, e, f), f"∠{''.join(n[:3])} = ∠{''.join(n[3:])} (mod π)")
+
+    def conclude_concyclic(self, a: Any, b: Any, c: Any, d: Any) -> None:
+        """Four points lie on one circle or one line: ``det[(x² + y², xw, yw, w²)] = 0`` (a circle is a conic through
+        the circular points; the line ∪ l∞ is the degenerate member of that family)."""
+        self._conclude_quantity("concyclic", (a, b, c, d), f"{', '.join(self._names(a, b, c, d))} are concyclic")
+
+    def conclude_equal_area(self, a: Any, b: Any, c: Any, d: Any, e: Any, f: Any) -> None:
+        """The signed areas of ABC and DEF are equal."""
+        n = self._names(a, b, c, d, e, f)
+        r = self.area(f"_area {' '.join(n[:3])}#{len(self.nodes)}", a, b, c)
+        s = self.area(f"_area {' '.join(n[3:])}#{len(self.nodes)}", d, e, f)
+        self._conclude("equal_ratio", (r, s), f"area {''.join(n[:3])} = area {''.join(n[3:])}")
+
     def formula(self, name: str, kind: str, fn: Callable[..., Any], *args: Any, description: str = "",
                 conditions: Sequence[str] = ()) -> Node:
         """An object computed by ``fn`` from earlier objects with ``+``, ``-``, ``*`` only.
@@ -599,6 +833,10 @@ class Claim:
     def _ratio(self, x: Any) -> Node:
         if isinstance(x, (Node, str)):
             return self._get(x, ("ratio",), "conclude_equal_ratio")
+        if isinstance(x, sympy.Symbol) and x in self.parameters:  # a parameter as a ratio x / 1
+            node = Node(str(x), "ratio", "const", (), str(x), (x, sympy.Integer(1)))
+            self.nodes[f"_const{len(self.nodes)}"] = node
+            return node
         try:
             value = sympy.Rational(x)
         except (TypeError, ValueError, sympy.SympifyError):

@@ -504,6 +504,12 @@ def _general_position(claim: Claim, normalisation: Normalisation, backend: str |
     in Pⁿ independent (one determinant each), e.g. "A, B, C are not collinear"."""
     conv = _converter(claim, backend=backend)
     nodes = [claim.nodes[n] for n in normalisation.objects]  # their coordinates are plain parameters
+    if normalisation.group in ("similarity", "euclidean"):  # two points: distinct (similarity), nothing (isometry)
+        if normalisation.group == "euclidean":
+            return []
+        p, q = ([conv(e) for e in n.data] for n in nodes)
+        return [Condition(f"{nodes[0].name} ≠ {nodes[1].name} (frame)",
+                          raw=[p[i] * q[j] - p[j] * q[i] for i in range(3) for j in range(i + 1, 3)])]
     out = []
     for subset in itertools.combinations(nodes, len(nodes[0].data)):
         minor = alg.det([tuple(conv(e) for e in n.data) for n in subset])

@@ -27,11 +27,12 @@ starting with a letter; keywords are not names):
                 | "point" NAME "on" "line" arg [arg]            one parameter: on line l, or on line A B
                 | "point3" NAME "on" "line" arg arg
                 | "point" NAME "on" "conic" arg ["through" arg] one parameter; through a point of the conic
+                | "point" NAME "on" "circle" arg ["through" arg] the same for a circle (its known point by default)
                 | "prove" PREDICATE arg+
     PLURAL     := points | lines | points3 | planes | points1 | conics | matrices | matrices4 | matrices2
     KIND       := point | line | point3 | plane | line3 | conic | point1 | ratio | matrix
     expr       := arg | OPERATION arg+
-    arg        := NAME | "(" expr ")" | "(" coord ("," coord)+ ")"
+    arg        := NAME | "(" expr ")" | "(" coord ("," coord)+ ")" | ["-"] NUMBER
     coord      := ["-"] (NUMBER | NAME)                         NUMBER: digits ["/" digits]
 
 Operations (chosen by the kinds of their arguments):
@@ -51,11 +52,38 @@ Operations (chosen by the kinds of their arguments):
 ``dual``           conic → its dual conic (the matrix adj C)
 =================  =================================================================================
 
+Euclidean operations (relative to the absolute: l∞ and the circular points; every formula is right for
+any homogeneous representative; each states its non-degeneracy condition in words):
+
+=================  =================================================================================
+``parallel``       line l, point P → the line through P parallel to l
+``perpendicular``  line l, point P → the line through P perpendicular to l
+``bisector``       A B → the perpendicular bisector of the segment AB (A ≠ B)
+``foot``           point P, line l → the foot of the perpendicular from P to l
+``reflect``        X P → X reflected in the point P; X l → X reflected in the line l
+``rotate``         X O c s → X rotated about O by the angle with cos c, sin s (numbers with
+                   c² + s² = 1, checked; or parameter names, then c² + s² = 1 is a hypothesis)
+``translate``      X A B → X moved by the vector from A to B
+``circle``         O A → centre O through A; A B C → through three points; O r → centre O, squared
+                   radius r (a number or a parameter name)
+``centre``         circle (or conic) → its centre, the pole of l∞
+``second``         circles K L, common point A → their second common point (on the radical axis)
+``invert``         X K → the inverse of X in the circle K
+``dist2``          A B → the squared distance (a ratio)
+``area``           A B C → the signed area of the triangle (a ratio; positive counter-clockwise)
+``segratio``       A B C D → the signed ratio AB / CD of parallel segments (a ratio)
+``add sub mul``    two ratios (or a ratio and a number) → their sum, difference, product
+=================  =================================================================================
+
 Predicates of ``prove``: ``collinear`` (three points of P² or P³), ``concurrent`` (three lines),
 ``coplanar`` (four points of P³), ``on`` (point on line, plane, line3 or conic), ``tangent`` (line
 touching a conic), ``meet`` (two lines of P³ meet), ``conconic`` (six points on a conic, or six lines
 tangent to one), ``equal`` (two objects equal up to scale; two ratios, or a ratio and a number),
-``harmonic`` (A B C D: the cross-ratio is −1). Several ``prove`` lines must all hold. Parts of the Python
+``harmonic`` (A B C D: the cross-ratio is −1); Euclidean: ``perpendicular`` and ``parallel`` (two lines),
+``equallength`` (A B C D: AB and CD equally long), ``equalangle`` (A B C D E F: the oriented angle ∠ABC, from
+line BA to line BC, equals ∠DEF modulo π), ``concyclic`` (four points on one circle, or on one line: the
+line with l∞ is the degenerate member of the circles' family), ``equalarea`` (A B C D E F: equal signed
+areas). Several ``prove`` lines must all hold. Parts of the Python
 API with no statement form: ``formula`` (an arbitrary function), ``combine`` with given coefficients,
 equation hypotheses (``assume_zero``), exact (not projective) equality, ranks and degrees of freedom.
 
@@ -121,6 +149,10 @@ _KINDS = ("point", "line", "point3", "plane", "line3", "conic", "point1", "ratio
 _OPERATIONS = ("join", "meet", "plane", "conic", "tangent", "polar", "second", "harmonic", "crossratio",
                "midpoint", "apply", "dual")
 _PREDICATES = ("collinear", "concurrent", "coplanar", "on", "tangent", "meet", "conconic", "equal", "harmonic")
+# Euclidean constructions and predicates (relative to the absolute)
+_OPERATIONS += ("parallel", "perpendicular", "bisector", "foot", "reflect", "rotate", "translate", "circle",
+                "centre", "invert", "dist2", "area", "segratio", "add", "sub", "mul")
+_PREDICATES += ("perpendicular", "parallel", "equallength", "equalangle", "concyclic", "equalarea")
 KEYWORDS = frozenset({"title", "expect", "params", "prove", "on", "through", *_PLURALS, *_KINDS, *_OPERATIONS,
                       *_PREDICATES})
 
@@ -216,6 +248,12 @@ def _show(tok: _Token) -> str:
 
 def _parse_arg(cur: _Line, depth: int) -> Any:
     tok = cur.next()
+    if tok.kind == "number" or (tok.text == "-" and cur.peek().kind == "number"):
+        # a number argument (a cosine, a squared radius, a term of ratio arithmetic), kept as one token
+        if tok.text == "-":
+            num = cur.next()
+            return _Token("number", "-" + num.text, tok.line, tok.col)
+        return tok
     if tok.kind == "name":
         if tok.text in _OPERATIONS:
             raise StatementSyntaxError(f"the operation {tok.text!r} inside an argument needs parentheses: "
@@ -283,13 +321,20 @@ def _canonical(e: Any) -> str:
 _Builder = Callable[[Claim, str, list[Node]], Node]
 
 
+def _kind_of(a: Any) -> str:
+    """The kind of an argument: a node's kind, ``number`` for a number, ``param`` for a parameter name."""
+    if isinstance(a, Node):
+        return a.kind
+    return "number" if isinstance(a, sympy.Rational) else "param"
+
+
 def _by_kind(table: dict[tuple[str, ...], _Builder]) -> Callable[[Claim, str, list[Node], _Token], Node]:
     def build(claim: Claim, name: str, args: list[Node], tok: _Token) -> Node:
-        kinds = tuple(a.kind for a in args)
+        kinds = tuple(_kind_of(a) for a in args)
         builder = table.get(kinds)
         if builder is None:
             accepted = "; ".join(" ".join(k) for k in table)
-            got = " ".join(f"{a.kind} {a.name}" for a in args) or "nothing"
+            got = " ".join(f"{_kind_of(a)} {getattr(a, 'name', a)}" for a in args) or "nothing"
             raise StatementKindError(f"{tok.text} takes ({accepted}), got {got}", tok.line, tok.col)
         return builder(claim, name, args)
     return build
@@ -323,6 +368,31 @@ _BUILD: dict[str, Callable[[Claim, str, list[Node], _Token], Node]] = {
     "dual": _by_kind({(_C,): lambda c, n, a: c.dual_conic(n, *a)}),
 }
 
+# Euclidean constructions (numbers and parameter names allowed where a cosine, sine or squared radius goes)
+_N, _R = ("number", "param"), "ratio"
+_BUILD.update({
+    "parallel": _by_kind({(_L, _P): lambda c, n, a: c.parallel(n, *a)}),
+    "perpendicular": _by_kind({(_L, _P): lambda c, n, a: c.perpendicular(n, *a)}),
+    "bisector": _by_kind({(_P, _P): lambda c, n, a: c.bisector(n, *a)}),
+    "foot": _by_kind({(_P, _L): lambda c, n, a: c.foot(n, *a)}),
+    "reflect": _by_kind({(_P, _P): lambda c, n, a: c.reflect_point(n, *a),
+                         (_P, _L): lambda c, n, a: c.reflect_line(n, *a)}),
+    "rotate": _by_kind({(_P, _P, x, y): (lambda c, n, a: c.rotate(n, *a)) for x in _N for y in _N}),
+    "translate": _by_kind({(_P, _P, _P): lambda c, n, a: c.translate(n, *a)}),
+    "circle": _by_kind({(_P, _P): lambda c, n, a: c.circle(n, *a), (_P, _P, _P): lambda c, n, a: c.circle3(n, *a),
+                        **{(_P, x): (lambda c, n, a: c.circle_radius(n, *a)) for x in _N}}),
+    "centre": _by_kind({(_C,): lambda c, n, a: c.centre(n, *a)}),
+    "invert": _by_kind({(_P, _C): lambda c, n, a: c.invert(n, *a)}),
+    "dist2": _by_kind({(_P, _P): lambda c, n, a: c.dist2(n, *a)}),
+    "area": _by_kind({(_P, _P, _P): lambda c, n, a: c.area(n, *a)}),
+    "segratio": _by_kind({(_P,) * 4: lambda c, n, a: c.segratio(n, *a)}),
+    **{op: _by_kind({(x, y): (lambda c, n, a, op=op: getattr(c, op)(n, *a))
+                     for x in (_R, "number") for y in (_R, "number") if (x, y) != ("number", "number")})
+       for op in ("add", "sub", "mul")},
+})
+_BUILD["second"] = _by_kind({(_C, _P, _P): lambda c, n, a: c.second_intersection(n, *a),
+                             (_C, _C, _P): lambda c, n, a: c.circles_second(n, *a)})
+
 _Conclude = Callable[[Claim, list[Any]], None]
 
 
@@ -339,6 +409,16 @@ _PROVE: dict[str, dict[tuple[str, ...], _Conclude]] = {
               ("ratio", "ratio"): lambda c, a: c.conclude_equal_ratio(*a),
               ("ratio", "number"): lambda c, a: c.conclude_equal_ratio(*a)},
 }
+# Euclidean predicates
+_PROVE.update({
+    "perpendicular": {(_L, _L): lambda c, a: c.conclude_perpendicular(*a)},
+    "parallel": {(_L, _L): lambda c, a: c.conclude_parallel(*a)},
+    "equallength": {(_P,) * 4: lambda c, a: c.conclude_equal_length(*a)},
+    "equalangle": {(_P,) * 6: lambda c, a: c.conclude_equal_angle(*a)},
+    "concyclic": {(_P,) * 4: lambda c, a: c.conclude_concyclic(*a)},
+    "equalarea": {(_P,) * 6: lambda c, a: c.conclude_equal_area(*a)},
+})
+_PROVE["equal"][("ratio", "param")] = lambda c, a: c.conclude_equal_ratio(*a)
 
 
 class _Reader:
@@ -369,6 +449,12 @@ class _Reader:
 
     def _value(self, e: Any, name: str | None = None, kind: str | None = None) -> Node:
         """The node of an expression; named when ``name`` is given, else named by its text (and shared)."""
+        if isinstance(e, _Token) and name is None and e.kind == "number":
+            return sympy.Rational(Fraction(e.text))  # type: ignore[return-value]
+        if isinstance(e, _Token) and name is None and e.text not in self.claim.nodes:
+            param = next((p for p in self.claim.parameters if str(p) == e.text), None)
+            if param is not None:
+                return param  # type: ignore[return-value]
         if isinstance(e, _Token):
             node = self._lookup(e)
             if name is None:
@@ -392,6 +478,8 @@ class _Reader:
         node = _BUILD[e.op](self.claim, key, args, e.tok)
         if e.op == "conic" and args and args[0].kind == _P:
             self.first_point[key] = args[0]
+        if e.op == "circle" and node.op in ("circle", "circle3"):  # a known point: A of circle O A, circle A B C
+            self.first_point[key] = args[1] if node.op == "circle" else args[0]
         return node
 
     def _coordinates(self, name: str, kind: str, e: _Tuple) -> Node:
@@ -501,7 +589,7 @@ class _Reader:
                                          f"{first.name} and the {second.kind} {second.name}", what.line, what.col)
             self.claim.point_on_line(name, first, second)
             return
-        if what.text == "conic" and kind == "point":
+        if what.text in ("conic", "circle") and kind == "point":
             conic = self._value(_parse_arg(cur, 0))
             if conic.kind != _C:
                 raise StatementKindError(f"'on conic' takes a conic, got the {conic.kind} {conic.name}",
@@ -540,7 +628,7 @@ class _Reader:
             ratio = self._value(_Call("crossratio", [_Token("name", a.name, 0, 0) for a in args], pred))
             self.claim.conclude_equal_ratio(ratio, -1)
             return
-        kinds = tuple("number" if isinstance(a, sympy.Rational) else a.kind for a in args)
+        kinds = tuple(_kind_of(a) for a in args)
         table = _PROVE[pred.text]
         conclude = table.get(kinds)
         if conclude is None:

@@ -25,15 +25,18 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
+import sympy
 from sympy import Matrix
 
-from .. import conics, plucker, projective_line, projective_plane, space
+from .. import affine, conic_metric, conics, invariants, metric, plucker, projective_line, projective_plane, space
 from .. import ring as alg
 from ..exact import is_zero
 from ..homogeneous import HomogeneousVector
 from ..kinds import object_classes
 
-__all__ = ["KINDS", "OPERATIONS", "CoreDegenerate", "Operation", "constructions", "flat", "operation"]
+__all__ = [
+    "EUCLIDEAN_OPERATIONS", "KINDS", "OPERATIONS", "CoreDegenerate", "Operation", "constructions", "flat", "operation",
+]
 
 # Proofs carry a line of P³ as its 4×4 Plücker matrix (the wedge of two points), not as the six
 # Plücker coordinates of the Line3 class, so its size here is that of a matrix.
@@ -89,8 +92,10 @@ class Operation:
       counterpart), ``exact`` mapping coefficient data to SymPy rationals;
     * ``description(names, data)``: how the construction reads, e.g. ``A × B``;
     * ``group``: the group whose action the construction commutes with (``"projective"``: mapping the
-      arguments by any homography maps the result by it; ``"affine"``, ``"similarity"`` for constructions
-      that use l∞ or the circular points), or ``None`` when its value depends on the representatives or on
+      arguments by any homography maps the result by it; ``"affine"`` for constructions that use l∞ (midpoint,
+      parallel, centre, signed area), ``"similarity"`` for those that use the circular points (perpendicular,
+      circles, inversion, squared distance, angles; they commute with every orientation-preserving
+      similarity), ``"euclidean"`` for fixed lengths), or ``None`` when its value depends on the representatives or on
       data the group does not act on (``combine`` with coefficients, a matrix applied, a formula). Choosing
       coordinates without loss of generality is allowed only under a group every construction commutes with.
       A construction with a free parameter (a point on a line or on a conic) counts as commuting when the
@@ -501,6 +506,329 @@ _TABLE = (
     Operation("formula", None, "formula", lambda node, v, scalar: node.data(*v),
               lambda n, d: f"{getattr(d, '__name__', 'f')}({', '.join(n)})", group=None),
 )
+
+# -- Euclidean constructions: the absolute (l∞ = (0, 0, 1), C*∞ = diag(1, 1, 0)) in real form ---------------
+#
+# Points are homogeneous (x, y, w): every formula below is right for any representative (any w ≠ 0), lines
+# (a, b, c) for any scale, circles for any scale of their matrix. A ratio is a pair (numerator, denominator).
+
+def _xy(p: Sequence[Any]) -> tuple[Any, Any]:
+    return p[0], p[1]
+
+
+def _vec(a: Sequence[Any], b: Sequence[Any]) -> tuple[Any, Any]:
+    """w_A w_B (B − A) in affine coordinates: ``w_A B − w_B A`` (first two coordinates)."""
+    return b[0] * a[2] - a[0] * b[2], b[1] * a[2] - a[1] * b[2]
+
+
+def _parallel(node: Any, v: list[Any], scalar: Scalar) -> tuple[Any, ...]:
+    # P × (b, −a, 0), the join of P with the ideal point of l
+    (a, b, _c), (x, y, w) = v
+    return (a * w, b * w, -(a * x + b * y))
+
+
+def _perpendicular(node: Any, v: list[Any], scalar: Scalar) -> tuple[Any, ...]:
+    # P × (a, b, 0) = P × C*∞ l, the join of P with the pole of l for the absolute (the normal's ideal point)
+    (a, b, _c), (x, y, w) = v
+    return (-b * w, a * w, b * x - a * y)
+
+
+def _bisector(node: Any, v: list[Any], scalar: Scalar) -> tuple[Any, ...]:
+    # |X − A|² = |X − B|² ⇔ 2 (B − A)·X + |A|² − |B|² = 0 with A = a/w_a, B = b/w_b, times w_a² w_b²
+    (x1, y1, w1), (x2, y2, w2) = v
+    return (2 * (x2 * w1 - x1 * w2) * w1 * w2, 2 * (y2 * w1 - y1 * w2) * w1 * w2,
+            (x1 * x1 + y1 * y1) * w2 * w2 - (x2 * x2 + y2 * y2) * w1 * w1)
+
+
+def _foot(node: Any, v: list[Any], scalar: Scalar) -> tuple[Any, ...]:
+    # s P − (lᵀP)(a, b, 0) with s = a² + b² (pgsym.metric.orthogonal_projection)
+    (x, y, w), (a, b, c) = v
+    s, lp = a * a + b * b, a * x + b * y + c * w
+    return (s * x - lp * a, s * y - lp * b, s * w)
+
+
+def _reflect_point(node: Any, v: list[Any], scalar: Scalar) -> tuple[Any, ...]:
+    # 2P − X: (2 w_X P − w_P X) over w_P w_X
+    (x, y, w), (px, py, pw) = v
+    return (2 * w * px - pw * x, 2 * w * py - pw * y, pw * w)
+
+
+def _reflect_line(node: Any, v: list[Any], scalar: Scalar) -> tuple[Any, ...]:
+    # s X − 2 (lᵀX)(a, b, 0) with s = a² + b² (pgsym.metric.reflection)
+    (x, y, w), (a, b, c) = v
+    s, lx = a * a + b * b, a * x + b * y + c * w
+    return (s * x - 2 * lx * a, s * y - 2 * lx * b, s * w)
+
+
+def _rotate(node: Any, v: list[Any], scalar: Scalar) -> tuple[Any, ...]:
+    # O + R(X − O): with (u, v) = w_O w_X (X − O), the point (w_X O + R(u, v), w_O w_X)
+    (x, y, w), (ox, oy, ow) = v
+    c, s = scalar(node.data[0]), scalar(node.data[1])
+    u, t = _vec((ox, oy, ow), (x, y, w))
+    return (w * ox + c * u - s * t, w * oy + s * u + c * t, ow * w)
+
+
+def _translate(node: Any, v: list[Any], scalar: Scalar) -> tuple[Any, ...]:
+    # X + (B − A) over the common denominator w_X w_A w_B
+    (x, y, w), a, b = v
+    u, t = _vec(a, b)
+    return (x * a[2] * b[2] + w * u, y * a[2] * b[2] + w * t, w * a[2] * b[2])
+
+
+def _circle_centre_point(node: Any, v: list[Any], scalar: Scalar) -> Any:
+    # x² + y² − 2 (O·X) w + (2 A·O − |A|²) w² with O = o/w_o, A = a/w_a, times w_o w_a²
+    (ox, oy, ow), (ax, ay, aw) = v
+    q = aw * aw
+    f = 2 * (ax * ox + ay * oy) * aw - (ax * ax + ay * ay) * ow
+    return ((ow * q, ow - ow, -ox * q), (ow - ow, ow * q, -oy * q), (-ox * q, -oy * q, f))
+
+
+def _circle_centre_radius(node: Any, v: list[Any], scalar: Scalar) -> Any:
+    # w_o² (x² + y²) − 2 w_o (o·X) w + (|o|² − r w_o²) w²
+    (ox, oy, ow) = v[0]
+    r = scalar(node.data[0])
+    z = ow - ow
+    return ((ow * ow, z, -ox * ow), (z, ow * ow, -oy * ow), (-ox * ow, -oy * ow, ox * ox + oy * oy - r * ow * ow))
+
+
+def _circle_three(node: Any, v: list[Any], scalar: Scalar) -> Any:
+    # the 4×4 determinant of the rows (x² + y², xw, yw, w²) of X, A, B, C, expanded along the row of X
+    rows = [(x * x + y * y, x * w, y * w, w * w) for x, y, w in v]
+    d, ex, ey, f = (alg.det([r[:j] + r[j + 1:] for r in rows]) * (1 if j % 2 == 0 else -1) for j in range(4))
+    z = d - d
+    return ((d + d, z, ex), (z, d + d, ey), (ex, ey, f + f))
+
+
+def _centre(node: Any, v: list[Any], scalar: Scalar) -> tuple[Any, ...]:
+    # the pole of l∞: adj(K) (0, 0, 1)ᵀ (pgsym.conic_metric.center)
+    adj = alg.adjugate(v[0])
+    return (adj[0][2], adj[1][2], adj[2][2])
+
+
+def _circles_second(node: Any, v: list[Any], scalar: Scalar) -> tuple[Any, ...]:
+    # the radical axis: L₀₀ K − K₀₀ L has no x², y² terms, so it is w·(2d x + 2e y + f w); its ideal point Q
+    # (direction) and A span it, and the second point of K on the line AQ is (QᵀKQ) A − 2 (AᵀKQ) Q
+    k, l, a = v
+    m = [[l[0][0] * k[i][j] - k[0][0] * l[i][j] for j in range(3)] for i in range(3)]
+    q = (m[1][2], -m[0][2], m[0][2] - m[0][2])
+    return _second_intersection(a, q, k)
+
+
+def _invert(node: Any, v: list[Any], scalar: Scalar) -> tuple[Any, ...]:
+    # K = a(x² + y²) + 2dxw + 2eyw + fw²: centre −(d, e)/a, r² = N/a² with N = d² + e² − af; with
+    # U = (a x + d w, a y + e w) = a w (X − O), the inverse O + r² (X − O)/|X − O|² is (−(d, e)|U|² + N w U, a|U|²)
+    (x, y, w), k = v
+    a, d, e, f = k[0][0], k[0][2], k[1][2], k[2][2]
+    ux, uy = a * x + d * w, a * y + e * w
+    uu, n = ux * ux + uy * uy, d * d + e * e - a * f
+    return (-d * uu + n * w * ux, -e * uu + n * w * uy, a * uu)
+
+
+def _dist2(node: Any, v: list[Any], scalar: Scalar) -> tuple[Any, Any]:
+    u, t = _vec(v[0], v[1])
+    return (u * u + t * t, v[0][2] * v[0][2] * v[1][2] * v[1][2])
+
+
+def _area(node: Any, v: list[Any], scalar: Scalar) -> tuple[Any, Any]:
+    # det[A B C] / (2 w_A w_B w_C) (pgsym.invariants.signed_area)
+    return (alg.det(v), 2 * v[0][2] * v[1][2] * v[2][2])
+
+
+def _segratio(node: Any, v: list[Any], scalar: Scalar) -> tuple[Any, Any]:
+    # AB / CD for parallel segments: with u = B − A, t = D − C (u = k t), k = u·t / t·t; the vectors are
+    # U/(w_A w_B) and T/(w_C w_D), so k = (U·T) w_C w_D / ((T·T) w_A w_B)
+    a, b, c, d = v
+    uu, tt = _vec(a, b), _vec(c, d)
+    return ((uu[0] * tt[0] + uu[1] * tt[1]) * c[2] * d[2], (tt[0] * tt[0] + tt[1] * tt[1]) * a[2] * b[2])
+
+
+def _ratio_arith(op: str) -> Callable[[Any, list[Any], Scalar], tuple[Any, Any]]:
+    def formula(node: Any, v: list[Any], scalar: Scalar) -> tuple[Any, Any]:
+        (n1, d1), (n2, d2) = v
+        if op == "mul":
+            return (n1 * n2, d1 * d2)
+        return (n1 * d2 + n2 * d1 if op == "add" else n1 * d2 - n2 * d1, d1 * d2)
+    return formula
+
+
+def _perpendicular_q(node: Any, v: list[Any], scalar: Scalar) -> tuple[Any]:
+    return (v[0][0] * v[1][0] + v[0][1] * v[1][1],)
+
+
+def _parallel_q(node: Any, v: list[Any], scalar: Scalar) -> tuple[Any]:
+    return (v[0][0] * v[1][1] - v[0][1] * v[1][0],)
+
+
+def _concyclic_q(node: Any, v: list[Any], scalar: Scalar) -> tuple[Any]:
+    return (alg.det([(x * x + y * y, x * w, y * w, w * w) for x, y, w in v]),)
+
+
+def _equalangle_q(node: Any, v: list[Any], scalar: Scalar) -> tuple[Any]:
+    # tan ∠ABC = (u × t)/(u · t) with u = A − B, t = C − B; the representatives scale u × t and u · t alike
+    def cross_dot(p: Any, vertex: Any, q: Any) -> tuple[Any, Any]:
+        u, t = _vec(vertex, p), _vec(vertex, q)
+        return u[0] * t[1] - u[1] * t[0], u[0] * t[0] + u[1] * t[1]
+    (c1, d1), (c2, d2) = cross_dot(*v[:3]), cross_dot(*v[3:])
+    return (c1 * d2 - c2 * d1,)
+
+
+# non-degeneracy values: each a list of polynomials, the condition holds when not all vanish
+def _direction(l: Sequence[Any]) -> list[Any]:
+    return [l[0] * l[0] + l[1] * l[1]]
+
+
+def _finite(*points: Sequence[Any]) -> list[list[Any]]:
+    return [[p[2]] for p in points]
+
+
+def _distinct(p: Sequence[Any], q: Sequence[Any]) -> list[Any]:
+    u, t = _vec(p, q)
+    return [u * u + t * t]
+
+
+def _circle_a(k: Any) -> Any:
+    return k[0][0]
+
+
+# the core's objects
+def _conic_core(x: Any) -> conics.Conic:
+    return x if isinstance(x, conics.Conic) else conics.Conic(x.matrix if hasattr(x, "matrix") else x)
+
+
+def _circle_core(o: Any, r2: Any) -> conics.Conic:
+    ox, oy = o.dehomogenize()
+    return conics.Conic.circle(ox, oy, sympy.sqrt(r2))
+
+
+def _circumcentre_core(a: Any, b: Any, c: Any) -> Any:
+    def bisector(p: Any, q: Any) -> Any:
+        return metric.perpendicular_line(projective_plane.join(p, q), affine.midpoint(p, q))
+    return projective_plane.meet(bisector(a, b), bisector(b, c))
+
+
+def _segratio_core(node: Any, a: list[Any], exact: Scalar) -> Any:
+    (ax, ay), (bx, by), (cx, cy), (dx, dy) = (p.dehomogenize() for p in a)
+    u, t = (bx - ax, by - ay), (dx - cx, dy - cy)
+    if not is_zero(sympy.expand(u[0] * t[1] - u[1] * t[0])):
+        raise CoreDegenerate("the segments are not parallel at this point")
+    i = 0 if not is_zero(t[0]) else 1
+    return u[i] / t[i]
+
+
+def _circles_second_core(node: Any, a: list[Any], exact: Scalar) -> Any:
+    k, l, p = (_conic_core(a[0]), _conic_core(a[1]), a[2])
+    points = [x for x in k.intersections(l) if x != p and all(is_zero(e.as_real_imag()[1]) for e in x.coords)]
+    if len(points) != 1:
+        raise CoreDegenerate("the circles do not meet in one second real point at this point")
+    return points[0]
+
+
+def _sim(name: str, arg_kinds: Any, result: str, formula: Any, describe: Any, conditions: Any,
+         values: Any, core: Any, group: str = "similarity", **kw: Any) -> Operation:
+    return Operation(name, arg_kinds, result, formula, describe, conditions, values, core, group=group, **kw)
+
+
+_C2 = ("conic",)
+_EUCLIDEAN = (
+    _sim("parallel", (_LINE, _POINT), "line", _parallel, lambda n, d: f"line through {n[1]} parallel to {n[0]}",
+         lambda n, name, d: [f"{n[0]} is not the line at infinity", f"{n[1]} is a finite point"],
+         lambda node, value, a: [_direction(a[0]), *_finite(a[1])],
+         lambda node, a, exact: affine.parallel_line(*a), group="affine"),
+    _sim("perpendicular", (_LINE, _POINT), "line", _perpendicular,
+         lambda n, d: f"line through {n[1]} perpendicular to {n[0]}",
+         lambda n, name, d: [f"{n[0]} is not the line at infinity", f"{n[1]} is a finite point"],
+         lambda node, value, a: [_direction(a[0]), *_finite(a[1])],
+         lambda node, a, exact: metric.perpendicular_line(*a)),
+    _sim("bisector", (_POINT, _POINT), "line", _bisector, lambda n, d: f"perpendicular bisector of {n[0]}{n[1]}",
+         lambda n, name, d: [f"{n[0]} ≠ {n[1]}", f"{n[0]} is a finite point", f"{n[1]} is a finite point"],
+         lambda node, value, a: [_distinct(a[0], a[1]), *_finite(a[0], a[1])],
+         lambda node, a, exact: metric.perpendicular_line(projective_plane.join(*a), affine.midpoint(*a))),
+    _sim("foot", (_POINT, _LINE), "point", _foot, lambda n, d: f"foot of the perpendicular from {n[0]} to {n[1]}",
+         lambda n, name, d: [f"{n[1]} is not the line at infinity", f"{n[0]} is a finite point"],
+         lambda node, value, a: [_direction(a[1]), *_finite(a[0])],
+         lambda node, a, exact: metric.orthogonal_projection(*a)),
+    _sim("reflect_point", (_POINT, _POINT), "point", _reflect_point, lambda n, d: f"{n[0]} reflected in {n[1]}",
+         lambda n, name, d: [f"{n[0]} is a finite point", f"{n[1]} is a finite point"],
+         lambda node, value, a: _finite(a[0], a[1]),
+         lambda node, a, exact: metric.scaling(-1, a[1])(a[0]), group="affine"),
+    _sim("reflect_line", (_POINT, _LINE), "point", _reflect_line, lambda n, d: f"{n[0]} reflected in {n[1]}",
+         lambda n, name, d: [f"{n[1]} is not the line at infinity"], lambda node, value, a: [_direction(a[1])],
+         lambda node, a, exact: metric.reflect(*a)),
+    _sim("rotate", (_POINT, _POINT), "point", _rotate,
+         lambda n, d: f"{n[0]} rotated about {n[1]} by the angle with cos = {d[0]}, sin = {d[1]}",
+         lambda n, name, d: [f"{n[0]} is a finite point", f"{n[1]} is a finite point"],
+         lambda node, value, a: _finite(a[0], a[1]),
+         lambda node, a, exact: metric.rotation(exact(node.data[0]), exact(node.data[1]), a[1])(a[0]),
+         coefficients=True),
+    _sim("translate", (_POINT, _POINT, _POINT), "point", _translate,
+         lambda n, d: f"{n[0]} translated by the vector {n[1]}{n[2]}",
+         lambda n, name, d: [f"{x} is a finite point" for x in n], lambda node, value, a: _finite(*a),
+         lambda node, a, exact: metric.translation(*(q - p for p, q in zip(a[1].dehomogenize(),
+                                                                            a[2].dehomogenize(), strict=True)))(a[0]),
+         group="affine"),
+    _sim("circle", (_POINT, _POINT), "conic", _circle_centre_point,
+         lambda n, d: f"circle with centre {n[0]} through {n[1]}",
+         lambda n, name, d: [f"{name} has nonzero radius ({n[0]} ≠ {n[1]})", f"{n[0]} is a finite point",
+                             f"{n[1]} is a finite point"],
+         lambda node, value, a: [_distinct(a[0], a[1]), *_finite(a[0], a[1])],
+         lambda node, a, exact: _circle_core(a[0], metric.squared_distance(a[0], a[1]))),
+    _sim("circle_radius", (_POINT,), "conic", _circle_centre_radius,
+         lambda n, d: f"circle with centre {n[0]} and squared radius {d[0]}",
+         lambda n, name, d: [f"{name} has nonzero radius ({d[0]} ≠ 0)", f"{n[0]} is a finite point"],
+         lambda node, value, a: [[value[2][2] * value[0][0] - value[0][2] * value[0][2] - value[1][2] * value[1][2]],
+                                 *_finite(a[0])],
+         lambda node, a, exact: _circle_core(a[0], exact(node.data[0])), coefficients=True),
+    _sim("circle3", (_POINT,) * 3, "conic", _circle_three, lambda n, d: f"circle through {', '.join(n)}",
+         lambda n, name, d: [f"{', '.join(n)} are finite and not collinear"],
+         lambda node, value, a: [[value[0][0]]],
+         lambda node, a, exact: _circle_core(_circumcentre_core(*a),
+                                             metric.squared_distance(_circumcentre_core(*a), a[0]))),
+    _sim("centre", (_C2,), "point", _centre, lambda n, d: f"centre of {n[0]} (the pole of l∞)",
+         lambda n, name, d: [f"{n[0]} has a finite centre (it is no parabola)"],
+         lambda node, value, a: [[value[2]]],
+         lambda node, a, exact: conic_metric.center(_conic_core(a[0])), group="affine"),
+    _sim("circles_second", (_C2, _C2, _POINT), "point", _circles_second,
+         lambda n, d: f"second common point of {n[0]} and {n[1]} through {n[2]}",
+         lambda n, name, d: [f"{n[0]} and {n[1]} are not concentric ({n[2]} must lie on both)"],
+         lambda node, value, a: [[a[1][0][0] * a[0][i][2] - a[0][0][0] * a[1][i][2] for i in range(2)]],
+         _circles_second_core),
+    _sim("invert", (_POINT, _C2), "point", _invert, lambda n, d: f"inverse of {n[0]} in {n[1]}",
+         lambda n, name, d: [f"{n[0]} is not the centre of {n[1]}", f"{n[1]} has nonzero radius"],
+         lambda node, value, a: [[value[2]], [a[1][0][2] ** 2 + a[1][1][2] ** 2 - a[1][0][0] * a[1][2][2]]],
+         lambda node, a, exact: conic_metric.inversion(a[0], _conic_core(a[1]))),
+    _sim("dist2", (_POINT, _POINT), "ratio", _dist2, lambda n, d: f"|{n[0]}{n[1]}|²",
+         lambda n, name, d: [f"{n[0]} and {n[1]} are finite points"], lambda node, value, a: [[value[1]]],
+         lambda node, a, exact: metric.squared_distance(*a)),
+    _sim("area", (_POINT,) * 3, "ratio", _area, lambda n, d: f"signed area of {''.join(n)}",
+         lambda n, name, d: [f"{', '.join(n)} are finite points"], lambda node, value, a: [[value[1]]],
+         lambda node, a, exact: invariants.signed_area(*(p.coords for p in a)), group="affine"),
+    _sim("segratio", (_POINT,) * 4, "ratio", _segratio, lambda n, d: f"{n[0]}{n[1]} / {n[2]}{n[3]}",
+         lambda n, name, d: [f"{n[2]} ≠ {n[3]} and {n[0]}, {n[1]} are finite points"],
+         lambda node, value, a: [[value[1]]], _segratio_core),
+    *(_sim(op, (("ratio",), ("ratio",)), "ratio", _ratio_arith(op), lambda n, d, s=sign: f"{n[0]} {s} {n[1]}",
+           lambda n, name, d: [], None, lambda node, a, exact, op=op: (a[0] + a[1] if op == "add" else
+                                                                      a[0] - a[1] if op == "sub" else a[0] * a[1]),
+           group="projective")
+      for op, sign in (("add", "+"), ("sub", "−"), ("mul", "·"))),
+    # conclusion quantities
+    _sim("perpendicular_to", (_LINE, _LINE), "scalar", _perpendicular_q, lambda n, d: f"{n[0]}ᵀ C*∞ {n[1]}",
+         lambda n, name, d: [], None, None, constructible=False, conclusion=True),
+    _sim("parallel_to", (_LINE, _LINE), "scalar", _parallel_q, lambda n, d: f"[{n[0]}, {n[1]}, l∞]",
+         lambda n, name, d: [], None, None, group="affine", constructible=False, conclusion=True),
+    _sim("concyclic", (_POINT,) * 4, "scalar", _concyclic_q,
+         lambda n, d: f"det of the rows (x² + y², xw, yw, w²) of {', '.join(n)}",
+         lambda n, name, d: [], None, None, constructible=False, conclusion=True),
+    _sim("equal_angle", (_POINT,) * 6, "scalar", _equalangle_q,
+         lambda n, d: f"tan ∠{''.join(n[:3])} − tan ∠{''.join(n[3:])} (numerators)",
+         lambda n, name, d: [f"{n[1]} ≠ {n[0]}", f"{n[1]} ≠ {n[2]}", f"{n[4]} ≠ {n[3]}", f"{n[4]} ≠ {n[5]}"],
+         lambda node, value, a: [_distinct(a[1], a[0]), _distinct(a[1], a[2]), _distinct(a[4], a[3]),
+                                 _distinct(a[4], a[5])],
+         None, constructible=False, conclusion=True),
+)
+_TABLE += _EUCLIDEAN
+
+#: the names of the Euclidean operations (constructions and conclusion quantities relative to the absolute)
+EUCLIDEAN_OPERATIONS = tuple(op.name for op in _EUCLIDEAN)
 
 #: every operation by name, in the order of the table
 OPERATIONS: dict[str, Operation] = {op.name: op for op in _TABLE}

@@ -267,6 +267,16 @@ class Verdict:
         backend = f", on {c.backend}" if c.backend else ""
         return f"largest polynomial expanded: {c.largest_terms} terms of degree {c.largest_degree} in {c.ring}{backend}"
 
+    def condition_texts(self) -> list[str]:
+        """The conditions in words, each once (several constructions may need the same one, e.g. "P is a finite
+        point"), in the order of the claim.
+
+        >>> Verdict("x", "x", "proved", conditions=[Condition("A ≠ B"), Condition("C ≠ D"), Condition("A ≠ B")]
+        ...         ).condition_texts()
+        ['A ≠ B', 'C ≠ D']
+        """
+        return list(dict.fromkeys(c.text for c in self.conditions))
+
     def summary(self) -> str:
         """Plain text for a terminal: the verdict, the normalisation, the method, the size, the conditions.
 
@@ -280,7 +290,7 @@ class Verdict:
                 lines.append(f"  normalisation: {self.certificate.normalisation}")
             lines.append(f"  {self.identity_size()}")
         if self.conditions:
-            lines.append("  provided that: " + "; ".join(c.text for c in self.conditions))
+            lines.append("  provided that: " + "; ".join(self.condition_texts()))
         if self.counterexample is not None:
             lines.append("  counterexample: " + ", ".join(f"{k} = {v}" for k, v in self.counterexample.values.items()))
             branch = self.counterexample.branch
@@ -322,7 +332,7 @@ class Verdict:
                 lines.append(f"- … and {len(self.certificate.steps) - 8} more polynomials, each reduced to 0")
             lines += [f"- {e(self.identity_size())}", ""]
         if self.conditions:
-            lines.append("*Non-degeneracy conditions:* " + "; ".join(e(c.text) for c in self.conditions))
+            lines.append("*Non-degeneracy conditions:* " + "; ".join(e(t) for t in self.condition_texts()))
             lines.append("")
         if self.counterexample is not None:
             vals = ", ".join(f"{e(k)} = {v}" for k, v in self.counterexample.values.items())
@@ -366,7 +376,7 @@ class Verdict:
             items.append(f"Method: {t(self.certificate.method)}; {t(self.identity_size())}")
             items += [r"\texttt{" + t(_short(s, 120)) + "}" for s in self.certificate.steps[:4]]
         if self.conditions:
-            items.append("Non-degeneracy conditions: " + "; ".join(t(c.text) for c in self.conditions))
+            items.append("Non-degeneracy conditions: " + "; ".join(t(x) for x in self.condition_texts()))
         if self.counterexample is not None:
             items.append("Counterexample: " + ", ".join(f"{t(k)} = {t(str(v))}"
                                                          for k, v in self.counterexample.values.items()))
