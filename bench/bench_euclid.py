@@ -25,7 +25,7 @@ CORPUS = sorted((Path(__file__).resolve().parent.parent / "tests" / "euclid").gl
 RATIONAL_BUDGET_S = 1.0
 ROOTS_BUDGET_S = 10.0
 LIMIT_S = 10.0
-HARD_LIMIT_S = 60.0  # a run that overstays the engine's limit this long is stopped and counts as unknown
+HARD_LIMIT_S = 30.0  # a run that overstays the engine's limit this long is stopped and counts as unknown
 # the section B words: a statement using one has algebraic points
 SECTION_B = re.compile(r"\b(anglebisector|exbisector|intersections?|tangentsfrom|tangentfrom|polygon)\b"
                        r"|\brotate\s+\S+\s+\S+\s+-?\d+\s*(?:\)|$)", re.M)

@@ -50,6 +50,13 @@ KNOWN_OPEN: dict[str, str] = {
     "blazek-pech": _TOO_LARGE + ": four feet of a point of a circle through a Miquel point",
     "inversion-circle-circle": _TOO_LARGE + ": the concyclicity of four inverted points of a circle",
     "miquel-six-circles": _TOO_LARGE + ": a chain of five circles through one another's points",
+    "ceva-quotient": "the engine's core check disagrees with its formula for a signed ratio of named ratios "
+                     "(MISMATCH at segratio C F F A), so the proof is withheld",
+    **{name: "square roots: the engine finds no decision within its 10 s limit (or overstays it)" for name in (
+        "bisector-isoscel-ex219", "circle-bisector-ex116", "euler-oi", "incentre-equidistant",
+        "incentre-excentre-lemma", "intersecting-secants", "intersecting-secants-false", "isogonals-circumcentre",
+        "isosceles-angle-bisector", "pedal-triangle-isosceles", "secant-tangent-external",
+        "tangent-touch-branch-false", "radical-axis-false")},
 }
 
 
@@ -919,7 +926,7 @@ def recheck(stmt: Statement, values: dict[str, Fraction]) -> bool:
     return False
 
 
-HARD_LIMIT = 60.0  # seconds: a run that overstays the engine's own limit this long counts as unknown
+HARD_LIMIT = 30.0  # seconds: a run that overstays the engine's own limit this long counts as unknown
 
 
 def _verdict(path: Path) -> dict[str, Any]:
