@@ -12,13 +12,15 @@ import time
 import pytest
 import sympy
 from hypothesis import given, settings
-from strategies import integers
+from strategies import homogeneous_vectors, integers
 
 from pgsym.errors import ObjectTypeError
 from pgsym.proofs import Claim, prove
-from pgsym.proofs.algebraic import _cyclotomic_combination, roots_of
+from pgsym.proofs.algebraic import _branches, _cyclotomic_combination, _evaluate, _Tower, roots_of
+from pgsym.proofs.engine import _Deadline
 from pgsym.proofs.errors import StatementKindError, StatementSyntaxError
 from pgsym.proofs.language import parse_statement
+from pgsym.proofs.polynomials import available_backends
 
 x = sympy.Symbol("x")
 
@@ -102,8 +104,21 @@ def test_the_three_internal_bisectors_are_concurrent():
                           c.angle_bisector("c", A, C, B))
     v, t = timed(c)
     assert v.proved and t < 10
+    assert v.core_check.startswith("3 algebraic objects agree")  # with metric.angle_bisectors
     # the lengths are shared: flipping |AB| swaps internal and external at A and B together (an excentre)
     assert "swapped in pairs" in v.branches
+
+
+@pytest.mark.parametrize("backend", available_backends())
+def test_both_polynomial_backends_prove_the_incentre(backend):
+    from pgsym.proofs.engine import prove as prove_with
+
+    c = Claim("incentre", "the internal bisectors of a triangle meet in the incentre")
+    A, B, C = triangle(c)
+    c.conclude_concurrent(c.angle_bisector("a", B, A, C), c.angle_bisector("b", A, B, C),
+                          c.angle_bisector("c", A, C, B))
+    v = prove_with(c, backend=backend)
+    assert v.proved and v.certificate.backend == backend
 
 
 def test_one_internal_and_two_external_bisectors_meet_in_an_excentre():
@@ -135,18 +150,69 @@ def test_two_internal_bisectors_and_one_external_are_not_concurrent():
         assert sympy.sympify(value) == sympy.sqrt((p[0] - q[0]) ** 2 + (p[1] - q[1]) ** 2)
 
 
-def test_a_statement_true_on_the_internal_branch_only_is_not_proved():
-    # A = (0, 0), B = (t², 0), C = (0, 1): |AB| = t², |AC| = 1, so the root d_A_B has the two components ±t²;
-    # the internal bisector at A has the direction (1, 0) + (0, 1) and passes through (1, 1), the external
-    # one (on the other component) has the direction (1, −1) and does not.
+def test_a_statement_true_on_the_internal_branch_only_is_proved_for_that_branch_only():
+    # A = (0, 0), B = (t², 0), C = (0, 1): |AB| = t², |AC| = 1 are polynomials, so the named branch is rational:
+    # d_A_B = t², d_A_C = 1. The internal bisector at A has the direction (1, 0) + (0, 1) and passes through
+    # (1, 1); with d_A_C = −1 it is the external one, direction (1, −1), which does not.
     c = Claim("one-branch", "the internal bisector of ∠BAC passes through (1, 1)")
     (t,) = c.params("t")
     A, B, C = c.point("A", 0, 0), c.point("B", t * t, 0), c.point("C", 0, 1)
     c.conclude_incident(c.point("P", 1, 1), c.angle_bisector("a", B, A, C))
     v = prove(c)
+    assert v.proved
+    assert v.branches.startswith("proved for the named branch only (d_A_B = t**2, d_A_C = 1")
+    assert "d_A_C = -1, aᵀP does not vanish" in v.branches
+
+
+def test_equal_lengths_make_the_named_branch_rational():
+    # B = (t, 0), C = (0, t): |AB| = |AC| = |t|, so d_A_C = d_A_B on the named branch (whatever the sign of t):
+    # the internal bisector has the direction d_A_B·(t, 0) + d_A_B·(0, t), through (1, 1)
+    c = Claim("isosceles", "the internal bisector of a right isosceles angle at the origin is y = x")
+    (t,) = c.params("t")
+    A, B, C = c.point("A", 0, 0), c.point("B", t, 0), c.point("C", 0, t)
+    c.conclude_incident(c.point("P", 1, 1), c.angle_bisector("a", B, A, C))
+    v = prove(c)
+    assert v.proved and v.branches.startswith("proved for the named branch only (d_A_C = d_A_B")
+
+
+def test_a_named_branch_without_an_evident_sign_stays_unknown():
+    # B = (t, 0), C = (0, t(t² − t + 1)): |AC|² = λ²|AB|² with λ = t² − t + 1, positive (discriminant −3) but not a
+    # sum of even powers, so the engine cannot see that d_A_C = λ d_A_B on the named branch: the internal bisector
+    # passes through (1, 1) at every instance it tries, the external one does not, and the verdict is unknown
+    c = Claim("not-evident", "the internal bisector of ∠BAC passes through (1, 1)")
+    (t,) = c.params("t")
+    A, B, C = c.point("A", 0, 0), c.point("B", t, 0), c.point("C", 0, t * (t * t - t + 1))
+    c.conclude_incident(c.point("P", 1, 1), c.angle_bisector("a", B, A, C))
+    v = prove(c)
     assert v.status == "unknown" and not v.proved
-    assert v.branches.startswith("holds on the named branch only")
+    assert v.branches.startswith("holds on the named branch only (a is the internal bisector of ∠BAC)")
     assert "not proved" in v.branches and "a is the external bisector of ∠BAC" in v.branches
+
+
+def test_a_polynomial_ratio_of_lengths_with_an_evident_sign_is_proved_on_the_named_branch():
+    # B = (t, 0), C = (0, t³): |AC| = t²|AB|, so d_A_C = t² d_A_B on the named branch
+    c = Claim("evident", "the internal bisector of ∠BAC passes through (1, 1)")
+    (t,) = c.params("t")
+    A, B, C = c.point("A", 0, 0), c.point("B", t, 0), c.point("C", 0, t**3)
+    c.conclude_incident(c.point("P", 1, 1), c.angle_bisector("a", B, A, C))
+    v = prove(c)
+    assert v.proved and v.branches.startswith("proved for the named branch only (d_A_C = d_A_B*t**2")
+
+
+def test_wu_half_angle_parametrisation_proves_the_internal_bisector():
+    # B = 0, A = p²(1 − t², 2t), C = q²(1 − u², 2u): |BA| = p²(1 + t²), |BC| = q²(1 + u²) (every configuration
+    # has this form); the internal bisector passes through B + (1 − t², 2t)/(1 + t²) + (1 − u², 2u)/(1 + u²)
+    c = Claim("wu", "the internal bisector through the sum of the unit vectors")
+    p, q, t, u = c.params("p q t u")
+    B = c.point("B", 0, 0)
+    A = c.point("A", p * p * (1 - t * t), 2 * p * p * t)
+    C = c.point("C", q * q * (1 - u * u), 2 * q * q * u)
+    E = c.point("E", (1 - t * t) * (1 + u * u) + (1 - u * u) * (1 + t * t), 2 * t * (1 + u * u) + 2 * u * (1 + t * t),
+                (1 + t * t) * (1 + u * u))
+    c.conclude_incident(E, c.angle_bisector("b", A, B, C))
+    v, elapsed = timed(c)
+    assert v.proved and elapsed < 10
+    assert "d_A_B = p**2*(t**2 + 1)" in v.branches and "does not vanish" in v.branches
 
 
 def test_the_same_statement_for_the_external_bisector_fails_on_the_named_branch():
@@ -190,17 +256,18 @@ def test_one_unnamed_intersection_must_work_for_both_roots():
     s = sympy.Symbol("s")
     pts = [tuple(o[i] + r * (a[i] - o[i]) for i in range(2)) for r in sympy.solve(s**2 - 1, s)]
     assert a in pts and tuple(2 * o[i] - a[i] for i in range(2)) in pts
-    assert "X = the" in v.branches
+    assert f"X = ({a[0]}, {a[1]})" in v.branches  # the failing root is A itself
 
 
 def test_tangents_from_an_external_point_have_equal_length():
     c = Claim("tangent-lengths", "the two tangents from a point have equal length")
     O, A, P = (c.free_point(n) for n in "OAP")
-    K = c.formula("K", "conic", circle, O, A)
+    K = c.circle("K", O, A)
     S, T = c.line_conic_intersections(("S", "T"), c.polar("p", K, P), K)
-    c.conclude_equal_ratio(c.formula("PS", "ratio", dist2, P, S), c.formula("PT", "ratio", dist2, P, T))
+    c.conclude_equal_ratio(c.dist2("PS", P, S), c.dist2("PT", P, T))
     v, t = timed(c)
     assert v.proved and t < 10
+    assert "similarity frame" in v.certificate.normalisation  # O = (0, 0), A = (1, 0) without loss of generality
 
 
 def test_the_tangents_from_a_point_touch_the_circle():
@@ -215,15 +282,15 @@ def test_the_tangents_from_a_point_touch_the_circle():
 
 
 def test_the_common_points_of_two_circles_lie_on_both():
-    c = Claim("two-circles", "the common points of two circles are equidistant from each centre")
+    c = Claim("two-circles", "the common points of two circles lie on both")
     O, A, Q, B = (c.free_point(n) for n in "OAQB")
     K, L = c.formula("K", "conic", circle, O, A), c.formula("L", "conic", circle, Q, B)
     X, Y = c.circle_intersections(("X", "Y"), K, L)
     c.conclude_on_conic(X, L)
     c.conclude_on_conic(Y, K)
-    c.conclude_equal_ratio(c.formula("OX", "ratio", dist2, O, X), c.formula("OY", "ratio", dist2, O, Y))
     v, t = timed(c)
     assert v.proved and t < 10
+    assert v.core_check.startswith("2 algebraic objects agree with pgsym's core")
 
 
 # -- rotations and regular polygons -------------------------------------------------------------------------
@@ -245,6 +312,7 @@ def _napoleon(angles):
 def test_napoleon_theorem_holds_for_every_conjugate_of_the_sixth_root_of_unity():
     v, t = timed(_napoleon((-60, -60, -60)))
     assert v.proved and t < 10
+    assert v.core_check.startswith("3 algebraic objects agree with pgsym's core")  # metric.rotation(1/2, −√3/2)
     assert "ζ = e^(2πi/12)" in v.branches  # cos 60° = (ζ + ζ⁻¹)/2, sin 60° with i = ζ³
 
 
@@ -292,6 +360,29 @@ def test_a_wrong_pentagon_ratio_is_refuted_at_the_principal_root():
     assert nonzero(((1 + sympy.sqrt(5)) / 2) ** 2 * s2 - sympy.Rational(3, 2) * s2)
 
 
+@pytest.mark.parametrize("internal", [True, False])
+def test_the_bisector_of_an_equilateral_triangle_mixes_a_root_of_unity_and_lengths(internal):
+    # C = B rotated about A by 60°: |AC| = |AB|; with C's representative w_C = 2 the roots are d_A_C = 2 d_A_B on
+    # the named branch. The internal bisector at A is the median to BC; the external one is not.
+    c = Claim("equilateral", "the bisector at A passes through the midpoint of BC", expected=internal)
+    A, B = c.free_point("A"), c.free_point("B")
+    C = c.rotate_degrees("C", B, A, 60)
+    b = (c.angle_bisector if internal else c.external_bisector)("b", B, A, C)
+    c.conclude_incident(c.midpoint("M", B, C), b)
+    v = prove(c)
+    if internal:
+        # without loss of generality A = (0, 0), B = (1, 0): then |AB| = 1 and d_A_C = w_A w_C |AC| = 2·1
+        assert v.proved and v.branches.startswith("proved for the named branch only (d_A_B = 1, d_A_C = 2")
+        assert "similarity frame" in v.certificate.normalisation
+        return
+    assert v.refuted and v.counterexample.recheck()
+    a, b_ = (sympy.Matrix(point_of(v.counterexample.values, n)) for n in "AB")
+    cc = a + sympy.Matrix([[sympy.Rational(1, 2), -sympy.sqrt(3) / 2], [sympy.sqrt(3) / 2, sympy.Rational(1, 2)]]) * (
+        b_ - a)
+    m = (b_ + cc) / 2
+    assert nonzero(sympy.expand(bisector_line(b_, a, cc, internal=False).dot(sympy.Matrix([m[0], m[1], 1]))))
+
+
 @pytest.mark.parametrize("n", range(3, 14))
 def test_every_regular_polygon_closes_and_has_equal_sides(n):
     c = Claim(f"polygon-{n}", f"the regular {n}-gon: vertex n is A, and |V1 V2| = |AB|")
@@ -300,6 +391,16 @@ def test_every_regular_polygon_closes_and_has_equal_sides(n):
     c.conclude_equal_ratio(c.formula("s", "ratio", dist2, A, B), c.formula("t", "ratio", dist2, B, V2))
     v, t = timed(c)
     assert v.proved and t < 10
+
+
+@pytest.mark.parametrize("n", [7, 13])
+def test_six_vertices_of_a_regular_polygon_lie_on_a_conic(n):
+    # they lie on the circumcircle; ζ_28 and ζ_52 have degree φ(28) = 12 and φ(52) = 24
+    c = Claim(f"polygon-{n}-conic", "six vertices of a regular polygon lie on a conic")
+    A, B = c.free_point("A"), c.free_point("B")
+    c.conclude_conconic(A, B, *(c.polygon_vertex(f"V{k}", A, B, n, k) for k in range(2, 6)))
+    v, t = timed(c)
+    assert v.proved and t < 10 and f"e^(2πi/{4 * n})" in v.branches
 
 
 @settings(max_examples=25, deadline=None)
@@ -313,6 +414,54 @@ def test_cosine_and_sine_of_a_rational_angle_as_polynomials_in_a_root_of_unity(k
         terms = _cyclotomic_combination(m, [k], imaginary)
         value = sum(c * zeta**e for e, c in terms)
         assert abs(complex(sympy.N(value - expected, 30))) < 1e-20
+
+
+@settings(max_examples=30, deadline=None)
+@given(homogeneous_vectors(3, allow_ideal=False), homogeneous_vectors(3, allow_ideal=False),
+       homogeneous_vectors(3, allow_ideal=False))
+def test_the_named_branch_is_the_internal_bisector_for_any_representatives(a, b, cc):
+    # points with any nonzero w (negative ones too): on the named branch the engine's line is the internal
+    # bisector computed here from the inhomogeneous points with SymPy's square roots (and the external one
+    # on the branch with one length negated)
+    pa, pb, pc = ([sympy.Rational(v[0], v[2]), sympy.Rational(v[1], v[2])] for v in (a, b, cc))
+    if pa == pb or pc == pb:
+        return
+    c = Claim("bisector", "x")
+    A, B, C = (c.point(n, *v) for n, v in zip("ABC", (a, b, cc), strict=True))
+    c.angle_bisector("b", A, B, C)
+    tower = _Tower(c, [])
+    values = _evaluate(c, lambda e: tower.R(e), tower, _Deadline(None))
+    line = values[c.nodes["b"]]
+    for branch in _branches(c, tower, values, {}):
+        mine = sympy.Matrix([tower.R.to_expr(v).xreplace(branch.values) if not isinstance(v, int) else v
+                             for v in line])
+        internal = all(s > 0 for s in branch.signs.values()) or all(s < 0 for s in branch.signs.values())
+        exact = bisector_line(pa, pb, pc, internal=internal)
+        if all(not nonzero(sympy.expand(e)) for e in exact):
+            continue  # A, B, C on a line with A, C on opposite sides: the bisector is undefined
+        assert all(not nonzero(sympy.expand(e)) for e in mine.cross(exact)), (branch.text, mine, exact)
+        assert ("internal" in branch.text) == internal
+
+
+@settings(max_examples=20, deadline=None)
+@given(homogeneous_vectors(3, allow_ideal=False), homogeneous_vectors(3, allow_ideal=False),
+       integers(12))
+def test_a_rotation_by_degrees_agrees_with_sympy_cos_and_sin(x_, o_, k):
+    # rotate X about O by 15k degrees, any representatives: on ζ = e^{2πi/M} the engine's point is
+    # O + R(X − O) with R built here from SymPy's exact cos and sin of 15k°
+    degrees = 15 * k
+    c = Claim("rotation", "x")
+    c.rotate_degrees("Y", c.point("X", *x_), c.point("O", *o_), degrees)
+    tower = _Tower(c, [])
+    values = _evaluate(c, lambda e: tower.R(e), tower, _Deadline(None))
+    (branch,) = _branches(c, tower, values, {})
+    y = [tower.R.to_expr(v).xreplace(branch.values) if not isinstance(v, int) else sympy.Integer(v)
+         for v in values[c.nodes["Y"]]]
+    px, po = (sympy.Matrix([sympy.Rational(v[0], v[2]), sympy.Rational(v[1], v[2])]) for v in (x_, o_))
+    th = sympy.pi * degrees / 180
+    expected = po + sympy.Matrix([[sympy.cos(th), -sympy.sin(th)], [sympy.sin(th), sympy.cos(th)]]) * (px - po)
+    for i in range(2):
+        assert not nonzero(sympy.expand(y[i] - expected[i] * y[2]))
 
 
 # -- the statement language -----------------------------------------------------------------------------------
@@ -335,6 +484,44 @@ def test_statements_with_square_roots_are_read_and_decided():
         assert prove(parse_statement(text)).status == status, text
 
 
+EUCLIDEAN = {  # with the rational Euclidean constructions of the language (circle, dist2, equallength, …)
+    "diameter": ("points O A P\nconic K = circle O A\nline l = join O P\npoints X Y = intersections l K\n"
+                 "point M = midpoint X Y\nprove equal M O", "proved"),
+    "tangents": ("points O A P\nconic K = circle O A\nlines s t = tangentsfrom P K\n"
+                 "points S T = intersections (polar K P) K\nprove equallength P S P T\nprove tangent s K", "proved"),
+    "radical axis": ("points O A Q B\nconic K = circle O A\nconic L = circle Q B\npoints X Y = intersections K L\n"
+                     "prove on X L\nprove perpendicular (join X Y) (join O Q)", "proved"),
+    "bisector theorem": ("points A B C\nline b = anglebisector A B C\npoint D = meet b (join A C)\n"
+                         "prove equal (mul (dist2 A D) (dist2 B C)) (mul (dist2 D C) (dist2 B A))", "proved"),
+    "bisectors perpendicular": ("points A B C\nline b = anglebisector A B C\nline e = exbisector A B C\n"
+                                "prove perpendicular b e", "proved"),
+    "pentagon": ("points A B\npoint C = polygon A B 5 2\npoint D = polygon A B 5 3\nprove concyclic A B C D\n"
+                 "prove equallength A C B D", "proved"),
+    "napoleon": ("points A B C\npoint X = rotate C B -60\npoint Y = rotate A C -60\npoint Z = rotate B A -60\n"
+                 "point N1 = centre (circle B C X)\npoint N2 = centre (circle C A Y)\n"
+                 "point N3 = centre (circle A B Z)\nprove equallength N1 N2 N2 N3\nprove equallength N2 N3 N3 N1",
+                 "proved"),
+    "napoleon mixed": ("expect false\npoints A B C\npoint X = rotate C B -60\npoint Y = rotate A C -60\n"
+                       "point Z = rotate B A 60\npoint N1 = centre (circle B C X)\npoint N2 = centre (circle C A Y)\n"
+                       "point N3 = centre (circle A B Z)\nprove equallength N1 N2 N2 N3\n"
+                       "prove equallength N2 N3 N3 N1", "false"),
+    "antipode": ("expect false\npoints O A\nconic K = circle O A\npoint X = intersection (join O A) K\n"
+                 "prove equal (midpoint X A) O", "false"),
+}
+
+
+@pytest.mark.parametrize("name", EUCLIDEAN)
+def test_square_roots_with_the_euclidean_constructions(name):
+    text, status = EUCLIDEAN[name]
+    v, t = timed(parse_statement(text, name=name))
+    assert v.status == status and t < 10, v.summary()
+    if status == "false":
+        assert v.counterexample.recheck()
+    if name == "antipode":  # X = A on the failing branch: its coordinates are those of A
+        a = point_of(v.counterexample.values, "A")
+        assert f"X = ({a[0]}, {a[1]})" in v.branches
+
+
 def test_rotate_with_an_angle_in_degrees_is_a_root_of_unity_and_rotate_by_90_is_rational():
     c = parse_statement("points X O\npoint Y = rotate X O 60\npoint Z = rotate X O 90\nprove equal Y Y")
     assert [str(r.symbol) for r in roots_of(c)] == ["zeta_12"]
@@ -351,6 +538,17 @@ def test_rotate_with_an_angle_in_degrees_is_a_root_of_unity_and_rotate_by_90_is_
 def test_malformed_square_root_statements_raise_named_errors(text, error):
     with pytest.raises(error):
         parse_statement(text)
+
+
+def test_more_than_eight_square_roots_are_refused():
+    # every choice of signs is visited: 2⁸ branches at most; five points give ten lengths
+    c = Claim("many", "x")
+    P = [c.free_point(f"P{i}") for i in range(5)]
+    for i, (a, b, d) in enumerate(((1, 0, 2), (3, 0, 4), (2, 1, 3), (4, 1, 2))):  # lengths 01 02 03 04 12 13 14
+        c.angle_bisector(f"b{i}", P[a], P[b], P[d])
+    with pytest.raises(ObjectTypeError, match="more than 8 square roots"):
+        c.angle_bisector("b4", P[3], P[2], P[4])  # 23 and 24: the ninth length is refused
+    assert len(roots_of(c)) == 8
 
 
 def test_polygon_and_rotation_arguments_are_checked():
@@ -374,3 +572,22 @@ def test_the_branch_semantics_are_in_every_output():
     assert data["branches"].startswith("fails on the named branch")
     assert set(data["counterexample"]["branch"]) == {"d_A_B", "d_A_C", "d_B_C"}
     assert "on the roots:" in v.summary() and "*Roots:*" in v.to_markdown() and "Roots:" in v.to_latex()
+
+
+def test_the_command_line_says_which_roots_a_verdict_covers(tmp_path):
+    from click.testing import CliRunner
+
+    from pgsym.cli import main
+
+    (tmp_path / "incentre.thm").write_text("points A B C\nline a = anglebisector B A C\nline b = anglebisector A B C\n"
+                                           "line c = anglebisector A C B\nprove concurrent a b c\n")
+    (tmp_path / "mixed.thm").write_text("expect false\npoints A B C\nline a = anglebisector B A C\n"
+                                        "line b = anglebisector A B C\nline c = exbisector A C B\n"
+                                        "prove concurrent a b c\n")
+    result = CliRunner().invoke(main, ["prove", str(tmp_path / "incentre.thm"), str(tmp_path / "mixed.thm")])
+    assert result.exit_code == 0, result.output
+    assert "[proved for every choice of root]" in result.output
+    assert "[fails on the named branch]" in result.output
+    result = CliRunner().invoke(main, ["prove", "--json", str(tmp_path / "mixed.thm")])
+    (data,) = json.loads(result.output[result.output.index("["):])  # after the progress line on stderr
+    assert data["status"] == "false" and set(data["counterexample"]["branch"]) == {"d_A_B", "d_A_C", "d_B_C"}

@@ -36,6 +36,8 @@ def _line(verdict) -> str:  # type: ignore[no-untyped-def]
         extra = f"(counterexample: {values[:100]})"
     else:
         extra = f"({verdict.reason[:120]})"
+    if verdict.branches:  # square roots: which choices of root the verdict covers
+        extra += f" [{verdict.branches.split(':')[0].split(' (')[0][:60]}]"
     return f"{verdict.status:10s}  {verdict.name:40s}  {extra}  {1000 * verdict.elapsed:.0f} ms{expected}{ok}"
 
 

@@ -11,7 +11,7 @@ quantities, the *roots*, each tied to the parameters by one defining equation:
   length positive): then each ``anglebisector`` is internal and each ``exbisector`` external. Changing the
   sign of ``d_A_B`` swaps internal and external at A and at B together;
 * an **intersection root** ``e_X`` with ``e² = β² − αγ``, the discriminant of a line meeting a conic
-  (:func:`line_conic_points`): the two common points are ``(−β ± e) P + α Q``. The statement names no root
+  (:func:`line_conic_intersection`): the two common points are ``(−β ± e) P + α Q``. The statement names no root
   (``intersection`` is either point, ``intersections`` both in either order, ``tangentfrom`` either tangent),
   so a conclusion must hold for both;
 * a **root of unity** ``zeta_M`` with ``Φ_M(zeta_M) = 0`` (the cyclotomic polynomial), for rotations by an
@@ -25,11 +25,18 @@ conclusion polynomial whose remainder modulo them is zero vanishes on every poin
 every choice of the roots — this is Wu's method with unit initials. For roots of unity only this is also
 necessary: a rational statement true for ζ is true for every conjugate (apply the Galois automorphism).
 
-**Named branches.** When the remainder is not zero, the claim is evaluated exactly at random rational
-instances on every choice of signs of the square roots (exact algebraic numbers, decided by
-:func:`pgsym.exact.is_zero`). A failure on the named branch (principal lengths, either intersection root)
-refutes the claim, with the branch said; a claim that holds on the named branch at every instance but fails
-on another is *unknown* ("holds on the named branch only"), never *proved*.
+**Named branches.** When the remainder is not zero, the named branch is tried as a rational branch: a
+named length whose square is the square of a polynomial s (Wu's school: B = 0, A = p²(1 − t², 2t) gives
+|BA| = p²(1 + t²)), or a polynomial multiple λ of an earlier length, is replaced by ±s (or ±λ·d_j) with the sign
+the named root has wherever that sign is evident (a sum of even powers with positive coefficients); if the
+conclusion then reduces to zero the verdict is "proved for the named branch only", naming the other branch
+where it fails. Otherwise the claim is evaluated exactly at random rational instances on every choice of signs
+of the square roots (exact algebraic numbers, decided by :func:`pgsym.exact.is_zero`). A failure on the named
+branch (principal lengths, either intersection root) refutes the claim, with the branch said; a claim that
+holds on the named branch at every instance but fails on another is *unknown* ("holds on the named branch
+only … not proved"), never *proved*. When the defining equations generate a field (generic lengths, a single
+root of unity) a rational statement true on one branch is true on all (the Galois group permutes them), so
+one-branch statements need a reducible tower, which is exactly what the rational named branch detects.
 
 >>> from pgsym.proofs.claims import Claim
 >>> from pgsym.proofs.engine import prove
@@ -59,7 +66,6 @@ from .. import ring as alg
 from ..errors import ObjectTypeError, PgsymError
 from ..exact import is_zero
 from ..exact import sign as exact_sign
-from .claims import Claim, Node
 from .polynomials import PolynomialRing, default_backend
 
 __all__ = [
@@ -75,6 +81,7 @@ __all__ = [
     "polygon_vertex",
     "prove_algebraic",
     "recheck_branch",
+    "roots_of",
     "rotate_degrees",
     "tangent_from",
     "tangents_from",
@@ -85,9 +92,6 @@ MAX_POLYGON = 24
 
 MAX_ROOTS = 8
 """The most square roots one claim may use: the exact evaluation visits every choice of their signs (2⁸)."""
-
-PRINCIPAL = "every length root positive (each anglebisector internal, each exbisector external), " \
-            "either root of each intersection, ζ = e^{2πi/M}"
 
 
 @dataclass(eq=False)
@@ -115,6 +119,8 @@ class Root:
 class _Algebraic:
     roots: list[Root] = field(default_factory=list)
     readings: list[Callable[[dict[sympy.Symbol, int]], str]] = field(default_factory=list)
+    # (object, its arguments, the candidates pgsym's core builds from their exact values) for the core check
+    core: list[tuple[Node, tuple[Node, ...], Callable[..., Any]]] = field(default_factory=list)
 
 
 def _data(claim: Claim) -> _Algebraic:
@@ -141,9 +147,20 @@ def _new_root(claim: Claim, name: str, kind: str, text: str, named: bool, **kw: 
                               "the exact evaluation visits every choice of their signs")
     (sym,) = claim.params(name)
     node = claim._free(f"_{name}", "scalar", (sym,))
+    node.root = True  # type: ignore[attr-defined]  # normalisation: not a free object, fixed by its equation
     root = Root(sym, node, kind, text, named, **kw)
     data.roots.append(root)
     return root
+
+
+def _similar(node: Node) -> Node:
+    """Mark a construction as commuting with the orientation-preserving similarities (the frame A = (0, 0),
+    B = (1, 0) of :mod:`~pgsym.proofs.normalisation`): a bisector stays the bisector of the same kind (lengths
+    scale by k > 0, so the named roots stay positive), the common points of a line and a circle or two circles
+    and the tangents from a point go to those of the images (either root: the pair is what is mapped), and a
+    rotation by a fixed angle commutes with every direct similarity."""
+    node.group = "similarity"  # type: ignore[attr-defined]
+    return node
 
 
 # -- coordinates --------------------------------------------------------------------------------------------
@@ -177,22 +194,30 @@ def _bisector(claim: Claim, name: str, a: Any, b: Any, c: Any, internal: bool) -
 
     def line(pa: Any, pb: Any, pc: Any, uba: Any, ubc: Any) -> tuple[Any, ...]:
         va, vc = _vector(pb, pa), _vector(pb, pc)
-        # unit vectors va/(w_A w_B |BA|), vc/(w_C w_B |BC|), times |BA||BC| w_A w_B² w_C: added or subtracted
-        ux = ubc * pc[2] * va[0] + sgn * uba * pa[2] * vc[0]
-        uy = ubc * pc[2] * va[1] + sgn * uba * pa[2] * vc[1]
+        # the unit vectors are va/d_BA and vc/d_BC (d_BA = w_A w_B |BA| on the named branch): added or
+        # subtracted, times d_BA d_BC
+        ux = ubc * va[0] + sgn * uba * vc[0]
+        uy = ubc * va[1] + sgn * uba * vc[1]
         return alg.cross(pb, (ux, uy, ux - ux))
 
     word = "internal" if internal else "external"
-    node = claim.formula(name, "line", line, a, b, c, dba.node, dbc.node,
+    node = _similar(claim.formula(name, "line", line, a, b, c, dba.node, dbc.node,
                          description=f"{word} bisector of ∠{a.name}{b.name}{c.name}",
                          conditions=[f"{a.name} ≠ {b.name}, {c.name} ≠ {b.name} and {a.name}, {b.name}, {c.name} "
-                                     f"not on one line through {b.name} in opposite directions ({name} is defined)"])
+                                     f"not on one line through {b.name} in opposite directions ({name} is defined)"]))
 
     def reading(signs: dict[sympy.Symbol, int]) -> str:
         same = signs[dba.symbol] * signs[dbc.symbol] * sgn > 0
         return f"{name} is the {'internal' if same else 'external'} bisector of ∠{a.name}{b.name}{c.name}"
 
     _data(claim).readings.append(reading)
+
+    def core(pa: Any, pb: Any, pc: Any) -> tuple[Any, ...]:
+        from .. import metric, projective_plane
+
+        return metric.angle_bisectors(projective_plane.join(pb, pa), projective_plane.join(pb, pc))
+
+    _data(claim).core.append((node, (a, b, c), core))
     return node
 
 
@@ -274,13 +299,24 @@ def _meet_points(claim: Claim, names: Sequence[str], l: Node | None, k: Node, m:
             return _line_conic(line_of(vl, vk, vm), vk, e, sgn)
 
         desc = f"{'the other' if sgn < 0 else 'a'} common point of {what}"
-        out.append(claim.formula(name, "point", point, *base, root.node, description=desc,
-                                 conditions=[f"{what} meet ({name} is defined)"]))
+        out.append(_similar(claim.formula(name, "point", point, *base, root.node, description=desc,
+                                          conditions=[f"{what} meet ({name} is defined)"])))
     root.text += "; " + (f"{names[0]} takes +e, {names[1]} −e" if len(names) > 1 else f"{names[0]} takes +e")
+
+    def core(*objs: Any) -> tuple[Any, ...]:
+        from ..conics import Conic
+
+        if m is None:
+            return Conic(objs[1]).intersections(objs[0])
+        return Conic(objs[0]).intersections(Conic(objs[1]))
+
+    for node in out:
+        _data(claim).core.append((node, tuple(base), core))
     readers = list(zip(names, (1, -1), strict=False))
     _data(claim).readings.append(
-        lambda signs: ", ".join(f"{n} = the {'first' if signs[root.symbol] * s > 0 else 'second'} root "
-                                f"(+e ↦ {'+' if signs[root.symbol] * s > 0 else '−'})" for n, s in readers))
+        lambda signs: ", ".join(f"{n} = (−β {'+' if signs[root.symbol] * s > 0 else '−'} √Δ)·P + α·Q, the "
+                                f"{'first' if signs[root.symbol] * s > 0 else 'second'} common point of {what}"
+                                for n, s in readers))
     return out
 
 
@@ -322,7 +358,14 @@ def circle_intersection(self: Claim, name: str, k: Any, m: Any) -> Node:
 
 
 def circle_intersections(self: Claim, names: Sequence[str], k: Any, m: Any) -> list[Node]:
-    """Both common points of two circles K and M, in either order (the circles must not be concentric)."""
+    """Both common points of two circles K and M, in either order (the circles must not be concentric).
+
+    >>> c = Claim("x", "x")
+    >>> K = c.conic("K", [[1, 0, 0], [0, 1, 0], [0, 0, -1]])
+    >>> M = c.conic("M", [[1, 0, -1], [0, 1, 0], [-1, 0, -3]])
+    >>> [n.description for n in c.circle_intersections(("X", "Y"), K, M)]
+    ['a common point of K and M', 'the other common point of K and M']
+    """
     k, m = (self._get(x, ("conic",), "intersections") for x in (k, m))
     return _meet_points(self, list(names)[:2], None, k, m, f"{k.name} and {m.name}")
 
@@ -332,7 +375,16 @@ def _tangents(claim: Claim, names: Sequence[str], p: Any, k: Any) -> list[Node]:
     polar = claim.polar(f"_polar_{k.name}_{p.name}_{'_'.join(names)}", k, p)
     touch = _meet_points(claim, [f"_touch_{n}" for n in names], polar, k, None,
                          f"the polar of {p.name} and {k.name}")
-    return [claim.join(n, p, t) for n, t in zip(names, touch, strict=True)]
+    lines = [claim.join(n, p, t) for n, t in zip(names, touch, strict=True)]
+
+    def core(pp: Any, kk: Any) -> tuple[Any, ...]:
+        from ..conics import Conic
+
+        return Conic(kk).tangents_from(pp)
+
+    for line in lines:
+        _data(claim).core.append((line, (p, k), core))
+    return lines
 
 
 def tangent_from(self: Claim, name: str, p: Any, k: Any) -> Node:
@@ -348,7 +400,13 @@ def tangent_from(self: Claim, name: str, p: Any, k: Any) -> Node:
 
 
 def tangents_from(self: Claim, names: Sequence[str], p: Any, k: Any) -> list[Node]:
-    """Both tangents from P to K, in either order."""
+    """Both tangents from P to K, in either order (one root: the two points where the polar of P meets K).
+
+    >>> c = Claim("x", "x")
+    >>> K = c.conic("K", [[1, 0, 0], [0, 1, 0], [0, 0, -1]])
+    >>> [n.name for n in c.tangents_from(("s", "t"), c.free_point("P"), K)], len(roots_of(c))
+    (['s', 't'], 1)
+    """
     return _tangents(self, list(names)[:2], p, k)
 
 
@@ -408,8 +466,25 @@ def _turn(claim: Claim, name: str, x: Node, o: Node, turns: Fraction, powers: Se
         two_w = 2 * px[2]
         return (two_w * po[0] + cr * u[0] - ci * u[1], two_w * po[1] + ci * u[0] + cr * u[1], two_w * po[2])
 
-    return claim.formula(name, "point", rotated, *args, description=description,
-                         conditions=[f"{x.name} and {o.name} are finite points"])
+    node = _similar(claim.formula(name, "point", rotated, *args, description=description,
+                                  conditions=[f"{x.name} and {o.name} are finite points"]))
+
+    def core(px: Any, po: Any) -> tuple[Any, ...]:
+        from .. import metric
+        from ..projective_plane import Point
+
+        angle = 2 * sympy.pi * turns
+        step = metric.rotation(sympy.cos(angle), sympy.sin(angle), po)
+        (ox, oy), total, current = po.dehomogenize(), [0, 0], px
+        for j in range(max(powers) + 1):  # O + Σ_j R^j (X − O) over the powers, walking round O
+            if j in powers:
+                cx, cy = current.dehomogenize()
+                total = [total[0] + cx - ox, total[1] + cy - oy]
+            current = step(current)
+        return (Point(ox + total[0], oy + total[1]),)
+
+    _data(claim).core.append((node, (x, o), core))
+    return node
 
 
 def rotate_degrees(self: Claim, name: str, x: Any, o: Any, degrees: int) -> Node:
@@ -440,7 +515,7 @@ def polygon_vertex(self: Claim, name: str, a: Any, b: Any, n: int, k: int) -> No
         raise ObjectTypeError(f"polygon: n is an integer from 3 to {MAX_POLYGON} and k an integer, got {n!r}, {k!r}")
     k %= n
     return _turn(self, name, b, a, Fraction(1, n), range(k), f"vertex {k} of the regular {n}-gon {a.name} {b.name} …") \
-        if k else self.formula(name, "point", lambda p: p, a, description=f"vertex 0 of the regular {n}-gon")
+        if k else _similar(self.formula(name, "point", lambda p: p, a, description=f"vertex 0 of the regular {n}-gon"))
 
 
 # -- the proof -------------------------------------------------------------------------------------------
@@ -448,10 +523,11 @@ def polygon_vertex(self: Claim, name: str, a: Any, b: Any, n: int, k: int) -> No
 class _Tower:
     """The defining equations as a triangular set (a lex Gröbner basis: leading terms root², or ζ^φ(M))."""
 
-    def __init__(self, claim: Claim, gens: Sequence[sympy.Symbol]) -> None:
+    def __init__(self, claim: Claim, gens: Sequence[sympy.Symbol], backend: str | None = None) -> None:
         roots = roots_of(claim)
         self.order = [r.symbol for r in reversed(roots)]
-        self.R = PolynomialRing([*self.order, *gens], integral=False, order="lex", backend=default_backend())
+        self.R = PolynomialRing([*self.order, *gens], integral=False, order="lex",
+                                backend=backend or default_backend())
         self.basis: list[Any] = []
         self.text: list[str] = []
 
@@ -475,14 +551,22 @@ class _Tower:
         return p
 
 
-def _evaluate(claim: Claim, scalar: Callable[[Any], Any], tower: _Tower, deadline: Any) -> dict[Node, Any]:
-    from .engine import _map
+def _evaluate(claim: Claim, scalar: Callable[[Any], Any], tower: _Tower, deadline: Any,
+              estimate: bool = False) -> dict[Node, Any]:
+    """Every object's value, reduced modulo the roots' equations as they appear; with ``estimate`` a construction
+    that would need more than the engine's MAX_WORK term products raises before it starts (a product in C cannot
+    be interrupted by the time limit)."""
+    from .engine import MAX_WORK, _estimate, _map, _TooLarge
 
     by_node = {r.node: r for r in roots_of(claim)}
     values: dict[Node, Any] = {}
     for node in claim.nodes.values():
         deadline.check(f"constructing {node.name}")
         args = [values[a] for a in node.args if isinstance(a, Node)]
+        if estimate:
+            work = _estimate(lambda v, node=node: node.operation.formula(node, v, scalar), args, tower.R)
+            if work is not None and work > MAX_WORK:
+                raise _TooLarge(f"{node.name} would need about {work:.1e} term products")
         values[node] = _map(node.operation.formula(node, args, scalar), tower.reduce)
         if node in by_node:
             tower.add(by_node[node], values)
@@ -502,6 +586,12 @@ def _sympy_value(R: PolynomialRing, p: Any, sub: dict[sympy.Symbol, Any]) -> sym
     if isinstance(p, (int, Fraction)):
         return sympy.Rational(p)
     return R.to_expr(p).xreplace(sub)
+
+
+def _radical_zeta(modulus: int) -> bool:
+    """SymPy writes cos and sin of 2π/M with radicals (M | 24 or M | 20, and a few more)."""
+    angle = 2 * sympy.pi / modulus
+    return not (sympy.cos(angle) + sympy.I * sympy.sin(angle)).has(sympy.cos, sympy.sin)
 
 
 def _zeta_value(modulus: int) -> sympy.Expr:
@@ -595,7 +685,14 @@ def _instance(claim: Claim, rng: random.Random, bound: int, deadline: Any):
 
 def recheck_branch(claim: Claim, values: dict[str, Any], branch: dict[str, str]) -> bool:
     """True when, at these rational parameters and these exact values of the roots, the roots satisfy their
-    defining equations, the constructions are defined and the conclusion fails (exact arithmetic throughout)."""
+    defining equations, the constructions are defined and the conclusion fails (exact arithmetic throughout).
+
+    >>> c = Claim("x", "x")
+    >>> A, B, C = (c.point(n, *xy) for n, xy in zip("ABC", ((0, 0), (4, 0), (0, 3))))
+    >>> c.conclude_incident(c.point("P", 1, 1), c.angle_bisector("a", B, A, C))   # the internal one: true
+    >>> recheck_branch(c, {}, {"d_A_B": "4", "d_A_C": "3"}), recheck_branch(c, {}, {"d_A_B": "4", "d_A_C": "-3"})
+    (False, True)
+    """
     from .engine import _Deadline
 
     roots = {str(r.symbol): r for r in roots_of(claim)}
@@ -615,15 +712,70 @@ def recheck_branch(claim: Claim, values: dict[str, Any], branch: dict[str, str])
     return kind == "fails"
 
 
-def prove_algebraic(claim: Claim, timeout: float | None = 10.0, seed: int = 0, instances: int = 4) -> Any:
+def _proportional(u: Sequence[Any], v: Sequence[Any]) -> bool:
+    return all(is_zero(sympy.expand(u[i] * v[j] - u[j] * v[i])) for i in range(len(u)) for j in range(i + 1, len(u)))
+
+
+def _core_object(node: Node, value: Any, tower: _Tower, branch: _Branch) -> Any:
+    """A point, line or conic matrix of pgsym's core with the exact coordinates of ``value`` on the branch."""
+    from ..projective_plane import Line, Point
+    from .operations import flat
+
+    if node.kind == "conic":
+        return sympy.Matrix([[_sympy_value(tower.R, x, branch.values) for x in row] for row in value])
+    coords = [_sympy_value(tower.R, x, branch.values) for x in flat(value)]
+    return (Point if node.kind == "point" else Line)(*coords)
+
+
+def _core_check(claim: Claim, rng: random.Random, deadline: Any) -> str:
+    """At a rational instance, on the named branch, every algebraic object must be one of the objects pgsym's
+    core builds from the same exact arguments (``metric.angle_bisectors``, ``Conic.intersections``,
+    ``Conic.tangents_from``, ``metric.rotation``), so the proof's formulas and the library cannot drift."""
+    from .operations import flat
+
+    records = _data(claim).core
+    if not records:
+        return "not needed"
+    slow = [r.modulus for r in roots_of(claim) if r.kind == "unity" and not _radical_zeta(r.modulus)]
+    if slow:  # exact decisions about roots of unity without radicals (cos 2π/7, …) take too long
+        return f"skipped: e^(2πi/{slow[0]}) has no expression in radicals here"
+    for _ in range(8):
+        deadline.check("comparing with pgsym's core objects")
+        point, tower, values = _instance(claim, rng, 6, deadline)
+        branch = next((b for b in _branches(claim, tower, values, point) if b.named), None)
+        if branch is None:
+            continue
+
+        try:
+            for node, args, build in records:
+                mine = [_sympy_value(tower.R, x, branch.values) for x in flat(values[node])]
+                candidates = build(*(_core_object(a, values[a], tower, branch) for a in args))
+                if not any(_proportional(mine, list(c.coords)) for c in candidates):
+                    return f"MISMATCH at {node.name}"
+        except PgsymError as err:  # a degenerate instance or an undecidable cos(2π/7): try another
+            last = str(err)
+            continue
+        return f"{len(records)} algebraic objects agree with pgsym's core at a rational instance (named branch)"
+    return "skipped: no rational instance where the core could build every object" + (
+        f" ({last[:80]})" if "last" in locals() else "")
+
+
+def prove_algebraic(claim: Claim, timeout: float | None = 10.0, seed: int = 0, instances: int = 4,
+                    backend: str | None = None) -> Any:
     """Decide a claim with square roots (called by :func:`pgsym.proofs.engine.prove` when the claim has roots).
 
     Proved for every choice of root when the conclusion is in the ideal of the defining equations (possibly
     after a non-degeneracy condition); otherwise evaluated exactly at ``instances`` random rational instances on
     every choice of signs of the roots: false (with the branch) when the named branch fails, unknown when only
-    another branch fails.
+    another branch fails. ``backend`` chooses the polynomial arithmetic as in :func:`~pgsym.proofs.engine.prove`.
+
+    >>> c = Claim("x", "x")
+    >>> A, B, C = (c.free_point(n) for n in "ABC")
+    >>> c.conclude_perpendicular(c.angle_bisector("b", A, B, C), c.external_bisector("e", A, B, C))
+    >>> prove_algebraic(c).branches[:33]
+    'proved for every choice of root: '
     """
-    from .engine import _alarm, _Deadline, _rng, _Timeout
+    from .engine import _alarm, _Deadline, _rng, _Timeout, _TooLarge
     from .verdicts import Certificate, Condition, Counterexample, Status, Verdict
 
     start = time.perf_counter()
@@ -645,18 +797,21 @@ def prove_algebraic(claim: Claim, timeout: float | None = 10.0, seed: int = 0, i
     try:
         with _alarm(timeout):
             from .engine import _conclusion_polys
+            from .normalisation import normalise
 
-            params = [p for p in claim.parameters if p not in rootsyms]
-            tower = _Tower(claim, params)
+            norm, _why = normalise(claim)
+            sub = norm.substitution if norm is not None else {}
+            params = [p for p in claim.parameters if p not in rootsyms and p not in sub]
+            tower = _Tower(claim, params, backend)
             R = tower.R
             cache: dict[Any, Any] = {}
 
             def conv(e: Any) -> Any:
                 if e not in cache:
-                    cache[e] = R(e)
+                    cache[e] = R(sympy.sympify(e).xreplace(sub) if sub else e)
                 return cache[e]
 
-            values = _evaluate(claim, conv, tower, deadline)
+            values = _evaluate(claim, conv, tower, deadline, estimate=True)
             reqs = _requirements(claim, values)
             conditions = []
             for text, polys in reqs:
@@ -666,9 +821,11 @@ def prove_algebraic(claim: Claim, timeout: float | None = 10.0, seed: int = 0, i
                                 "value of the parameters and every choice of root)", branches="no decision")
                 if not text.endswith("is not the zero vector"):
                     conditions.append(Condition(text, raw=[p for p in polys if p != 0][:3]))
+            if norm is not None and norm.condition:
+                conditions.append(Condition(f"{norm.condition} (frame)"))
             steps = ["triangular set (lex, roots first; a Gröbner basis): " + "; ".join(tower.text)]
             failing = None
-            for label, poly in _conclusion_polys(claim, values):
+            for label, poly in _conclusion_polys(claim, values, ring=R):
                 deadline.check("reducing the conclusion")
                 if poly == 0:
                     steps.append(f"{label} reduces to 0 modulo the defining equations")
@@ -688,16 +845,139 @@ def prove_algebraic(claim: Claim, timeout: float | None = 10.0, seed: int = 0, i
                                           "triangular set with unit initials)", R.field + f"[{len(R.symbols)} "
                                           "variables, lex, roots first]", steps,
                                           max((R.nterms(p) for p in entries), default=0), backend=R.backend,
-                                          largest_degree=max((R.degree(p) for p in entries), default=0))
+                                          largest_degree=max((R.degree(p) for p in entries), default=0),
+                                          normalisation="" if norm is None else norm.describe())
+                core = _core_check(claim, _rng(claim, seed), deadline)
+                if core.startswith("MISMATCH"):
+                    return done(Status.UNKNOWN, core_check=core, branches="no decision",
+                                reason=f"pgsym's core and the proof formulas disagree ({core})")
                 return done(Status.PROVED, method=certificate.method, certificate=certificate,
-                            conditions=conditions, branches=_every_root(roots))
+                            conditions=conditions, branches=_every_root(roots), core_check=core)
+            named = _named_branch_proof(claim, values, tower, deadline)
+            if named is not None:
+                text, lines = named
+                certificate = Certificate("ideal membership on the named branch: the named roots replaced by their "
+                                          "rational values there, then reduction modulo the remaining equations",
+                                          R.field + f"[{len(R.symbols)} variables, lex, roots first]",
+                                          [*steps, *lines], 0, backend=R.backend,
+                                          normalisation="" if norm is None else norm.describe())
+                core = _core_check(claim, _rng(claim, seed), deadline)
+                if core.startswith("MISMATCH"):
+                    return done(Status.UNKNOWN, core_check=core, branches="no decision",
+                                reason=f"pgsym's core and the proof formulas disagree ({core})")
+                return done(Status.PROVED, method=certificate.method, certificate=certificate,
+                            conditions=conditions, branches=text, core_check=core)
             return _sample(claim, failing, R, rng=_rng(claim, seed), instances=instances, deadline=deadline,
                            done=done, counterexample=Counterexample)
+    except _TooLarge as err:
+        return done(Status.UNKNOWN, reason=f"the expansion is too large: {err.args[0]}", branches="no decision")
     except _Timeout as err:
         stage = err.args[0] if err.args else "working"
         return done(Status.UNKNOWN, reason=f"timed out after {timeout} s while {stage}", branches="no decision")
     except PgsymError as err:
         return done(Status.UNKNOWN, reason=f"the exact evaluation could not decide: {err}", branches="no decision")
+
+
+def _evidently_positive(e: sympy.Expr, gens: Sequence[sympy.Symbol]) -> bool:
+    """Every term has even exponents and a positive coefficient: positive wherever it is not zero."""
+    poly = sympy.Poly(e, *gens) if gens else None
+    if poly is None:
+        return bool(e > 0)
+    return not poly.is_zero and all(c > 0 and all(k % 2 == 0 for k in m) for m, c in poly.terms())
+
+
+def _rational_root(q: sympy.Expr, gens: Sequence[sympy.Symbol]) -> sympy.Expr | None:
+    """s with s² = q when q is the square of a polynomial with rational coefficients (else None)."""
+    coeff, factors = sympy.factor_list(q, *gens) if gens else (q, [])
+    if coeff < 0 or any(e % 2 for _, e in factors):
+        return None
+    c = sympy.sqrt(coeff)
+    if not c.is_Rational:
+        return None
+    return c * sympy.Mul(*(f ** (e // 2) for f, e in factors))
+
+
+def _named_branch_proof(claim: Claim, values: dict[Node, Any], tower: _Tower, deadline: Any
+                        ) -> tuple[str, list[str]] | None:
+    """Prove the conclusion on the named branch when that branch is rational: a named root whose square is the
+    square of a polynomial s (e.g. |AB| for B = A + p²(1 − t², 2t), the tangent half-angle of Wu's school), or
+    equals the square of an earlier root. The sign of the named root is then evident (s·w_A w_B a sum of even
+    powers with positive coefficients), the root is replaced by ±s, and the conclusion must reduce to zero."""
+    from .engine import _conclusion_polys
+
+    R = tower.R
+    roots = roots_of(claim)
+    gens = [g for g in R.symbols if g not in {r.symbol for r in roots}]
+    sub: dict[sympy.Symbol, sympy.Expr] = {}
+    lines = []
+    squares: dict[sympy.Symbol, sympy.Expr] = {}
+    orients: dict[sympy.Symbol, sympy.Expr] = {}
+    for r in roots:
+        deadline.check("looking for a rational named branch")
+        if r.kind == "unity":
+            continue
+        q = R.to_expr(tower.reduce(r.square(values)))
+        squares[r.symbol] = q
+        if not r.named or q.free_symbols & {x.symbol for x in roots}:
+            continue
+        orient = R.to_expr(r.orient(values)) if r.orient is not None else sympy.Integer(1)
+        orients[r.symbol] = orient
+        candidates = []  # (value up to sign, an expression with the sign of value·orient on the named branch)
+        s = _rational_root(q, gens)
+        if s is not None:
+            candidates.append((s, s * orient))
+        # the same square as an earlier length d_j: d = ±d_j; on the named branch d_j·orient_j > 0, so the sign of
+        # d_j·orient is that of orient_j·orient (or d_j's value there, when it has one)
+        # (or d = ±λ d_j when q = λ² q_j for a polynomial λ, e.g. a representative with w = 2)
+        for same, qt in squares.items():
+            if same == r.symbol or qt == 0 or same not in orients:  # only named lengths have a named sign
+                continue
+            num, den = sympy.fraction(sympy.cancel(q / qt))
+            lam = _rational_root(num, gens) if den == 1 else None
+            if lam is not None:
+                candidates.append((lam * sub[same], lam * sub[same] * orient) if same in sub
+                                  else (lam * same, lam * orients[same] * orient))
+                break
+        known = [*gens, *(x for x in squares if x != r.symbol)]
+        for value, sign_of in candidates:
+            product = sympy.expand(sign_of)
+            if _evidently_positive(product, known):
+                sub[r.symbol] = value
+                break
+            if _evidently_positive(-product, known):
+                sub[r.symbol] = -value
+                break
+        else:
+            continue
+        lines.append(f"on the named branch {r.symbol} = {sub[r.symbol]} (its square is {r.symbol}² = {q}; "
+                     f"its sign is that of the named root, as ({sub[r.symbol]})·({orient}) > 0)")
+    if not sub:
+        return None
+    others = []
+    for label, poly in _conclusion_polys(claim, values):
+        deadline.check("reducing the conclusion on the named branch")
+        expr = R.to_expr(tower.reduce(poly))
+        named = tower.reduce(R(sympy.expand(expr.xreplace(sub))))
+        if named != 0:
+            return None
+        lines.append(f"{label} reduces to 0 on the named branch")
+        for signs in itertools.product((1, -1), repeat=len(sub)):
+            flipped = {k: e * v for e, (k, v) in zip(signs, sub.items(), strict=True)}
+            if not others and tower.reduce(R(sympy.expand(expr.xreplace(flipped)))) != 0:
+                others.append((label, flipped))
+    words = ", ".join(f"{k} = {v}" for k, v in sub.items())
+    if others:
+        label, flipped = others[0]
+        other = f"on the other branch {', '.join(f'{k} = {v}' for k, v in flipped.items())}, {label} does not vanish"
+    else:
+        other = "it holds with every sign of these roots as well"
+    return (f"proved for the named branch only ({words}: {_named_words(claim, sub)}); {other}", lines)
+
+
+def _named_words(claim: Claim, sub: dict[sympy.Symbol, sympy.Expr]) -> str:
+    signs = {r.symbol: 1 for r in roots_of(claim)}
+    readings = [f(signs) for f in _data(claim).readings]
+    return "; ".join(readings) or "the named roots"
 
 
 def _every_root(roots: list[Root]) -> str:
@@ -710,6 +990,21 @@ def _every_root(roots: list[Root]) -> str:
         parts.append(f"every conjugate ζ ↦ ζ^u of ζ = e^(2πi/{m}) (u prime to {m}: each angle a becomes u·a, "
                      "e.g. the clockwise figure and the star polygons)")
     return "proved for every choice of root: " + "; ".join(parts)
+
+
+def _coordinates(claim: Claim, tower: _Tower, values: dict[Node, Any], branch: _Branch) -> str:
+    """The exact coordinates of the claim's algebraic points on a branch, as text ("; X = (1, 2 + √3)")."""
+    from .operations import flat
+
+    out = []
+    for node, _args, _build in _data(claim).core:
+        if node.kind != "point" or node.name.startswith("_"):
+            continue
+        x, y, w = (_sympy_value(tower.R, v, branch.values) for v in flat(values[node]))
+        if w == 0 or is_zero(w):
+            continue
+        out.append(f"{node.name} = ({sympy.radsimp(x / w)}, {sympy.radsimp(y / w)})")
+    return "; " + "; ".join(out) if out else ""
 
 
 def _sample(claim: Claim, failing: tuple[str, Any], R0: PolynomialRing, rng: random.Random, instances: int,
@@ -730,6 +1025,7 @@ def _sample(claim: Claim, failing: tuple[str, Any], R0: PolynomialRing, rng: ran
             continue
         for b, (kind, residuals) in results:
             if kind == "fails" and b.named:
+                b.text += _coordinates(claim, tower, values, b)
                 ce = counterexample({str(s): Fraction(int(v.p), int(v.q)) for s, v in point.items()},
                                     residuals, claim, branch={str(s): str(v) for s, v in b.values.items()})
                 return done(Status.FALSE, counterexample=ce,
@@ -737,6 +1033,7 @@ def _sample(claim: Claim, failing: tuple[str, Any], R0: PolynomialRing, rng: ran
                             reason=f"the conclusion fails on the named branch ({b.text})",
                             branches=f"fails on the named branch: {b.text}")
             if kind == "fails" and other_failure is None:
+                b.text += _coordinates(claim, tower, values, b)
                 other_failure = (point, b, residuals)
         seen += 1
         if seen >= instances:
@@ -749,9 +1046,14 @@ def _sample(claim: Claim, failing: tuple[str, Any], R0: PolynomialRing, rng: ran
                     reason=f"{label} is not in the ideal of the defining equations; the conclusion holds on the "
                            f"named branch at {seen} random instances, but fails on another branch, e.g. at {at} "
                            f"with {b.text}: not proved",
-                    branches=f"holds on the named branch only ({PRINCIPAL}) at {seen} random instances; not proved; "
+                    branches=f"holds on the named branch only ({_named_words(claim, {})}) at {seen} random instances; "
+                             "not proved; "
                              f"fails on the branch {b.text}")
     return done(Status.UNKNOWN,
                 reason=f"{label} has the nonzero remainder {R0.text(poly)[:200]} modulo the defining equations, "
                        f"yet the conclusion held on every branch at {seen} random instances (a degenerate component?)",
                 branches=f"held on every branch at {seen} random instances; not proved")
+
+
+# last, so that either module may be imported first: claims.py attaches the constructions above to Claim at its end
+from .claims import Claim, Node  # noqa: E402

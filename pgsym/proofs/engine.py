@@ -855,7 +855,7 @@ def prove(claim: Claim, *, timeout: float | None = 10.0, seed: int = 0, core_che
     if claim.__dict__.get("algebraic") is not None:  # square roots: branch semantics (pgsym.proofs.algebraic)
         from .algebraic import prove_algebraic
 
-        return prove_algebraic(claim, timeout=timeout, seed=seed)
+        return prove_algebraic(claim, timeout=timeout, seed=seed, backend=backend)
     start = time.perf_counter()
     deadline = _Deadline(timeout)
     base = dict(name=claim.name, title=claim.title, statement=claim.statement, expected=claim.expected,
