@@ -52,11 +52,8 @@ KNOWN_OPEN: dict[str, str] = {
     "miquel-six-circles": _TOO_LARGE + ": a chain of five circles through one another's points",
     "ceva-quotient": "the engine's core check disagrees with its formula for a signed ratio of named ratios "
                      "(MISMATCH at segratio C F F A), so the proof is withheld",
-    **{name: "square roots: the engine finds no decision within its 10 s limit (or overstays it)" for name in (
-        "bisector-isoscel-ex219", "circle-bisector-ex116", "euler-oi", "incentre-equidistant",
-        "incentre-excentre-lemma", "intersecting-secants", "intersecting-secants-false", "isogonals-circumcentre",
-        "isosceles-angle-bisector", "pedal-triangle-isosceles", "secant-tangent-external",
-        "tangent-touch-branch-false", "radical-axis-false")},
+    "intersecting-secants-false": _TOO_LARGE + ": products of squared distances to four points with square "
+                                  "roots (about 2e10 term products)",
 }
 
 
