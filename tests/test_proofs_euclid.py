@@ -50,8 +50,6 @@ KNOWN_OPEN: dict[str, str] = {
     "blazek-pech": _TOO_LARGE + ": four feet of a point of a circle through a Miquel point",
     "inversion-circle-circle": _TOO_LARGE + ": the concyclicity of four inverted points of a circle",
     "miquel-six-circles": _TOO_LARGE + ": a chain of five circles through one another's points",
-    "ceva-quotient": "the engine's core check disagrees with its formula for a signed ratio of named ratios "
-                     "(MISMATCH at segratio C F F A), so the proof is withheld",
     "intersecting-secants-false": _TOO_LARGE + ": products of squared distances to four points with square "
                                   "roots (about 2e10 term products)",
 }

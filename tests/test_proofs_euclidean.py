@@ -532,3 +532,13 @@ def test_concyclic_points_that_always_lie_on_one_line_are_degenerate_not_proved(
 def test_counterexamples_of_false_variants_are_confirmed_by_the_core(text):
     v = prove(parse_statement(text, name="variant"))
     assert v.refuted and v.counterexample.recheck()
+
+
+def test_a_ratio_with_a_zero_denominator_at_a_special_point_is_no_core_mismatch():
+    # D on CA makes E = C, so BE / EC is 0/0 there: the core check must pass over that instance (the core used
+    # to return an infinite ratio and the proof was withheld as a disagreement of core and formulas)
+    c = parse_statement("points A B C D\npoint E = meet (join A D) (join B C)\npoint F = meet (join B D) (join C A)\n"
+                        "point G = meet (join C D) (join A B)\nratio r = segratio A G G B\n"
+                        "ratio s = mul r (segratio B E E C)\nratio t = mul s (segratio C F F A)\nprove equal t 1")
+    v = prove(c)
+    assert v.proved and v.core_check.endswith("agree with the formulas")

@@ -714,6 +714,8 @@ def _circumcentre_core(a: Any, b: Any, c: Any) -> Any:
 def _segratio_core(node: Any, a: list[Any], exact: Scalar) -> Any:
     (ax, ay), (bx, by), (cx, cy), (dx, dy) = (p.dehomogenize() for p in a)
     u, t = (bx - ax, by - ay), (dx - cx, dy - cy)
+    if is_zero(t[0]) and is_zero(t[1]):
+        raise CoreDegenerate("C = D at this point: the ratio AB / CD is undefined")
     if not is_zero(sympy.expand(u[0] * t[1] - u[1] * t[0])):
         raise CoreDegenerate("the segments are not parallel at this point")
     i = 0 if not is_zero(t[0]) else 1
