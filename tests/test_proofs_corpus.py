@@ -240,13 +240,7 @@ def _exact_truth(claim, seed: int) -> bool | None:
 @given(statement_programs())
 def test_random_claims_agree_with_exact_evaluation(program):
     # a false claim fails at almost every rational point, a true one holds at all: three random points decide
-    text, seed = program
-    claim = parse_statement(text, name="random")
-    truth = _exact_truth(claim, seed)
-    verdict = prove(claim, timeout=20)
-    if truth is None or verdict.status == "unknown":
-        return
-    assert verdict.proved == truth, f"{text}\n→ {verdict.status} ({verdict.reason}), exact evaluation: {truth}"
+    _agrees_with_exact_evaluation(*program)
 
 
 @settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow])
@@ -254,8 +248,11 @@ def test_random_claims_agree_with_exact_evaluation(program):
 def test_random_conic_claims_agree_with_exact_evaluation(program):
     # points, tangents and polars of a conic through five free points: the frame the engine chooses for them
     # (four of the points) must never change the truth, which exact evaluation with the core decides
-    text, seed = program
-    claim = parse_statement(text, name="random-conic")
+    _agrees_with_exact_evaluation(*program)
+
+
+def _agrees_with_exact_evaluation(text: str, seed: int) -> None:
+    claim = parse_statement(text, name="random")
     truth = _exact_truth(claim, seed)
     verdict = prove(claim, timeout=20)
     if truth is None or verdict.status in ("degenerate", "unknown"):  # unknown is honest, if rare (1 in 200)

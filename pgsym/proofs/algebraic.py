@@ -791,6 +791,15 @@ def prove_algebraic(claim: Claim, timeout: float | None = 10.0, seed: int = 0, i
     def done(status: Any, **kw: Any) -> Any:
         return Verdict(status=status, elapsed=time.perf_counter() - start, **base, **kw)
 
+    def proved(certificate: Certificate, branches: str) -> Any:
+        # the core rebuilds the objects at a rational instance first: a disagreement withholds the proof
+        core = _core_check(claim, _rng(claim, seed), deadline)
+        if core.startswith("MISMATCH"):
+            return done(Status.UNKNOWN, core_check=core, branches="no decision",
+                        reason=f"pgsym's core and the proof formulas disagree ({core})")
+        return done(Status.PROVED, method=certificate.method, certificate=certificate, conditions=conditions,
+                    branches=branches, core_check=core)
+
     if claim.hypotheses:
         return done(Status.UNKNOWN, reason="equation hypotheses together with square-root constructions are not "
                                            "supported", branches="no decision")
@@ -847,12 +856,7 @@ def prove_algebraic(claim: Claim, timeout: float | None = 10.0, seed: int = 0, i
                                           max((R.nterms(p) for p in entries), default=0), backend=R.backend,
                                           largest_degree=max((R.degree(p) for p in entries), default=0),
                                           normalisation="" if norm is None else norm.describe())
-                core = _core_check(claim, _rng(claim, seed), deadline)
-                if core.startswith("MISMATCH"):
-                    return done(Status.UNKNOWN, core_check=core, branches="no decision",
-                                reason=f"pgsym's core and the proof formulas disagree ({core})")
-                return done(Status.PROVED, method=certificate.method, certificate=certificate,
-                            conditions=conditions, branches=_every_root(roots), core_check=core)
+                return proved(certificate, _every_root(roots))
             named = _named_branch_proof(claim, values, tower, deadline)
             if named is not None:
                 text, lines = named
@@ -861,12 +865,7 @@ def prove_algebraic(claim: Claim, timeout: float | None = 10.0, seed: int = 0, i
                                           R.field + f"[{len(R.symbols)} variables, lex, roots first]",
                                           [*steps, *lines], 0, backend=R.backend,
                                           normalisation="" if norm is None else norm.describe())
-                core = _core_check(claim, _rng(claim, seed), deadline)
-                if core.startswith("MISMATCH"):
-                    return done(Status.UNKNOWN, core_check=core, branches="no decision",
-                                reason=f"pgsym's core and the proof formulas disagree ({core})")
-                return done(Status.PROVED, method=certificate.method, certificate=certificate,
-                            conditions=conditions, branches=text, core_check=core)
+                return proved(certificate, text)
             return _sample(claim, failing, R, rng=_rng(claim, seed), instances=instances, deadline=deadline,
                            done=done, counterexample=Counterexample)
     except _TooLarge as err:
