@@ -25,24 +25,7 @@ from pgsym.proofs.polynomials import available_backends
 x = sympy.Symbol("x")
 
 
-# -- helpers: circles and squared distances as formulas of the claim, and an independent exact zero test ------
-
-def circle(o, a):
-    """The circle with centre O through A, for any representatives (O = (ox, oy, ow), A = (ax, ay, aw)):
-    ow·aw²·(x² + y²) − 2 aw²(ox x + oy y) w + (2 aw (ox ax + oy ay) − ow (ax² + ay²)) w²; at A (times aw):
-    ow aw²(ax² + ay²) − 2 aw²(ox ax + oy ay) + 2 aw²(ox ax + oy ay) − ow aw²(ax² + ay²) = 0."""
-    ox, oy, ow = o
-    ax, ay, aw = a
-    k = ow * aw * aw
-    f = 2 * aw * (ox * ax + oy * ay) - ow * (ax * ax + ay * ay)
-    return ((k, 0 * k, -ox * aw * aw), (0 * k, k, -oy * aw * aw), (-ox * aw * aw, -oy * aw * aw, f))
-
-
-def dist2(p, q):
-    """|PQ|² as a ratio: ((w_P q − w_Q p)² summed) / (w_P w_Q)²."""
-    u = (p[2] * q[0] - q[2] * p[0], p[2] * q[1] - q[2] * p[1])
-    return (u[0] * u[0] + u[1] * u[1], (p[2] * q[2]) ** 2)
-
+# -- helpers: the centroid as a formula of the claim, and an independent exact zero test ----------------------
 
 def centroid(a, b, c):
     return (a[0] * b[2] * c[2] + b[0] * a[2] * c[2] + c[0] * a[2] * b[2],
@@ -83,18 +66,14 @@ def test_angle_bisector_theorem_in_squared_form_is_proved_for_every_root():
     A, B, C = triangle(c)
     b = c.angle_bisector("b", A, B, C)
     D = c.meet("D", b, c.join("AC", A, C))
-    lhs = c.formula("lhs", "ratio", lambda a, d, b_, c_: _times(dist2(a, d), dist2(b_, c_)), A, D, B, C)
-    rhs = c.formula("rhs", "ratio", lambda a, d, b_, c_: _times(dist2(d, c_), dist2(b_, a)), A, D, B, C)
+    lhs = c.mul("lhs", c.dist2("AD", A, D), c.dist2("BC", B, C))
+    rhs = c.mul("rhs", c.dist2("DC", D, C), c.dist2("BA", B, A))
     c.conclude_equal_ratio(lhs, rhs)
     v, t = timed(c)
     assert v.proved and t < 10
     assert v.branches.startswith("proved for every choice of root")
     assert "internal and external bisectors alike" in v.branches
     assert [str(r.symbol) for r in roots_of(c)] == ["d_A_B", "d_B_C"]
-
-
-def _times(r, s):
-    return (r[0] * s[0], r[1] * s[1])
 
 
 def test_the_three_internal_bisectors_are_concurrent():
@@ -233,7 +212,7 @@ def test_the_same_statement_for_the_external_bisector_fails_on_the_named_branch(
 def test_a_line_through_the_centre_meets_the_circle_in_points_symmetric_about_it():
     c = Claim("diameter", "a line through the centre meets the circle in two points with midpoint the centre")
     O, A, P = (c.free_point(n) for n in "OAP")
-    K = c.formula("K", "conic", circle, O, A)
+    K = c.circle("K", O, A)
     X, Y = c.line_conic_intersections(("X", "Y"), c.join("l", O, P), K)
     c.conclude_proportional(c.midpoint("M", X, Y), O)
     c.conclude_on_conic(X, K)
@@ -246,7 +225,7 @@ def test_one_unnamed_intersection_must_work_for_both_roots():
     # X is either point of the line OA on the circle: one of them is A itself, whose midpoint with A is A ≠ O
     c = Claim("antipode", "the line OA meets the circle again in the reflection of A in O", expected=False)
     O, A = c.free_point("O"), c.free_point("A")
-    K = c.formula("K", "conic", circle, O, A)
+    K = c.circle("K", O, A)
     X = c.line_conic_intersection("X", c.join("l", O, A), K)
     c.conclude_proportional(c.midpoint("M", X, A), O)
     v = prove(c)
@@ -273,7 +252,7 @@ def test_tangents_from_an_external_point_have_equal_length():
 def test_the_tangents_from_a_point_touch_the_circle():
     c = Claim("tangents", "the lines tangentsfrom P K touch K")
     O, A, P = (c.free_point(n) for n in "OAP")
-    K = c.formula("K", "conic", circle, O, A)
+    K = c.circle("K", O, A)
     s, t_ = c.tangents_from(("s", "t"), P, K)
     c.conclude_tangent(s, K)
     c.conclude_tangent(t_, K)
@@ -284,7 +263,7 @@ def test_the_tangents_from_a_point_touch_the_circle():
 def test_the_common_points_of_two_circles_lie_on_both():
     c = Claim("two-circles", "the common points of two circles lie on both")
     O, A, Q, B = (c.free_point(n) for n in "OAQB")
-    K, L = c.formula("K", "conic", circle, O, A), c.formula("L", "conic", circle, Q, B)
+    K, L = c.circle("K", O, A), c.circle("L", Q, B)
     X, Y = c.circle_intersections(("X", "Y"), K, L)
     c.conclude_on_conic(X, L)
     c.conclude_on_conic(Y, K)
@@ -302,7 +281,7 @@ def _napoleon(angles):
     n1 = c.formula("N1", "point", centroid, B, C, tips[0])
     n2 = c.formula("N2", "point", centroid, C, A, tips[1])
     n3 = c.formula("N3", "point", centroid, A, B, tips[2])
-    r1, r2, r3 = (c.formula(f"r{i}", "ratio", dist2, p, q) for i, (p, q) in
+    r1, r2, r3 = (c.dist2(f"r{i}", p, q) for i, (p, q) in
                   enumerate(((n1, n2), (n2, n3), (n3, n1)), start=1))
     c.conclude_equal_ratio(r1, r2)
     c.conclude_equal_ratio(r2, r3)
@@ -337,10 +316,8 @@ def test_regular_pentagon_diagonal_ratio_satisfies_the_golden_equation():
     c = Claim("pentagon", "diagonal and side of a regular pentagon: d⁴ − 3d²s² + s⁴ = 0")
     A, B = c.free_point("A"), c.free_point("B")
     C = c.polygon_vertex("C", A, B, 5, 2)
-    s, d = c.formula("s", "ratio", dist2, A, B), c.formula("d", "ratio", dist2, A, C)
-    c.formula("g", "scalar", lambda s, d: (d[0] * d[0] * s[1] * s[1] - 3 * d[0] * d[1] * s[0] * s[1]
-                                           + s[0] * s[0] * d[1] * d[1],), s, d)
-    c.conclude_zero("g")
+    s, d = c.dist2("s", A, B), c.dist2("d", A, C)
+    c.conclude_equal_ratio(c.add("d2 + s2", c.mul("d2", d, d), c.mul("s2", s, s)), c.mul("3ds", c.mul("ds", d, s), 3))
     v, t = timed(c)
     assert v.proved and t < 10
     assert "star polygons" in v.branches
@@ -350,8 +327,7 @@ def test_a_wrong_pentagon_ratio_is_refuted_at_the_principal_root():
     c = Claim("pentagon-wrong", "d² = 3/2 s² in a regular pentagon", expected=False)
     A, B = c.free_point("A"), c.free_point("B")
     C = c.polygon_vertex("C", A, B, 5, 2)
-    c.conclude_equal_ratio(c.formula("d", "ratio", dist2, A, C),
-                           c.formula("s", "ratio", lambda a, b: _times(dist2(a, b), (3, 2)), A, B))
+    c.conclude_equal_ratio(c.dist2("d", A, C), c.mul("s", c.dist2("AB", A, B), sympy.Rational(3, 2)))
     v = prove(c)
     assert v.refuted and v.counterexample.recheck()
     a, b = (point_of(v.counterexample.values, n) for n in "AB")
@@ -388,7 +364,7 @@ def test_every_regular_polygon_closes_and_has_equal_sides(n):
     c = Claim(f"polygon-{n}", f"the regular {n}-gon: vertex n is A, and |V1 V2| = |AB|")
     A, B = c.free_point("A"), c.free_point("B")
     V2 = c.polygon_vertex("V2", A, B, n, 2)
-    c.conclude_equal_ratio(c.formula("s", "ratio", dist2, A, B), c.formula("t", "ratio", dist2, B, V2))
+    c.conclude_equal_ratio(c.dist2("s", A, B), c.dist2("t", B, V2))
     v, t = timed(c)
     assert v.proved and t < 10
 
