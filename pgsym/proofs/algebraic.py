@@ -147,7 +147,7 @@ def _new_root(claim: Claim, name: str, kind: str, text: str, named: bool, **kw: 
                               "the exact evaluation visits every choice of their signs")
     (sym,) = claim.params(name)
     node = claim._free(f"_{name}", "scalar", (sym,))
-    node.root = True  # type: ignore[attr-defined]  # normalisation: not a free object, fixed by its equation
+    node.root = True  # normalisation: not a free object, fixed by its equation
     root = Root(sym, node, kind, text, named, **kw)
     data.roots.append(root)
     return root
@@ -159,7 +159,7 @@ def _similar(node: Node) -> Node:
     scale by k > 0, so the named roots stay positive), the common points of a line and a circle or two circles
     and the tangents from a point go to those of the images (either root: the pair is what is mapped), and a
     rotation by a fixed angle commutes with every direct similarity."""
-    node.group = "similarity"  # type: ignore[attr-defined]
+    node.group = "similarity"
     return node
 
 

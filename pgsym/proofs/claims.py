@@ -53,6 +53,10 @@ class Node:
     description: str = ""
     data: Any = None
     conditions: list[str] = field(default_factory=list)
+    #: the group a formula commutes with when its builder knows it (a square-root construction), else None
+    group: str | None = None
+    #: a root adjoined by its defining equation (pgsym.proofs.algebraic): no free object, so no frame moves it
+    root: bool = False
 
     @property
     def operation(self) -> Operation:

@@ -186,7 +186,7 @@ def _node_group(node: Node, counts: Counter) -> str | None:
     similarity, the only ones the similarity frame uses). Anything else: ``None``.
     """
     op = node.operation
-    if node.op == "formula" and getattr(node, "group", None):  # a construction with square roots (algebraic.py)
+    if node.op == "formula" and node.group:  # a construction with square roots (algebraic.py)
         return node.group
     if node.op in ("point_on_line", "point_of_line", "point_on_conic"):
         return op.group if _own(node.data[0], counts) else None
@@ -267,7 +267,7 @@ def _obstacle(claim: Claim, counts: Counter, group: str = "projective") -> str |
         if node.op == "const":
             continue
         if node.op == "free":
-            if getattr(node, "root", False):  # a root of pgsym.proofs.algebraic: fixed by its defining equation
+            if node.root:  # a root of pgsym.proofs.algebraic: fixed by its defining equation
                 continue
             if node.kind in FRAMES and _generic_vector(node, counts):
                 continue
