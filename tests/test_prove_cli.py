@@ -164,3 +164,13 @@ def test_discover_says_when_conics_were_looked_for_among_some_points_only(tmp_pa
     assert "among the first 12 of the 13 points only" in result.stderr
     f.write_text("points " + " ".join(f"P{i}" for i in range(12)) + "\nprove collinear P0 P1 P2\n", encoding="utf-8")
     assert "only" not in CliRunner().invoke(main, ["discover", str(f)]).stderr
+
+
+def test_help_shows_a_euclidean_example_that_is_proved(tmp_path):
+    # the example printed by --help is a theorem (Simson's line) that the command proves
+    text = _invoke("--help").output
+    lines = text[text.index("    points A B C\n"):].splitlines()[:4]
+    f = tmp_path / "simson.thm"
+    f.write_text("\n".join(line.strip() for line in lines) + "\n", encoding="utf-8")
+    result = CliRunner().invoke(main, ["prove", str(f)])
+    assert result.exit_code == 0 and "proved" in result.output, result.output

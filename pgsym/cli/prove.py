@@ -64,6 +64,15 @@ Example theorem file (pappus.thm):
     point Y = meet (join A F) (join E C)
     point Z = meet (join E D) (join B F)
     prove collinear X Y Z
+
+\b
+Euclidean geometry (circles, perpendiculars, feet, squared distances; square
+roots such as angle bisectors and line-circle intersections, with the roots
+each verdict covers):
+    points A B C
+    conic K = circle A B C
+    point P on circle K
+    prove collinear (foot P (join B C)) (foot P (join C A)) (foot P (join A B))
 """
 
 
