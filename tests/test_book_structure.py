@@ -1,7 +1,7 @@
 """The structure of the built book in a real browser: short visible code cells, exercises with solutions.
 
 Uses the local server and the Chromium launch of the browser test. The lecture chapters are the pages of
-Parts I to IV of the table of contents (the lecture's mathematics, its proofs and its two exercises), not
+Parts I to V of the table of contents (the lecture's mathematics, its proofs and its two exercises), not
 the introduction, the instructors' and engineers' parts or the appendix; the rule on code cells holds on
 every page.
 """
@@ -17,9 +17,9 @@ MIN_EXERCISES = 4
 
 
 def lecture_chapters() -> list[str]:
-    """The chapters that follow the lecture: the pages of Parts I to IV."""
+    """The chapters that follow the lecture: the pages of Parts I to V."""
     toc = yaml.safe_load((ROOT / "_toc.yml").read_text())
-    lecture = ("Part I", "Part II", "Part III", "Part IV")
+    lecture = ("Part I", "Part II", "Part III", "Part IV", "Part V")
     parts = [p for p in toc["parts"] if p.get("caption", "").split(":")[0] in lecture]
     return [chapter["file"] for part in parts for chapter in part["chapters"]]
 
