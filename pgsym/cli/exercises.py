@@ -39,6 +39,13 @@ student's worked solutions) and the key table (student x question -> canonical a
 HTML pages carry their math as MathML: no script, no network, nothing to install.
 
 \b
+--roster reads class lists as spreadsheets and platforms save them: separated by ',', ';', tab
+or '|' (or Excel's 'sep=' line), in UTF-8, UTF-16 (Excel "Unicode text") or Windows-1252. The id
+is the first of: SIS User ID (Canvas gradebook export; 'Student' is the name, the Points
+Possible row is skipped), ID number (Moodle; first and last name joined), Student ID /
+student number / registration (R/exams), id; --roster-id-column chooses another column.
+
+\b
 Names, ids and titles are printed as text in every format, never run as LaTeX, Markdown, HTML,
 XML or Cloze; PDFs print every script (LuaLaTeX with the Noto fonts: 'make system-deps').
 LuaLaTeX runs without shell escape, with openin_any=p and openout_any=p, in a temporary
@@ -112,7 +119,10 @@ class _NoBar:
 @click.option("--count", type=click.IntRange(1, 100_000), default=1, show_default=True,
               help="Number of anonymous forms (ignored with --roster).")
 @click.option("--seed", type=int, default=0, show_default=True, help="Master seed of the whole set.")
-@click.option("--roster", type=click.Path(dir_okay=False), help="CSV with an 'id' column (and optionally 'name').")
+@click.option("--roster", type=click.Path(dir_okay=False),
+              help="Class list: CSV (',' ';' tab), UTF-8/UTF-16/Windows-1252, or a Canvas/Moodle export.")
+@click.option("--roster-id-column", "roster_id_column", metavar="HEADER",
+              help="Take the student id from this column (default: SIS User ID, ID number, Student ID, id, ...).")
 @click.option("--format", "formats", default="md", show_default=True,
               help="Comma-separated: md,tex,pdf,html,ipynb,moodle,qti.")
 @click.option("--level", type=click.IntRange(1, 9), default=1, show_default=True,
@@ -129,7 +139,8 @@ class _NoBar:
 @click.option("--mathjax", type=click.Path(file_okay=False), hidden=True,
               help="Deprecated and ignored: the HTML pages carry MathML and need no MathJax.")
 @click.option("--progress/--no-progress", default=None, help="Show a progress bar (default: for 50 sheets or more).")
-def sheet_command(topics: str, count: int, seed: int, roster: str | None, formats: str, level: int,
+def sheet_command(topics: str, count: int, seed: int, roster: str | None, roster_id_column: str | None,
+                  formats: str, level: int,
                   solutions_in_sheets: bool, old_solutions: bool, key: bool, out: str, template_dirs: tuple[str, ...],
                   mathjax: str | None, progress: bool | None) -> None:
     """Generate per-student exercise sheets, their answer key and key table, in every requested format."""
@@ -151,7 +162,10 @@ def sheet_command(topics: str, count: int, seed: int, roster: str | None, format
         raise click.BadParameter(str(err), param_hint="--format") from None
     try:
         pairs = parse_topics(topics, level)
-        students = read_roster(roster) if roster else anonymous_students(count)
+        notes: list[str] = []
+        students = read_roster(roster, roster_id_column, notes) if roster else anonymous_students(count)
+        for note in notes:
+            click.echo(f"note: {note}", err=True)
         show = progress if progress is not None else len(students) >= 50
         with _progress(len(students), "building sheets", show) as bar:
             sheets = build_sheets(pairs, students, seed, progress=bar.update)
@@ -193,7 +207,7 @@ def check_command(ctx: click.Context, manifest: str, answers: str, out: str | No
 
     try:
         data = load_manifest_data(manifest)
-        rows, problems = read_answer_file(answers)
+        rows, problems = read_answer_file(answers, data.keys)
         report = grade_rows(data.keys, rows, data.mistakes)
     except PgsymError as err:
         raise fail(err) from None
