@@ -153,7 +153,7 @@ def test_moodle_grade_export_takes_id_number_and_joins_the_names(tmp_path):
 
 
 def test_r_exams_register_takes_the_registration_number(tmp_path):
-    p = write(tmp_path, "register.csv", "registration;name;id\n01234567;Ada Lovelace;alove\n".encode())
+    p = write(tmp_path, "register.csv", b"registration;name;id\n01234567;Ada Lovelace;alove\n")
     assert read_roster(p) == [("01234567", "Ada Lovelace")]
 
 

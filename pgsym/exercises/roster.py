@@ -38,7 +38,8 @@ __all__ = ["ID_HEADERS", "NAME_HEADERS", "NOT_QUESTION_HEADERS", "find_id_column
 #: Headers of a student id, most specific first (normalised by :func:`normal_header`): an institution's
 #: student number wins over a platform's internal id.
 ID_HEADERS = ("sis user id", "id number", "idnumber", "student id", "student number", "student no",
-              "matriculation number", "matrikelnummer", "matrikelnr", "registration", "registration number", "id", "student")
+              "matriculation number", "matrikelnummer", "matrikelnr", "registration", "registration number",
+              "id", "student")
 
 #: Headers of a whole name.
 NAME_HEADERS = ("name", "full name", "student name", "student")
