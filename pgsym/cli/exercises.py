@@ -88,7 +88,7 @@ EXIT_UNREADABLE = 3
 
 
 def _load_folders(folders: tuple[str, ...]) -> None:
-    from ..exercises.template import load_template_folder
+    from ..exercises.registry import load_template_folder
 
     for folder in folders:
         try:
@@ -269,7 +269,7 @@ def templates_group() -> None:
 @click.option("--templates", "template_dirs", multiple=True, type=click.Path(file_okay=False))
 def templates_list(template_dirs: tuple[str, ...]) -> None:
     """List the known topics with their levels."""
-    from ..exercises.template import all_templates
+    from ..exercises.registry import all_templates
 
     _load_folders(template_dirs)
     for name, t in sorted(all_templates().items()):
@@ -360,8 +360,8 @@ def templates_check(name: str | None, seeds: int, template_dirs: tuple[str, ...]
 
     Example: pgsym templates check join --seeds 10000
     """
+    from ..exercises.registry import all_templates, get_template
     from ..exercises.stress import stress
-    from ..exercises.template import all_templates, get_template
 
     _load_folders(template_dirs)
     try:

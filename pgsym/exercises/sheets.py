@@ -20,13 +20,13 @@ from typing import Any
 from ..errors import PgsymError
 from ..escaping import one_line
 from ..limits import MAX_NAME_CHARS
-from .errors import ManifestError, UnknownTopicError
+from .errors import ManifestError, TemplateError, UnknownTopicError
 from .mistakes import MAX_MISTAKES
 from .model import Answer, Mistake, Sheet
 from .reading import load_json
+from .registry import get_template
 from .roster import read_roster
 from .seeds import form_id, slot_keys, variant_seed
-from .template import TemplateError, get_template
 
 __all__ = ["ManifestData", "anonymous_students", "build_sheet", "build_sheets", "load_manifest",
            "load_manifest_data", "manifest", "manifest_json", "parse_topics", "read_roster"]

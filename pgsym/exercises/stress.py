@@ -8,7 +8,7 @@ through the answer parser and grades as right, every number in an answer stays w
 ``max_entry``, and multiple-choice keys are spread (no letter gets more than twice its fair share, and
 every letter appears when there are enough seeds).
 
->>> from pgsym.exercises.template import get_template
+>>> from pgsym.exercises.registry import get_template
 >>> report = stress(get_template("join"), seeds=60)
 >>> report.ok, report.instances
 (True, 60)
@@ -23,7 +23,7 @@ from dataclasses import dataclass, field
 from ..errors import PgsymError
 from .answers import grade
 from .seeds import variant_seed
-from .template import Template
+from .template_base import Template
 
 
 @dataclass

@@ -4,7 +4,7 @@ point, and the type of a conic from its points at infinity.
 An angle's cosine is usually a surd; it is asked as ``p√q`` (``p`` rational, ``q`` square-free), two parts
 that grade exactly.
 
->>> from pgsym.exercises.template import get_template
+>>> from pgsym.exercises.registry import get_template
 >>> ex = get_template("angle").generate(seed=1, level=2, slot=2)
 >>> [(p.label, p.answer.kind) for p in ex.parts]
 [('2a', 'scalar'), ('2b', 'integer')]
@@ -27,9 +27,8 @@ from ...projective_plane import Line, Point, incident
 from ...ring import cross, primitive_integers
 from ..mistakes import mistake
 from ..model import Answer, Exercise, Mistake
-from ..template import Draft, Template, check
-from ._util import equation_latex, matrix_latex, nz, primitive_dir, tuple_latex
-from .plane import _particular
+from ..template_base import Draft, Template, check
+from ._util import equation_latex, integer_solution, matrix_latex, nz, primitive_dir, tuple_latex
 
 # rotations by an angle with rational cosine and sine, (cos, sin, hypotenuse): Pythagorean triples
 _PYTHAGOREAN = ((3, 4, 5), (4, 3, 5), (5, 12, 13), (12, 5, 13), (8, 15, 17), (15, 8, 17))
@@ -84,7 +83,7 @@ def _line_through(p: tuple[int, int], q: tuple[int, int]) -> list[int]:
 def _two_points_on(line: list[int], rng: random.Random) -> tuple[tuple[int, int], tuple[int, int]]:
     """Two distinct integer points of an integer line ``a x + b y + c = 0`` with ``gcd(a, b) = 1``."""
     a, b, c = line
-    x0, y0 = _particular(a, b, -c)
+    x0, y0 = integer_solution(a, b, -c)
     s, t = rng.sample(range(-2, 3), 2)
     return (x0 + s * b, y0 - s * a), (x0 + t * b, y0 - t * a)
 
