@@ -37,6 +37,9 @@ student's worked solutions) and the key table (student x question -> canonical a
   moodle.xml                        Moodle XML (one category per topic)
   qti.zip                           Canvas QTI 1.2 (a question bank per topic, a quiz of question groups)
 HTML pages carry their math as MathML: no script, no network, nothing to install.
+Student notebooks check each typed answer against salted digests of the key: a practice aid,
+not a secret (answers with few possible values are found from the digests by trying them in
+under a second). For a graded sheet use --no-self-check: the notebooks only collect answers.
 
 \b
 --roster reads class lists as spreadsheets and platforms save them: separated by ',', ';', tab
@@ -133,6 +136,9 @@ class _NoBar:
               help="Deprecated spelling of --solutions-in-sheets.")
 @click.option("--key/--no-key", default=True, show_default=True,
               help="Also write the answer key and the key table.")
+@click.option("--self-check/--no-self-check", "self_check", default=True, show_default=True,
+              help="Student notebooks check each answer (practice: the digests can be brute-forced; "
+                   "use --no-self-check for a graded sheet).")
 @click.option("--out", "out", required=True, type=click.Path(file_okay=False), help="New (or empty) output folder.")
 @click.option("--templates", "template_dirs", multiple=True, type=click.Path(file_okay=False),
               help="Folder of instructor templates (*.py); may be repeated.")
@@ -141,8 +147,8 @@ class _NoBar:
 @click.option("--progress/--no-progress", default=None, help="Show a progress bar (default: for 50 sheets or more).")
 def sheet_command(topics: str, count: int, seed: int, roster: str | None, roster_id_column: str | None,
                   formats: str, level: int,
-                  solutions_in_sheets: bool, old_solutions: bool, key: bool, out: str, template_dirs: tuple[str, ...],
-                  mathjax: str | None, progress: bool | None) -> None:
+                  solutions_in_sheets: bool, old_solutions: bool, key: bool, self_check: bool, out: str,
+                  template_dirs: tuple[str, ...], mathjax: str | None, progress: bool | None) -> None:
     """Generate per-student exercise sheets, their answer key and key table, in every requested format."""
     from ..atomic import Terminated, write_new_folder
     from ..exercises.output import parse_formats, render_all
@@ -171,7 +177,8 @@ def sheet_command(topics: str, count: int, seed: int, roster: str | None, roster
             sheets = build_sheets(pairs, students, seed, progress=bar.update)
         with _progress(len(students), "rendering", show) as bar:
             target = write_new_folder(out, lambda tmp: render_all(sheets, pairs, fmt, tmp, solutions,
-                                                                  progress=bar.update, key=key))
+                                                                  progress=bar.update, key=key,
+                                                                  self_check=self_check))
     except PgsymError as err:
         raise fail(err) from None
     except Terminated:

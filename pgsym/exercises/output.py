@@ -54,12 +54,15 @@ def parse_formats(spec: str) -> list[str]:
 
 def render_all(sheets: Sequence[Sheet], topics: Sequence[tuple[str, int]], formats: Sequence[str], folder: Path,
                solutions: bool = False, mathjax: str | Path | None = None,
-               progress: Callable[[int], None] | None = None, key: bool = True) -> list[Path]:
+               progress: Callable[[int], None] | None = None, key: bool = True,
+               self_check: bool = True) -> list[Path]:
     """Write the manifest and every format into ``folder`` (which must exist); the files written.
 
     ``solutions`` puts the worked solutions into the student sheets too (practice sheets); ``key``
     writes the answer key and the key table next to them. ``mathjax`` is ignored: the HTML pages
     carry their math as MathML and need no script (kept so that old callers still work).
+    ``self_check=False`` writes the student notebooks without the practice self-check
+    (:mod:`pgsym.exercises.render_ipynb`).
     """
     del mathjax  # the pages need no MathJax any more
     written = []
@@ -82,7 +85,9 @@ def render_all(sheets: Sequence[Sheet], topics: Sequence[tuple[str, int]], forma
                      if f in formats]
         for sheet in sheets:
             for fmt, renderer in per_sheet:
-                write(f"{fmt}/{sheet.file_stem}.{fmt}", renderer.render_sheet(sheet, solutions))
+                page = (render_ipynb.render_sheet(sheet, solutions, self_check) if fmt == "ipynb"
+                        else renderer.render_sheet(sheet, solutions))
+                write(f"{fmt}/{sheet.file_stem}.{fmt}", page)
                 if key:
                     keyed = (render_html.render_sheet(sheet, True, KEY_HEADING) if fmt == "html"
                              else renderer.render_sheet(sheet, True))
