@@ -90,12 +90,15 @@ EXIT_UNREADABLE = 3
 
 
 
-def _load_folders(folders: tuple[str, ...]) -> None:
+_REPLACE_HELP = "Let a template of --templates replace a built-in one of the same name (refused otherwise)."
+
+
+def _load_folders(folders: tuple[str, ...], replace: bool = False) -> None:
     from ..exercises.registry import load_template_folder
 
     for folder in folders:
         try:
-            load_template_folder(folder)
+            load_template_folder(folder, replace)
         except PgsymError as err:
             raise fail(err) from None
 
@@ -142,13 +145,15 @@ class _NoBar:
 @click.option("--out", "out", required=True, type=click.Path(file_okay=False), help="New (or empty) output folder.")
 @click.option("--templates", "template_dirs", multiple=True, type=click.Path(file_okay=False),
               help="Folder of instructor templates (*.py); may be repeated.")
+@click.option("--replace-templates", "replace_templates", is_flag=True, help=_REPLACE_HELP)
 @click.option("--mathjax", type=click.Path(file_okay=False), hidden=True,
               help="Deprecated and ignored: the HTML pages carry MathML and need no MathJax.")
 @click.option("--progress/--no-progress", default=None, help="Show a progress bar (default: for 50 sheets or more).")
 def sheet_command(topics: str, count: int, seed: int, roster: str | None, roster_id_column: str | None,
                   formats: str, level: int,
                   solutions_in_sheets: bool, old_solutions: bool, key: bool, self_check: bool, out: str,
-                  template_dirs: tuple[str, ...], mathjax: str | None, progress: bool | None) -> None:
+                  template_dirs: tuple[str, ...], replace_templates: bool, mathjax: str | None,
+                  progress: bool | None) -> None:
     """Generate per-student exercise sheets, their answer key and key table, in every requested format."""
     from ..atomic import Terminated, write_new_folder
     from ..exercises.output import parse_formats, render_all
@@ -161,7 +166,7 @@ def sheet_command(topics: str, count: int, seed: int, roster: str | None, roster
         click.echo("warning: --mathjax is deprecated and ignored; the HTML sheets carry their math as MathML "
                    "and need no MathJax", err=True)
     solutions = solutions_in_sheets or old_solutions
-    _load_folders(template_dirs)
+    _load_folders(template_dirs, replace_templates)
     try:
         fmt = parse_formats(formats)
     except ValueError as err:
@@ -274,11 +279,12 @@ def templates_group() -> None:
 
 @templates_group.command("list")
 @click.option("--templates", "template_dirs", multiple=True, type=click.Path(file_okay=False))
-def templates_list(template_dirs: tuple[str, ...]) -> None:
+@click.option("--replace-templates", "replace_templates", is_flag=True, help=_REPLACE_HELP)
+def templates_list(template_dirs: tuple[str, ...], replace_templates: bool) -> None:
     """List the known topics with their levels."""
     from ..exercises.registry import all_templates
 
-    _load_folders(template_dirs)
+    _load_folders(template_dirs, replace_templates)
     for name, t in sorted(all_templates().items()):
         click.echo(f"{name:14s} levels {','.join(map(str, t.levels))}  {t.title}")
 
@@ -360,8 +366,10 @@ def templates_new(name: str, folder: str) -> None:
 @click.option("--seeds", type=click.IntRange(1, 1_000_000), default=10_000, show_default=True,
               help="Number of seeds (one instance each, cycling through the levels).")
 @click.option("--templates", "template_dirs", multiple=True, type=click.Path(file_okay=False))
+@click.option("--replace-templates", "replace_templates", is_flag=True, help=_REPLACE_HELP)
 @click.option("--progress/--no-progress", default=None, help="Show a progress bar (default: on a terminal).")
-def templates_check(name: str | None, seeds: int, template_dirs: tuple[str, ...], progress: bool | None) -> None:
+def templates_check(name: str | None, seeds: int, template_dirs: tuple[str, ...], replace_templates: bool,
+                    progress: bool | None) -> None:
     """Stress-test one template (or all): degenerate instances, independent re-verification, answer sizes,
     multiple-choice key spread.
 
@@ -370,7 +378,7 @@ def templates_check(name: str | None, seeds: int, template_dirs: tuple[str, ...]
     from ..exercises.registry import all_templates, get_template
     from ..exercises.stress import stress
 
-    _load_folders(template_dirs)
+    _load_folders(template_dirs, replace_templates)
     try:
         templates = [get_template(name)] if name else list(all_templates().values())
     except PgsymError as err:

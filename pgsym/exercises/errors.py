@@ -20,6 +20,7 @@ __all__ = [
     "TeXFailedError",
     "TeXMissingError",
     "TemplateError",
+    "TemplateNameError",
     "UnknownTopicError",
     "UnparsableAnswerError",
 ]
@@ -50,6 +51,10 @@ class UnknownTopicError(PgsymError, KeyError):
 
 class TemplateError(PgsymError, ValueError):
     """A template produced an instance that fails its own checks (degenerate, wrong or too large)."""
+
+
+class TemplateNameError(TemplateError):
+    """An instructor template named like a built-in (or another loaded) template, without asking to replace it."""
 
 
 class TeXMissingError(PgsymError, RuntimeError):

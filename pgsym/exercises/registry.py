@@ -11,7 +11,7 @@ import types
 from pathlib import Path
 
 from ..escaping import one_line
-from .errors import TemplateError, UnknownTopicError
+from .errors import TemplateError, TemplateNameError, UnknownTopicError
 from .reading import read_user_text
 from .template_base import Template
 
@@ -20,6 +20,7 @@ __all__ = ["all_templates", "get_template", "load_template_folder"]
 
 _BUILTIN: dict[str, Template] = {}
 _EXTRA: dict[str, Template] = {}
+_ORIGIN: dict[str, Path] = {}  # the file each instructor template came from (loading it again is no clash)
 
 
 def _builtin() -> dict[str, Template]:
@@ -54,8 +55,12 @@ def get_template(name: str) -> Template:
     return templates[name]
 
 
-def load_template_folder(folder: str | Path) -> list[str]:
+def load_template_folder(folder: str | Path, replace: bool = False) -> list[str]:
     """Load instructor templates: every ``*.py`` file in ``folder`` defining subclasses of :class:`Template`.
+
+    A template named like a built-in one, or like one loaded before, raises :class:`TemplateNameError`
+    unless ``replace`` is true (``pgsym sheet --replace-templates``): a sheet should never get another
+    exercise than its topic names without the instructor asking for it.
 
     Returns the names registered. The files are ordinary Python written by the instructor and are
     run as modules (this is the only place the exercise package runs outside code); each file is read
@@ -86,6 +91,13 @@ def load_template_folder(folder: str | Path) -> list[str]:
             if isinstance(value, type) and issubclass(value, Template) and value is not Template and value.name:
                 if value.__module__ != module_name:
                     continue
+                origin = _ORIGIN.get(value.name)
+                if not replace and (value.name in _builtin() or (origin is not None and origin != file.resolve())):
+                    where = "a built-in template" if value.name in _builtin() else "a template loaded before"
+                    raise TemplateNameError(
+                        f"template file {file.name} defines {one_line(value.name)[:60]!r}, the name of {where}; "
+                        "rename it (its 'name' attribute), or pass --replace-templates to use it instead")
                 _EXTRA[value.name] = value()
+                _ORIGIN[value.name] = file.resolve()
                 names.append(value.name)
     return names
