@@ -34,6 +34,9 @@ student's worked solutions) and the key table (student x question -> canonical a
   key/md/ key/html/ key/ipynb/      the answer key, one file per student
   key-table.md .html .ipynb         the key table of the class
   sheets.tex/.pdf key.tex/.pdf key-table.tex/.pdf
+                                    (each sheet on its own pages: it starts on an odd page, its
+                                    pages are numbered from 1)
+  pdf/ key/pdf/                     one PDF per student (with --format pdf)
   moodle.xml                        Moodle XML (one category per topic)
   qti.zip                           Canvas QTI 1.2 (a question bank per topic, a quiz of question groups)
 HTML pages carry their math as MathML: no script, no network, nothing to install.
@@ -50,7 +53,9 @@ student number / registration (R/exams), id; --roster-id-column chooses another 
 
 \b
 Names, ids and titles are printed as text in every format, never run as LaTeX, Markdown, HTML,
-XML or Cloze; PDFs print every script (LuaLaTeX with the Noto fonts: 'make system-deps').
+XML or Cloze; PDFs print every character an installed Noto font has (LuaLaTeX; 'make system-deps'
+installs the Noto fonts and colour emoji), and a character no installed font has stops the run
+naming the student and the character, never an empty box.
 LuaLaTeX runs without shell escape, with openin_any=p and openout_any=p, in a temporary
 folder, for at most 30 s + 2 s per sheet; a sheet that fails names its student."""
 

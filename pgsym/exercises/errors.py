@@ -16,6 +16,7 @@ __all__ = [
     "AnswersFileError",
     "ManifestError",
     "MathJaxMissingError",
+    "MissingGlyphError",
     "RosterError",
     "TeXFailedError",
     "TeXMissingError",
@@ -67,3 +68,7 @@ class TeXFailedError(PgsymError, RuntimeError):
 
 class UnparsableAnswerError(PgsymError, ValueError):
     """A typed answer cannot be read as the expected kind of value."""
+
+
+class MissingGlyphError(TeXFailedError):
+    """A character of a sheet that no installed font has (it would print as an empty box)."""
