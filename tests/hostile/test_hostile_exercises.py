@@ -493,7 +493,7 @@ def test_damaged_manifests_are_named(tmp_path, text):
 def test_roster_limits_and_bad_bytes(tmp_path):
     # 0x81 is neither UTF-8 nor Windows-1252 (the fallback for other non-UTF-8 bytes)
     (tmp_path / "r.csv").write_bytes(b"id,name\ns1,\xff\x81\n")
-    with pytest.raises(RosterError, match="neither UTF-8, UTF-16 nor Windows-1252.*CSV UTF-8"):
+    with pytest.raises(RosterError, match=r"neither UTF-8, UTF-16 nor Windows-1252.*CSV UTF-8"):
         read_roster(tmp_path / "r.csv")
     (tmp_path / "r.csv").write_text("id,name\ns1," + "x" * 200_000 + "\n")  # past the csv module's own limit
     with pytest.raises(RosterError, match="longer than 20000"):
