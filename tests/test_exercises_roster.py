@@ -203,3 +203,10 @@ def test_the_same_row_twice_is_one_answer_and_different_rows_a_conflict(tmp_path
     by_label = {r.label: r for r in report["s1"]}
     assert by_label["1"].correct and not by_label["1"].unreadable  # identical twice: graded once, right
     assert by_label["2"].unreadable and "answered 2 times" in by_label["2"].reason  # (0,1,1) vs (0,2,2) differ
+
+
+def test_an_unknown_id_header_says_how_to_name_it(tmp_path):
+    p = write(tmp_path, "r.csv", b"Kennung;Name\nk1;Ada\n")
+    with pytest.raises(RosterError, match=r"found: 'Kennung', 'Name'\); or name the id column with --roster-id-column"):
+        read_roster(p)
+    assert read_roster(p, id_column="kennung") == [("k1", "Ada")]

@@ -121,8 +121,9 @@ def roster_from_table(table: Table, name: str, id_column: str | None = None) -> 
         shown = ", ".join(repr(one_line(f)[:40]) for f in header[:10]) or "none"
         wanted = (f"a column {id_column!r}" if id_column else
                   "an 'id' column (or 'Student ID', Moodle's 'ID number', Canvas's 'SIS User ID')")
+        how = "" if id_column else "; or name the id column with --roster-id-column HEADER"
         raise RosterError(f"the roster {name!r} needs a header row with {wanted} (found: {shown})"
-                          f"{separator_hint(header)}; e.g.\n  id,name\n  s001,Ada Lovelace")
+                          f"{separator_hint(header)}{how}; e.g.\n  id,name\n  s001,Ada Lovelace")
     if id_column is None and _canvas_without_sis(fields, table):
         raise RosterError(f"the roster {name!r} is a Canvas gradebook export without the 'SIS User ID' column, "
                           "which 'pgsym check --canvas' writes back; export the gradebook with SIS ids (a role "
