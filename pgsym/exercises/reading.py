@@ -185,7 +185,7 @@ def decode_text(data: bytes, what: str, name: str, error: type[Exception]) -> tu
     return text, "windows-1252"
 
 
-def _header_width(line: str, sep: str) -> int:
+def _width(line: str, sep: str) -> int:
     try:
         return len(next(csv.reader([line], delimiter=sep)))
     except (csv.Error, StopIteration):
@@ -193,19 +193,27 @@ def _header_width(line: str, sep: str) -> int:
 
 
 def sniff_separator(text: str) -> tuple[str, str]:
-    """The separator of a table (from Excel's ``sep=X`` first line, or the one splitting the header row
-    into the most columns) and the text without a ``sep=`` line.
+    """The separator of a table and the text without Excel's ``sep=X`` first line (which decides).
+
+    Otherwise the separator is the one that splits the header row into more than one column and gives
+    the most of the next lines the header's width; ties go to the wider header, then to ``,``.
 
     >>> sniff_separator("id;name\\ns1;Lovelace, Ada\\n")[0], sniff_separator("sep=|\\nid|name\\n")
     (';', ('|', 'id|name\\n'))
+    >>> sniff_separator("Name, first\\tID\\nLovelace, Ada\\ts1\\nTuring\\ts2\\n")[0]
+    '\\t'
     """
     first, _, rest = text.partition("\n")
     hint = re.fullmatch(r"\s*sep=(.)\s*", first)
     if hint and hint.group(1) in SEPARATORS:
         return hint.group(1), rest
-    widths = {sep: _header_width(first.rstrip("\r"), sep) for sep in SEPARATORS}
-    best = max(SEPARATORS, key=lambda sep: (widths[sep], -SEPARATORS.index(sep)))
-    return (best if widths[best] > 1 else ","), text
+    lines = [line.rstrip("\r") for line in text.split("\n", 20)[:20] if line.strip()]
+    scores = {}
+    for sep in SEPARATORS:
+        width = _width(lines[0], sep) if lines else 0
+        if width > 1:
+            scores[sep] = (sum(_width(line, sep) == width for line in lines[1:20]), width, -SEPARATORS.index(sep))
+    return (max(scores, key=lambda sep: scores[sep]) if scores else ","), text
 
 
 def separator_hint(cells: list[str]) -> str:
