@@ -210,3 +210,11 @@ def test_an_unknown_id_header_says_how_to_name_it(tmp_path):
     with pytest.raises(RosterError, match=r"found: 'Kennung', 'Name'\); or name the id column with --roster-id-column"):
         read_roster(p)
     assert read_roster(p, id_column="kennung") == [("k1", "Ada")]
+
+
+def test_an_empty_moodle_id_number_suggests_another_column(tmp_path):
+    text = "First name,Last name,ID number,Email address\nAda,Lovelace,,ada@example.org\n"
+    p = write(tmp_path, "grades.csv", text.encode())
+    with pytest.raises(RosterError, match=r"line 2 .*'ID number'.*--roster-id-column 'Email address'"):
+        read_roster(p)
+    assert read_roster(p, id_column="Email address") == [("ada@example.org", "Ada Lovelace")]

@@ -144,7 +144,10 @@ def roster_from_table(table: Table, name: str, id_column: str | None = None) -> 
             raise RosterError(f"line {line} of {name!r} has no student id (column {column!r})"
                               + ("; Canvas fills 'SIS User ID' only for students enrolled through the "
                                  "institution's SIS: fill it in, or pass --roster-id-column ID to use Canvas's "
-                                 "own id instead" if canvas else ""))
+                                 "own id instead" if canvas else "")
+                              + ("; Moodle fills 'ID number' only where the site sets it: pass --roster-id-column "
+                                 "'Email address' (or another column that is never empty)"
+                                 if fields[id_col] in ("id number", "idnumber") else ""))
         if len(sid) > _MAX_ID_CHARS:
             raise RosterError(f"line {line} of {name!r}: the id is longer than {_MAX_ID_CHARS} characters")
         if any(unicodedata.category(c) == "Cc" for c in sid):
