@@ -61,9 +61,11 @@ live: $(LIVE_BUILT)  ## build the live cells' assets (Pyodide, wheels, editor bu
 
 # Debian packages: chromium for the browser test, TeX for the PDF exercise sheets, pdftotext to read them back.
 # The sheets are typeset by LuaLaTeX with the Noto fonts, so every script prints (Latin, Greek, Cyrillic,
-# CJK, Arabic, Hebrew, Devanagari, Thai, ...): texlive-luatex, fonts-noto-core and fonts-noto-cjk.
+# CJK, Arabic, Hebrew, Devanagari, Thai, Bengali, Tamil, Ethiopic, Khmer, ...: fonts-noto-core and
+# fonts-noto-cjk) and emoji print in colour (fonts-noto-color-emoji, through luaotfload's HarfBuzz mode);
+# poppler-utils cuts the class PDF into one PDF per student.
 APT_PACKAGES := chromium texlive-latex-extra texlive-fonts-recommended tex-gyre latexmk lmodern poppler-utils \
-                texlive-luatex fonts-noto-core fonts-noto-cjk
+                texlive-luatex fonts-noto-core fonts-noto-cjk fonts-noto-color-emoji
 system-deps:  ## install Debian's chromium and TeX (when root), or say how
 	@missing=""; \
 	command -v chromium >/dev/null || missing="$$missing chromium"; \
@@ -71,7 +73,10 @@ system-deps:  ## install Debian's chromium and TeX (when root), or say how
 	command -v lualatex >/dev/null && kpsewhich luaotfload.sty >/dev/null || missing="$$missing texlive-luatex"; \
 	fc-list | grep -q 'Noto Serif CJK SC' || missing="$$missing fonts-noto-cjk"; \
 	fc-list | grep -q 'Noto Naskh Arabic' || missing="$$missing fonts-noto-core"; \
-	command -v pdftotext >/dev/null || missing="$$missing poppler-utils"; \
+	fc-list | grep -q 'Noto Sans Khmer' || missing="$$missing fonts-noto-core"; \
+	fc-list | grep -q 'Noto Color Emoji' || missing="$$missing fonts-noto-color-emoji"; \
+	command -v pdftotext >/dev/null && command -v pdfseparate >/dev/null && command -v pdfunite >/dev/null \
+	  || missing="$$missing poppler-utils"; \
 	if [ -n "$$missing" ]; then \
 	  if [ "$$(id -u)" = 0 ] && command -v apt-get >/dev/null; then \
 	    echo "installing Debian packages for:$$missing"; \

@@ -168,6 +168,8 @@ _TEX_SPECIAL = {"\\": r"\textbackslash{}", "&": r"\&", "%": r"\%", "#": r"\#", "
                 "\ufffd": "?"}
 _TEX_UNICODE = {"⊂": r"$\subset$", "↔": r"$\leftrightarrow$", "×": r"$\times$", "→": r"$\to$", "≠": r"$\neq$",
                 "−": "-", "…": r"\dots{}", "’": "'"}
+# with LuaLaTeX and its fonts only what the text font lacks is replaced: the minus sign comes from math
+_TEX_UNICODE_LUA = {k: v for k, v in _TEX_UNICODE.items() if k not in "’…−"} | {"−": "$-$"}
 _TEX_LIGATURES = {"-": "-", "<": "<", ">": ">", ",": ",", "'": "'", "`": "`", "!": "`", "?": "`"}
 _TEX_LINE = 500  # characters of escaped text per source line (TeX reads lines into a fixed buffer)
 # right-to-left scripts: Hebrew, Arabic, Syriac, Thaana, N'Ko, Samaritan, Mandaic and their presentation forms
@@ -201,13 +203,16 @@ def tex_escape(text: str, unicode: bool = False) -> str:
     ('?? \\\\& José', '李雷 \\\\& José')
     >>> print(tex_escape("Ali علي حسن", unicode=True))
     Ali {\\textdir TRT علي حسن}
+    >>> print(tex_escape("D’Angelo … −1", unicode=True))
+    D’Angelo … $-$1
     """
     text = clean(text)
     out: list[str] = []
     width = 0
     for i, c in enumerate(text):
         if unicode:
-            piece = "" if c in _BIDI_MARKS else (_TEX_SPECIAL.get(c) or _TEX_UNICODE.get(c) or c)
+            # typographic characters stay as typed (D’Angelo is not D'Angelo): the fonts have them
+            piece = "" if c in _BIDI_MARKS else (_TEX_SPECIAL.get(c) or _TEX_UNICODE_LUA.get(c) or c)
         else:
             piece = _tex_char(c)
         if c in _TEX_LIGATURES and i + 1 < len(text) and text[i + 1] == _TEX_LIGATURES[c]:

@@ -37,6 +37,7 @@ __all__ = [
     "MAX_STATEMENT_NAME_CHARS",
     "MAX_STATEMENT_OBJECTS",
     "read_bounded",
+    "read_file_bytes",
     "read_text_file",
 ]
 
@@ -100,12 +101,12 @@ def read_bounded(stream: BinaryIO, limit: int, what: str) -> bytes:
             raise InputLimitError(f"the {what} is larger than {limit} bytes (the limit); split it or shorten it")
 
 
-def read_text_file(path: str | os.PathLike[str], what: str, limit: int = MAX_FILE_BYTES) -> str:
-    """Read a UTF-8 text file of at most ``limit`` bytes (BOM dropped).
+def read_file_bytes(path: str | os.PathLike[str], what: str, limit: int = MAX_FILE_BYTES) -> bytes:
+    """The bytes of a regular file of at most ``limit`` bytes (counted while reading).
 
     Only regular files are read: a FIFO, a device or a folder raises :class:`InputLimitError`
     at once instead of blocking. Missing or unreadable files raise ``FileNotFoundError`` /
-    ``OSError`` for the caller to name; undecodable bytes raise ``UnicodeDecodeError``.
+    ``OSError`` for the caller to name.
     """
     p = Path(path)
     # open without blocking (a FIFO with no writer would block a plain open), then check the type
@@ -114,10 +115,15 @@ def read_text_file(path: str | os.PathLike[str], what: str, limit: int = MAX_FIL
         if not _is_regular(fd):
             raise InputLimitError(f"the {what} {p.name!r} is not a regular file (a pipe, device or folder)")
         with os.fdopen(fd, "rb", closefd=False) as stream:
-            data = read_bounded(stream, limit, what)
+            return read_bounded(stream, limit, what)
     finally:
         os.close(fd)
-    return data.decode("utf-8-sig")
+
+
+def read_text_file(path: str | os.PathLike[str], what: str, limit: int = MAX_FILE_BYTES) -> str:
+    """Read a UTF-8 text file of at most ``limit`` bytes (BOM dropped) with :func:`read_file_bytes`;
+    undecodable bytes raise ``UnicodeDecodeError``."""
+    return read_file_bytes(path, what, limit).decode("utf-8-sig")
 
 
 def _is_regular(fd: int) -> bool:

@@ -34,13 +34,28 @@ student's worked solutions) and the key table (student x question -> canonical a
   key/md/ key/html/ key/ipynb/      the answer key, one file per student
   key-table.md .html .ipynb         the key table of the class
   sheets.tex/.pdf key.tex/.pdf key-table.tex/.pdf
+                                    (each sheet on its own pages: it starts on an odd page, its
+                                    pages are numbered from 1)
+  pdf/ key/pdf/                     one PDF per student (with --format pdf)
   moodle.xml                        Moodle XML (one category per topic)
   qti.zip                           Canvas QTI 1.2 (a question bank per topic, a quiz of question groups)
 HTML pages carry their math as MathML: no script, no network, nothing to install.
+Student notebooks check each typed answer against salted digests of the key: a practice aid,
+not a secret (answers with few possible values are found from the digests by trying them in
+under a second). For a graded sheet use --no-self-check: the notebooks only collect answers.
+
+\b
+--roster reads class lists as spreadsheets and platforms save them: separated by ',', ';', tab
+or '|' (or Excel's 'sep=' line), in UTF-8, UTF-16 (Excel "Unicode text") or Windows-1252. The id
+is the first of: SIS User ID (Canvas gradebook export; 'Student' is the name, the Points
+Possible row is skipped), ID number (Moodle; first and last name joined), Student ID /
+student number / registration (R/exams), id; --roster-id-column chooses another column.
 
 \b
 Names, ids and titles are printed as text in every format, never run as LaTeX, Markdown, HTML,
-XML or Cloze; PDFs print every script (LuaLaTeX with the Noto fonts: 'make system-deps').
+XML or Cloze; PDFs print every character an installed Noto font has (LuaLaTeX; 'make system-deps'
+installs the Noto fonts and colour emoji), and a character no installed font has stops the run
+naming the student and the character, never an empty box.
 LuaLaTeX runs without shell escape, with openin_any=p and openout_any=p, in a temporary
 folder, for at most 30 s + 2 s per sheet; a sheet that fails names its student."""
 
@@ -80,12 +95,15 @@ EXIT_UNREADABLE = 3
 
 
 
-def _load_folders(folders: tuple[str, ...]) -> None:
-    from ..exercises.template import load_template_folder
+_REPLACE_HELP = "Let a template of --templates replace a built-in one of the same name (refused otherwise)."
+
+
+def _load_folders(folders: tuple[str, ...], replace: bool = False) -> None:
+    from ..exercises.registry import load_template_folder
 
     for folder in folders:
         try:
-            load_template_folder(folder)
+            load_template_folder(folder, replace)
         except PgsymError as err:
             raise fail(err) from None
 
@@ -112,7 +130,10 @@ class _NoBar:
 @click.option("--count", type=click.IntRange(1, 100_000), default=1, show_default=True,
               help="Number of anonymous forms (ignored with --roster).")
 @click.option("--seed", type=int, default=0, show_default=True, help="Master seed of the whole set.")
-@click.option("--roster", type=click.Path(dir_okay=False), help="CSV with an 'id' column (and optionally 'name').")
+@click.option("--roster", type=click.Path(dir_okay=False),
+              help="Class list: CSV (',' ';' tab), UTF-8/UTF-16/Windows-1252, or a Canvas/Moodle export.")
+@click.option("--roster-id-column", "roster_id_column", metavar="HEADER",
+              help="Take the student id from this column (default: SIS User ID, ID number, Student ID, id, ...).")
 @click.option("--format", "formats", default="md", show_default=True,
               help="Comma-separated: md,tex,pdf,html,ipynb,moodle,qti.")
 @click.option("--level", type=click.IntRange(1, 9), default=1, show_default=True,
@@ -123,15 +144,21 @@ class _NoBar:
               help="Deprecated spelling of --solutions-in-sheets.")
 @click.option("--key/--no-key", default=True, show_default=True,
               help="Also write the answer key and the key table.")
+@click.option("--self-check/--no-self-check", "self_check", default=True, show_default=True,
+              help="Student notebooks check each answer (practice: the digests can be brute-forced; "
+                   "use --no-self-check for a graded sheet).")
 @click.option("--out", "out", required=True, type=click.Path(file_okay=False), help="New (or empty) output folder.")
 @click.option("--templates", "template_dirs", multiple=True, type=click.Path(file_okay=False),
               help="Folder of instructor templates (*.py); may be repeated.")
+@click.option("--replace-templates", "replace_templates", is_flag=True, help=_REPLACE_HELP)
 @click.option("--mathjax", type=click.Path(file_okay=False), hidden=True,
               help="Deprecated and ignored: the HTML pages carry MathML and need no MathJax.")
 @click.option("--progress/--no-progress", default=None, help="Show a progress bar (default: for 50 sheets or more).")
-def sheet_command(topics: str, count: int, seed: int, roster: str | None, formats: str, level: int,
-                  solutions_in_sheets: bool, old_solutions: bool, key: bool, out: str, template_dirs: tuple[str, ...],
-                  mathjax: str | None, progress: bool | None) -> None:
+def sheet_command(topics: str, count: int, seed: int, roster: str | None, roster_id_column: str | None,
+                  formats: str, level: int,
+                  solutions_in_sheets: bool, old_solutions: bool, key: bool, self_check: bool, out: str,
+                  template_dirs: tuple[str, ...], replace_templates: bool, mathjax: str | None,
+                  progress: bool | None) -> None:
     """Generate per-student exercise sheets, their answer key and key table, in every requested format."""
     from ..atomic import Terminated, write_new_folder
     from ..exercises.output import parse_formats, render_all
@@ -144,20 +171,24 @@ def sheet_command(topics: str, count: int, seed: int, roster: str | None, format
         click.echo("warning: --mathjax is deprecated and ignored; the HTML sheets carry their math as MathML "
                    "and need no MathJax", err=True)
     solutions = solutions_in_sheets or old_solutions
-    _load_folders(template_dirs)
+    _load_folders(template_dirs, replace_templates)
     try:
         fmt = parse_formats(formats)
     except ValueError as err:
         raise click.BadParameter(str(err), param_hint="--format") from None
     try:
         pairs = parse_topics(topics, level)
-        students = read_roster(roster) if roster else anonymous_students(count)
+        notes: list[str] = []
+        students = read_roster(roster, roster_id_column, notes) if roster else anonymous_students(count)
+        for note in notes:
+            click.echo(f"note: {note}", err=True)
         show = progress if progress is not None else len(students) >= 50
         with _progress(len(students), "building sheets", show) as bar:
             sheets = build_sheets(pairs, students, seed, progress=bar.update)
         with _progress(len(students), "rendering", show) as bar:
             target = write_new_folder(out, lambda tmp: render_all(sheets, pairs, fmt, tmp, solutions,
-                                                                  progress=bar.update, key=key))
+                                                                  progress=bar.update, key=key,
+                                                                  self_check=self_check))
     except PgsymError as err:
         raise fail(err) from None
     except Terminated:
@@ -193,7 +224,7 @@ def check_command(ctx: click.Context, manifest: str, answers: str, out: str | No
 
     try:
         data = load_manifest_data(manifest)
-        rows, problems = read_answer_file(answers)
+        rows, problems = read_answer_file(answers, data.keys)
         report = grade_rows(data.keys, rows, data.mistakes)
     except PgsymError as err:
         raise fail(err) from None
@@ -253,11 +284,12 @@ def templates_group() -> None:
 
 @templates_group.command("list")
 @click.option("--templates", "template_dirs", multiple=True, type=click.Path(file_okay=False))
-def templates_list(template_dirs: tuple[str, ...]) -> None:
+@click.option("--replace-templates", "replace_templates", is_flag=True, help=_REPLACE_HELP)
+def templates_list(template_dirs: tuple[str, ...], replace_templates: bool) -> None:
     """List the known topics with their levels."""
-    from ..exercises.template import all_templates
+    from ..exercises.registry import all_templates
 
-    _load_folders(template_dirs)
+    _load_folders(template_dirs, replace_templates)
     for name, t in sorted(all_templates().items()):
         click.echo(f"{name:14s} levels {','.join(map(str, t.levels))}  {t.title}")
 
@@ -339,17 +371,19 @@ def templates_new(name: str, folder: str) -> None:
 @click.option("--seeds", type=click.IntRange(1, 1_000_000), default=10_000, show_default=True,
               help="Number of seeds (one instance each, cycling through the levels).")
 @click.option("--templates", "template_dirs", multiple=True, type=click.Path(file_okay=False))
+@click.option("--replace-templates", "replace_templates", is_flag=True, help=_REPLACE_HELP)
 @click.option("--progress/--no-progress", default=None, help="Show a progress bar (default: on a terminal).")
-def templates_check(name: str | None, seeds: int, template_dirs: tuple[str, ...], progress: bool | None) -> None:
+def templates_check(name: str | None, seeds: int, template_dirs: tuple[str, ...], replace_templates: bool,
+                    progress: bool | None) -> None:
     """Stress-test one template (or all): degenerate instances, independent re-verification, answer sizes,
     multiple-choice key spread.
 
     Example: pgsym templates check join --seeds 10000
     """
+    from ..exercises.registry import all_templates, get_template
     from ..exercises.stress import stress
-    from ..exercises.template import all_templates, get_template
 
-    _load_folders(template_dirs)
+    _load_folders(template_dirs, replace_templates)
     try:
         templates = [get_template(name)] if name else list(all_templates().values())
     except PgsymError as err:

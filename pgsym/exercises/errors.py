@@ -16,10 +16,12 @@ __all__ = [
     "AnswersFileError",
     "ManifestError",
     "MathJaxMissingError",
+    "MissingGlyphError",
     "RosterError",
     "TeXFailedError",
     "TeXMissingError",
     "TemplateError",
+    "TemplateNameError",
     "UnknownTopicError",
     "UnparsableAnswerError",
 ]
@@ -52,6 +54,10 @@ class TemplateError(PgsymError, ValueError):
     """A template produced an instance that fails its own checks (degenerate, wrong or too large)."""
 
 
+class TemplateNameError(TemplateError):
+    """An instructor template named like a built-in (or another loaded) template, without asking to replace it."""
+
+
 class TeXMissingError(PgsymError, RuntimeError):
     """LuaLaTeX is not installed, so no PDF can be made."""
 
@@ -62,3 +68,7 @@ class TeXFailedError(PgsymError, RuntimeError):
 
 class UnparsableAnswerError(PgsymError, ValueError):
     """A typed answer cannot be read as the expected kind of value."""
+
+
+class MissingGlyphError(TeXFailedError):
+    """A character of a sheet that no installed font has (it would print as an empty box)."""

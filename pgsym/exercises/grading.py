@@ -34,7 +34,8 @@ from .answers import matches, read_as
 from .errors import AnswersFileError, UnparsableAnswerError
 from .mistakes import recognise
 from .model import Answer, Mistake
-from .reading import csv_rows, read_user_text
+from .reading import read_table, separator_hint
+from .roster import NOT_QUESTION_HEADERS, find_id_column, normal_header
 
 MAX_CSV_BYTES = MAX_FILE_BYTES
 
@@ -63,24 +64,34 @@ class Result:
     feedback: str = ""
 
 
-def read_answer_file(path: str | Path) -> tuple[list[tuple[str, str, str]], list[str]]:
+def read_answer_file(path: str | Path, keys: Mapping[str, Mapping[str, Answer]] | None = None,
+                     ) -> tuple[list[tuple[str, str, str]], list[str]]:
     """Read an answers CSV (wide or long): the (student id, question label, answer text) triples, and
     the lines that are not valid CSV (one message each; the other lines are still read).
+
+    The file is read like a roster (:func:`pgsym.exercises.reading.read_table`: any separator, UTF-8,
+    UTF-16 or Windows-1252; the id column as :func:`pgsym.exercises.roster.find_id_column` finds it).
+    With the ``keys`` of the manifest, the questions are checked: a file none of whose question
+    columns (or, long, question cells) is a question of the manifest raises :class:`AnswersFileError`
+    naming the expected labels (never a class of silent zeros); a column matching no question is
+    reported in the messages. Columns platforms add (name, email, section, …) are not questions.
 
     The whole file is limited to :data:`pgsym.limits.MAX_FILE_BYTES`; single cells are not limited
     here (the grader refuses an overlong answer on its own, so it costs only that answer).
     """
     p = Path(path)
-    rows, problems = csv_rows(read_user_text(p, "answers file", AnswersFileError))
+    table = read_table(p, "answers file", AnswersFileError)
+    rows, problems = table.rows, table.problems
     messages = [f"line {line} of {p.name!r} is not valid CSV and was skipped: {reason}" for line, reason in problems]
     if not rows:
         raise AnswersFileError(f"the answers file {p.name!r} is empty")
     header = [h.strip() for h in rows[0][1]]
-    lower = [h.lower() for h in header]
-    id_col = next((lower.index(n) for n in ("id", "student_id", "student") if n in lower), None)
+    lower = [normal_header(h) for h in header]
+    id_col = find_id_column(header)
     if id_col is None:
-        raise AnswersFileError(f"the answers file {p.name!r} needs a header with an 'id' column; e.g.\n"
-                               "  id,1,2,3a,3b\n  s001,\"(1, -2, 0)\",4/3,B,8")
+        raise AnswersFileError(f"the answers file {p.name!r} needs a header with an 'id' column"
+                               f"{separator_hint(header)}; e.g.\n  id,1,2,3a,3b\n  s001,\"(1, -2, 0)\",4/3,B,8")
+    known = {label for answers in (keys or {}).values() for label in answers}
     out = []
     if "question" in lower and "answer" in lower:
         q, a = lower.index("question"), lower.index("answer")
@@ -89,14 +100,36 @@ def read_answer_file(path: str | Path) -> tuple[list[tuple[str, str, str]], list
                 out.append((row[id_col].strip(), row[q].strip(), row[a]))
             elif any(cell.strip() for cell in row):
                 messages.append(f"line {line} of {p.name!r} has fewer than {max(id_col, q, a) + 1} columns; skipped")
+        if keys is not None and out and not any(label in known for _, label, _ in out):
+            found = sorted({label for _, label, _ in out})
+            raise AnswersFileError(_no_question(p.name, "question cells", found, known))
         return out, messages
+    columns = [j for j, label in enumerate(header) if j != id_col and label and lower[j] not in NOT_QUESTION_HEADERS]
+    if keys is not None:
+        if not any(header[j] in known for j in columns):
+            raise AnswersFileError(_no_question(p.name, "columns", [header[j] for j in columns], known))
+        messages += [f"column {header[j]!r} of {p.name!r} is no question of the manifest and was not graded"
+                     for j in columns if header[j] not in known]
+        columns = [j for j in columns if header[j] in known]
     for _, row in rows[1:]:
         if len(row) <= id_col or not row[id_col].strip():
             continue
-        for j, label in enumerate(header):
-            if j != id_col and label and j < len(row):
-                out.append((row[id_col].strip(), label, row[j]))
+        for j in columns:
+            if j < len(row):
+                out.append((row[id_col].strip(), header[j], row[j]))
     return out, messages
+
+
+def _no_question(name: str, what: str, found: Sequence[str], known: set[str]) -> str:
+    def natural(label: str) -> tuple[int, str]:
+        digits = "".join(c for c in label if c.isdigit())
+        return (int(digits) if digits else 0, label)
+
+    expected = sorted(known, key=natural)
+    shown = ", ".join(repr(f[:20]) for f in list(found)[:12]) or "none"
+    return (f"the answers file {name!r} answers no question of the manifest: its {what} are {shown}, the "
+            f"questions are {', '.join(expected[:40])}{' …' if len(expected) > 40 else ''}; name the columns "
+            f"after the questions (e.g. id,{','.join(expected[:3])})")
 
 
 def read_answers(path: str | Path) -> list[tuple[str, str, str]]:
@@ -117,7 +150,8 @@ def grade_rows(keys: dict[str, dict[str, Answer]], rows: Iterable[tuple[str, str
 
     Every answer is graded on its own: an answer that cannot be read (or is longer than
     :data:`pgsym.limits.MAX_ANSWER_CHARS`) is marked ``unreadable`` and the others are still graded;
-    a question answered twice is reported and not graded.
+    a question answered twice with different text is reported and not graded (the same text twice is
+    one answer).
     """
     given: dict[str, dict[str, list[str]]] = {}
     unknown: dict[str, list[Result]] = {}
@@ -132,7 +166,8 @@ def grade_rows(keys: dict[str, dict[str, Answer]], rows: Iterable[tuple[str, str
         results = []
         typed = given.get(student, {})
         for label, expected in answers.items():
-            texts = [t for t in typed.get(label, []) if t.strip()]
+            # the same row twice (a copy pasted again) is one answer; different answers stay a conflict
+            texts = list(dict.fromkeys(t.strip() for t in typed.get(label, []) if t.strip()))
             if not texts:
                 results.append(Result(student, label, "", False, "no answer"))
             elif len(texts) > 1:

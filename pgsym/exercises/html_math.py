@@ -12,6 +12,20 @@ LaTeX source in ``<code>``.
 True
 >>> mathml(r"\\text{<img src=x>}", display=False)
 '<code class="tex">\\\\text{&lt;img src=x&gt;}</code>'
+
+The converter's output is then corrected where browsers would space or place a symbol unlike TeX
+(compared with MathJax 3's MathML for the same input, see ``tests/test_exercises_html_math.py``):
+
+- a sign that starts a term (after ``(``, a comma, a relation, another operator or at the start) is a
+  prefix operator, ``<mo form="prefix" lspace="0" rspace="0">−</mo>``: ``(−14, −8, 1)``, not ``( − 14, − 8, 1)``;
+- a prime is an operator in a superscript, ``<msup><mi>x</mi><mo>′</mo></msup>`` as MathJax writes it
+  (and as the MathML specification recommends), not an identifier in a nested row;
+- ``\\sim`` is the relation ``<mo>∼</mo>`` (U+223C), not the identifier ``~``; ``\\infty`` and
+  ``\\top`` are ordinary symbols ``<mi>``, without operator spacing.
+
+>>> m = mathml("(-1, 2)", display=False)
+>>> '<mo stretchy="false">(</mo><mo form="prefix" lspace="0" rspace="0">−</mo><mn>1</mn>' in m
+True
 """
 
 from __future__ import annotations
@@ -35,11 +49,57 @@ ATTRIBUTES = frozenset("""display mathvariant displaystyle scriptlevel stretchy 
     accent accentunder movablelimits largeop symmetric minsize maxsize notation class encoding""".split())
 
 
+ElementTree.register_namespace("", _NS[1:-1])  # MathML as the default namespace: <math xmlns=...>, no prefixes
+
+_SIGNS = frozenset("−-+±∓")
+_PRIMES = frozenset("′″‴")
+#: operators after which a sign starts a term (opening fences, separators, relations, other operators)
+_BEFORE_PREFIX = frozenset("([{⟨,;:=≠<>≤≥∼≃≅≡≈∝→↦⇒⇔∈∉⊂⊆−-+±∓×·⋅∘/")
+#: symbols the converter writes as the wrong token: text → (tag, text, attributes)
+_TOKENS = {("mi", "~"): ("mo", "∼", {}), ("mo", "∞"): ("mi", "∞", {}),
+           ("mo", "⊤"): ("mi", "⊤", {"mathvariant": "normal"})}
+
+
+def _tidy(root: ElementTree.Element) -> None:
+    """Correct the converter's tokens in place (see the module)."""
+    for element in root.iter():
+        tag = element.tag[len(_NS):] if isinstance(element.tag, str) else ""
+        key = (tag, (element.text or "").strip())
+        if key in _TOKENS:
+            new_tag, text, attributes = _TOKENS[key]
+            element.tag, element.text = _NS + new_tag, text
+            element.attrib.update(attributes)
+        elif tag == "mi" and key[1] in _PRIMES:
+            element.tag = _NS + "mo"
+    for element in root.iter():
+        children = list(element)
+        for i, child in enumerate(children):
+            tag = child.tag[len(_NS):]
+            if tag in ("msup", "msubsup") and len(child) >= 2:
+                script = child[-1]  # a prime alone in a row: the row goes, the prime stays
+                if script.tag == _NS + "mrow" and len(script) == 1 and (script[0].text or "").strip() in _PRIMES:
+                    child.remove(script)
+                    child.append(script[0])
+            if tag != "mo" or (child.text or "").strip() not in _SIGNS or child.get("form"):
+                continue
+            before = children[i - 1] if i else None
+            if before is None or (before.tag == _NS + "mo" and (before.text or "").strip() in _BEFORE_PREFIX
+                                  and before.get("form") != "postfix"
+                                  and (before.text or "").strip() not in ")]}⟩"):
+                child.set("form", "prefix")
+                child.set("lspace", "0")
+                child.set("rspace", "0")
+
+
 def _is_plain_mathml(markup: str) -> bool:
     try:
         root = ElementTree.fromstring(markup)
     except ElementTree.ParseError:
         return False
+    return _is_plain(root)
+
+
+def _is_plain(root: ElementTree.Element) -> bool:
     for element in root.iter():
         if not (isinstance(element.tag, str) and element.tag.startswith(_NS) and element.tag[len(_NS):] in ELEMENTS):
             return False
@@ -58,6 +118,11 @@ def mathml(tex: str, display: bool) -> str:
         markup = convert(tex, display="block" if display else "inline")
     except Exception:  # the converter's own errors have no common base class
         markup = ""
-    if markup and _is_plain_mathml(markup):
-        return markup
+    try:
+        root = ElementTree.fromstring(markup) if markup else None
+    except ElementTree.ParseError:
+        root = None
+    if root is not None and _is_plain(root):
+        _tidy(root)
+        return ElementTree.tostring(root, encoding="unicode", short_empty_elements=False)
     return f'<code class="tex">{html.escape(tex, quote=False)}</code>'

@@ -9,7 +9,9 @@ solutions) and the key table of the class (student × question → canonical ans
     key/md/ key/html/ key/ipynb/       the answer key, one file per student
     key-table.md .html .ipynb          the key table of the class
     sheets.tex key.tex key-table.tex   LaTeX (all students in one document each)
-    sheets.pdf key.pdf key-table.pdf   the same through LuaLaTeX (compiled side by side)
+    sheets.pdf key.pdf key-table.pdf   the same through LuaLaTeX (compiled side by side); each sheet starts
+                                       on an odd page and numbers its pages from 1
+    pdf/ key/pdf/                      one PDF per student, cut from sheets.pdf and key.pdf
     moodle.xml  qti.zip                Moodle XML and the Canvas QTI 1.2 package
 
 Everything is written into a temporary folder next to the target and moved into place only when
@@ -54,12 +56,15 @@ def parse_formats(spec: str) -> list[str]:
 
 def render_all(sheets: Sequence[Sheet], topics: Sequence[tuple[str, int]], formats: Sequence[str], folder: Path,
                solutions: bool = False, mathjax: str | Path | None = None,
-               progress: Callable[[int], None] | None = None, key: bool = True) -> list[Path]:
+               progress: Callable[[int], None] | None = None, key: bool = True,
+               self_check: bool = True) -> list[Path]:
     """Write the manifest and every format into ``folder`` (which must exist); the files written.
 
     ``solutions`` puts the worked solutions into the student sheets too (practice sheets); ``key``
     writes the answer key and the key table next to them. ``mathjax`` is ignored: the HTML pages
     carry their math as MathML and need no script (kept so that old callers still work).
+    ``self_check=False`` writes the student notebooks without the practice self-check
+    (:mod:`pgsym.exercises.render_ipynb`).
     """
     del mathjax  # the pages need no MathJax any more
     written = []
@@ -82,7 +87,9 @@ def render_all(sheets: Sequence[Sheet], topics: Sequence[tuple[str, int]], forma
                      if f in formats]
         for sheet in sheets:
             for fmt, renderer in per_sheet:
-                write(f"{fmt}/{sheet.file_stem}.{fmt}", renderer.render_sheet(sheet, solutions))
+                page = (render_ipynb.render_sheet(sheet, solutions, self_check) if fmt == "ipynb"
+                        else renderer.render_sheet(sheet, solutions))
+                write(f"{fmt}/{sheet.file_stem}.{fmt}", page)
                 if key:
                     keyed = (render_html.render_sheet(sheet, True, KEY_HEADING) if fmt == "html"
                              else renderer.render_sheet(sheet, True))
@@ -104,7 +111,11 @@ def render_all(sheets: Sequence[Sheet], topics: Sequence[tuple[str, int]], forma
         if "qti" in formats:
             write("qti.zip", render_qti.render_package(sheets, topics))
         for name, future in pdfs.items():
-            write(f"{name}.pdf", future.result())
+            pdf, each = future.result()
+            write(f"{name}.pdf", pdf)
+            folder_of = {"sheets": "pdf", "key": "key/pdf"}.get(name)
+            for sheet, one in zip(sheets, each, strict=False):
+                write(f"{folder_of}/{sheet.file_stem}.pdf", one)
     except BaseException:
         if pdfs:  # an error, Ctrl-C or SIGTERM: stop the TeX runs instead of waiting for them
             for future in pdfs.values():
@@ -118,11 +129,13 @@ def render_all(sheets: Sequence[Sheet], topics: Sequence[tuple[str, int]], forma
 
 
 def _start_pdfs(pool: ThreadPoolExecutor, sheets: Sequence[Sheet], solutions: bool,
-                key: bool) -> dict[str, Future[bytes]]:
-    """Submit the TeX runs (each a separate LuaLaTeX process, at most one per core at a time)."""
-    jobs: dict[str, Callable[[], bytes]] = {"sheets": lambda: render_tex.compile_sheets(sheets, solutions)}
+                key: bool) -> dict[str, Future[tuple[bytes, list[bytes]]]]:
+    """Submit the TeX runs (each a separate LuaLaTeX process, at most one per core at a time): the class
+    PDFs and, for sheets and key, one PDF per student cut from them."""
+    jobs: dict[str, Callable[[], tuple[bytes, list[bytes]]]] = {
+        "sheets": lambda: render_tex.compile_class_and_each(sheets, solutions)}
     if key:
-        jobs["key"] = lambda: render_tex.compile_sheets(sheets, True, KEY_HEADING)
-        jobs["key-table"] = lambda: render_tex.compile_pdf(key_table.render_tex(sheets, render_tex.preamble),
-                                                           render_tex.tex_time_limit(len(sheets)))
+        jobs["key"] = lambda: render_tex.compile_class_and_each(sheets, True, KEY_HEADING)
+        jobs["key-table"] = lambda: (render_tex.compile_pdf(key_table.render_tex(sheets, render_tex.preamble),
+                                                            render_tex.tex_time_limit(len(sheets))), [])
     return {name: pool.submit(job) for name, job in jobs.items()}

@@ -1,8 +1,12 @@
 """LaTeX renderer (one document with every sheet, one sheet per page group) and PDF through LuaLaTeX.
 
 LuaLaTeX with the Noto fonts typesets every name as it is (Latin, Greek, Cyrillic, Chinese, Japanese,
-Korean, Arabic, Hebrew, Devanagari, Thai, …): luaotfload falls back to the font of each script, and
-right-to-left runs are set right to left, so ``pdftotext`` gives every name back exactly.
+Korean, Arabic, Hebrew, Devanagari, Bengali, Tamil, Ethiopic, Khmer, emoji, … whatever an installed
+Noto font has): luaotfload falls back, glyph by glyph, to the fonts :mod:`~pgsym.exercises.tex_fonts`
+finds for the document's characters, and right-to-left runs are set right to left, so ``pdftotext``
+gives every name back exactly. A character no installed font has stops the PDF with
+:class:`~pgsym.exercises.errors.MissingGlyphError` naming the student and the character (checked
+before TeX runs, and in TeX's log for "Missing character"): never an empty box.
 
 User text never reaches TeX as code: names, ids and titles go through
 :func:`~pgsym.escaping.tex_escape`, exercise text through :func:`~pgsym.escaping.to_tex`
@@ -20,6 +24,7 @@ True
 from __future__ import annotations
 
 import os
+import re
 import shutil
 import signal
 import subprocess
@@ -30,25 +35,21 @@ from collections.abc import Sequence
 from pathlib import Path
 
 from ..escaping import one_line, tex_escape, to_tex
-from .errors import TeXFailedError, TeXMissingError
+from .errors import MissingGlyphError, TeXFailedError, TeXMissingError
 from .model import KIND_HINTS, Exercise, Sheet
-
-#: Fonts of the sheets (Debian: fonts-noto-core, fonts-noto-cjk): the main font covers Latin, Greek and
-#: Cyrillic; luaotfload falls back, glyph by glyph, to the font of the script for everything else.
-MAIN_FONT = "Noto Serif"
-
-#: (first, last code point) ranges of a script → its fallback font (luaotfload's name:features syntax).
-FALLBACKS: tuple[tuple[tuple[tuple[int, int], ...], str], ...] = (
-    (((0x1100, 0x11FF), (0x2E80, 0x9FFF), (0xA960, 0xA97F), (0xAC00, 0xD7FF), (0xF900, 0xFAFF), (0xFE30, 0xFE4F),
-      (0xFF00, 0xFFEF), (0x20000, 0x3FFFF)), "Noto Serif CJK SC:mode=harf;"),
-    (((0x0600, 0x06FF), (0x0750, 0x077F), (0x08A0, 0x08FF), (0xFB50, 0xFDFF), (0xFE70, 0xFEFF)),
-     "Noto Naskh Arabic:mode=harf;script=arab;"),
-    (((0x0590, 0x05FF), (0xFB1D, 0xFB4F)), "Noto Serif Hebrew:mode=harf;script=hebr;"),
-    (((0x0900, 0x097F), (0xA8E0, 0xA8FF)), "Noto Serif Devanagari:mode=harf;script=dev2;"),
-    (((0x0E00, 0x0E7F),), "Noto Serif Thai:mode=harf;"),
-    (((0x0530, 0x058F), (0xFB13, 0xFB17)), "Noto Serif Armenian:mode=harf;"),
-    (((0x10A0, 0x10FF), (0x1C90, 0x1CBF), (0x2D00, 0x2D2F)), "Noto Serif Georgian:mode=harf;"),
+from .tex_fonts import (
+    MAIN_FONT,
+    STATIC_FALLBACKS,
+    describe,
+    fallback_chain,
+    missing_characters,
+    needs_glyph,
+    package_hint,
 )
+
+#: Fallback fonts when fontconfig is not available (the chain is otherwise built from the installed
+#: Noto fonts, :mod:`pgsym.exercises.tex_fonts`).
+FALLBACKS = STATIC_FALLBACKS
 FALLBACK_FONTS = tuple(font for _, font in FALLBACKS)
 
 _PREAMBLE_REST = r"""% (no TeX ligatures: a name's -- << ,, `` prints as typed)
@@ -63,20 +64,27 @@ _PREAMBLE_REST = r"""% (no TeX ligatures: a name's -- << ,, `` prints as typed)
 % headings as ordinary paragraphs: a very long name or title breaks across lines and pages
 \newcommand{\sheettitle}[1]{\par{\raggedright\Large\bfseries #1\par}\nopagebreak\medskip}
 \newcommand{\exercisetitle}[1]{\par\bigskip{\raggedright\large\bfseries #1\par}\nopagebreak\smallskip}
+% each sheet on its own paper: it starts on an odd (right-hand) page of the class PDF (a blank page
+% after a sheet of odd length), its pages are numbered from 1, and the log tells where it starts and
+% ends (the per-student PDFs are cut there)
+\newcommand{\sheetend}{\clearpage
+  \ifnum\ReadonlyShipoutCounter>0 \typeout{pgsym-sheet-end=\the\ReadonlyShipoutCounter}\fi}
+\newcommand{\sheetstart}{\sheetend\ifodd\value{page}\else\null\thispagestyle{empty}\newpage\fi
+  \setcounter{page}{1}\typeout{pgsym-sheet-start=\the\numexpr\ReadonlyShipoutCounter+1\relax}}
+\AtEndDocument{\sheetend}
 """
 
 
 def fallback_fonts(text: str | None = None) -> list[str]:
-    """The fallback fonts ``text`` needs (all of them for ``None``): loading a font costs TeX time,
-    so a document loads only the scripts it uses.
+    """The fallback fonts ``text`` needs, preferred first (the fixed table for ``None``): loading a font
+    costs TeX time, so a document loads only those its characters use.
 
     >>> fallback_fonts("Ada"), [f.split(":")[0] for f in fallback_fonts("李雷 and محمد")]
     ([], ['Noto Serif CJK SC', 'Noto Naskh Arabic'])
     """
     if text is None:
         return list(FALLBACK_FONTS)
-    points = {ord(c) for c in text if ord(c) >= 0x0530}
-    return [font for ranges, font in FALLBACKS if any(lo <= p <= hi for p in points for lo, hi in ranges)]
+    return fallback_chain(text)[0]
 
 
 def preamble(text: str | None = None) -> str:
@@ -145,7 +153,7 @@ def _solution(ex: Exercise) -> list[str]:
 def render_sheet_body(sheet: Sheet, solutions: bool, heading: str = "Exercise sheet") -> str:
     """The LaTeX of one sheet (no preamble)."""
     who = _t(sheet.student_name or sheet.student_id)
-    lines = [r"\clearpage", rf"\sheettitle{{{_t(heading)}: {who}}}",
+    lines = [r"\sheetstart", rf"\sheettitle{{{_t(heading)}: {who}}}",
              rf"Student id: {_t(sheet.student_id)} \hfill Form id: \texttt{{{_t(sheet.form_id)}}}", "",
              "Give exact answers; homogeneous coordinates are accepted up to a nonzero scale.", ""]
     for ex in sheet.exercises:
@@ -234,7 +242,13 @@ def _kill_group(proc: subprocess.Popen[bytes], wait: bool = True) -> None:
 
 
 def compile_pdf(tex_source: str, timeout: float | None = None) -> bytes:
-    """Compile LaTeX source with LuaLaTeX in a temporary folder, confined as the module says; the PDF bytes.
+    """Compile LaTeX source with LuaLaTeX (see :func:`compile_pdf_and_log`); the PDF bytes."""
+    return compile_pdf_and_log(tex_source, timeout)[0]
+
+
+def compile_pdf_and_log(tex_source: str, timeout: float | None = None) -> tuple[bytes, str]:
+    """Compile LaTeX source with LuaLaTeX in a temporary folder, confined as the module says; the PDF bytes
+    and TeX's log.
 
     ``timeout`` defaults to :func:`tex_time_limit` of one sheet. Raises :class:`TeXMissingError` if TeX
     is not installed and :class:`TeXFailedError` if it fails or runs out of time.
@@ -260,7 +274,30 @@ def compile_pdf(tex_source: str, timeout: float | None = None) -> bytes:
             start = text.find("\n! ")  # TeX's first error message, with the lines that locate it
             excerpt = text[start + 1:start + 800] if start >= 0 else text[-800:]
             raise TeXFailedError(f"LuaLaTeX failed (exit {code}, {time.monotonic() - started:.1f} s):\n{excerpt}")
-        return (Path(tmp) / "sheets.pdf").read_bytes()
+        log = Path(tmp) / "sheets.log"
+        missing = missing_in_log(log.read_text(errors="replace") if log.exists() else output)
+        if missing:
+            raise MissingGlyphError(_no_font(missing))
+        return (Path(tmp) / "sheets.pdf").read_bytes(), log.read_text(errors="replace") if log.exists() else ""
+
+
+_MISSING = re.compile(r"Missing character: There is no .*? \(U\+([0-9A-Fa-f]{4,6})\)")
+
+
+def missing_in_log(log: str) -> list[str]:
+    """The characters TeX's log says no font of the document has (those that print nothing are left out).
+
+    >>> missing_in_log("Missing character: There is no \U00013000 (U+13000) in font NotoSerif:mode=node;")
+    ['\U00013000']
+    """
+    found = dict.fromkeys(chr(int(m.group(1), 16)) for m in _MISSING.finditer(log))
+    return [c for c in found if needs_glyph(c)]
+
+
+def _no_font(missing: Sequence[str]) -> str:
+    shown = ", ".join(describe(c) for c in missing[:5]) + (" …" if len(missing) > 5 else "")
+    return (f"no installed font has {shown}, so it would print as an empty box; install a font with it "
+            f"(Debian: {package_hint(missing[0])}) or write the text without it")
 
 
 def compile_sheets(sheets: Sequence[Sheet], solutions: bool = False, heading: str = "Exercise sheet") -> bytes:
@@ -269,8 +306,19 @@ def compile_sheets(sheets: Sequence[Sheet], solutions: bool = False, heading: st
     If TeX fails, the sheets are compiled again in halves, each under its own proportional limit,
     until the failing sheet is found: the :class:`TeXFailedError` then names its student.
     """
+    return compile_class_and_each(sheets, solutions, heading, each=False)[0]
+
+
+def compile_class_and_each(sheets: Sequence[Sheet], solutions: bool = False, heading: str = "Exercise sheet",
+                           each: bool = True) -> tuple[bytes, list[bytes]]:
+    """The PDF of the class (every sheet starting on an odd page, pages numbered per sheet) and, with
+    ``each``, one PDF per sheet cut from it (:func:`split_pdf`), in the order of ``sheets``."""
+    for sheet in sheets:  # before TeX: a character no installed font has names its student at once
+        missing = missing_characters(render_sheet_body(sheet, solutions, heading))
+        if missing:
+            raise _named(sheet, MissingGlyphError(_no_font(missing)))
     try:
-        return compile_pdf(render_document(sheets, solutions, heading), tex_time_limit(len(sheets)))
+        pdf, log = compile_pdf_and_log(render_document(sheets, solutions, heading), tex_time_limit(len(sheets)))
     except TeXFailedError as err:
         if len(sheets) > 1:
             culprit = _failing_sheet(list(sheets), solutions)
@@ -279,11 +327,56 @@ def compile_sheets(sheets: Sequence[Sheet], solutions: bool = False, heading: st
         elif sheets:
             raise _named(sheets[0], err) from None
         raise
+    if not each:
+        return pdf, []
+    ranges = sheet_pages(log)
+    if len(ranges) != len(sheets):
+        raise TeXFailedError(f"TeX's log names {len(ranges)} sheets, not {len(sheets)}: cannot cut the class PDF")
+    return pdf, split_pdf(pdf, ranges)
+
+
+_SHEET_MARK = re.compile(r"^pgsym-sheet-(start|end)=(\d+)$", re.MULTILINE)
+
+
+def sheet_pages(log: str) -> list[tuple[int, int]]:
+    """The (first, last) page of each sheet in the class PDF, from the marks ``\\sheetstart`` leaves in TeX's log.
+
+    >>> sheet_pages("pgsym-sheet-start=1\\npgsym-sheet-end=3\\npgsym-sheet-start=5\\npgsym-sheet-end=5\\n")
+    [(1, 3), (5, 5)]
+    """
+    starts = [int(n) for kind, n in _SHEET_MARK.findall(log) if kind == "start"]
+    ends = [int(n) for kind, n in _SHEET_MARK.findall(log) if kind == "end"]
+    return list(zip(starts, ends, strict=False))
+
+
+def split_pdf(pdf: bytes, ranges: Sequence[tuple[int, int]]) -> list[bytes]:
+    """Cut ``pdf`` into one PDF per page range with poppler's ``pdfseparate`` and ``pdfunite``."""
+    tools = {name: shutil.which(name) for name in ("pdfseparate", "pdfunite")}
+    if not all(tools.values()):
+        raise TeXMissingError("pdfseparate and pdfunite are needed to cut the class PDF into one PDF per student; "
+                              "on Debian/Ubuntu run: sudo apt-get install poppler-utils (or 'make system-deps')")
+    out = []
+    with tempfile.TemporaryDirectory(prefix="pgsym-split-") as tmp:
+        source = Path(tmp) / "class.pdf"
+        source.write_bytes(pdf)
+        for i, (first, last) in enumerate(ranges):
+            pattern = str(Path(tmp) / f"s{i}-%d.pdf")
+            subprocess.run([str(tools["pdfseparate"]), "-f", str(first), "-l", str(last), str(source), pattern],
+                           check=True, capture_output=True, timeout=120)
+            pages = [str(Path(tmp) / f"s{i}-{n}.pdf") for n in range(first, last + 1)]
+            target = Path(tmp) / f"sheet-{i}.pdf"
+            if len(pages) == 1:
+                target = Path(pages[0])
+            else:
+                subprocess.run([str(tools["pdfunite"]), *pages, str(target)], check=True, capture_output=True,
+                               timeout=120)
+            out.append(target.read_bytes())
+    return out
 
 
 def _named(sheet: Sheet, err: TeXFailedError) -> TeXFailedError:
     who = one_line(f"{sheet.student_id} ({sheet.student_name})" if sheet.student_name else sheet.student_id)
-    return TeXFailedError(f"the sheet of student {who[:120]} could not be typeset: {err}")
+    return type(err)(f"the sheet of student {who[:120]} could not be typeset: {err}")
 
 
 def _failing_sheet(sheets: list[Sheet], solutions: bool) -> tuple[Sheet, TeXFailedError] | None:

@@ -16,6 +16,7 @@ row per student with the feedback on each wrong answer. ``report.json`` holds th
 
 from __future__ import annotations
 
+import html
 import io
 import json
 import statistics
@@ -167,6 +168,7 @@ th, td { border: 1px solid #ccc; padding: 0.25em 0.6em; text-align: left; vertic
 th { background: #f2f2f2; } td.num { text-align: right; font-variant-numeric: tabular-nums; }
 code { font-family: ui-monospace, monospace; background: #f6f6f6; padding: 0 0.2em; }
 .plots { display: flex; flex-wrap: wrap; gap: 1em; } .plots svg { max-width: 100%; height: auto; }
+td.who { max-width: 18em; overflow-wrap: anywhere; }
 .wrong { color: #a40000; } .mistake { color: #5c3566; } details summary { cursor: pointer; }
 """
 
@@ -180,6 +182,18 @@ def _e(value: object) -> str:
 def _code(text: str) -> str:
     shown = text if len(text) <= _SHOWN else text[:_SHOWN] + "…"
     return f"<code>{_e(shown)}</code>" if shown else ""
+
+
+#: Characters of a name or id shown in the students' table; the whole text is in the cell's title.
+_SHOWN_NAME = 80
+
+
+def _who(text: str) -> str:
+    """A table cell for a name or id: at most :data:`_SHOWN_NAME` characters, wrapping anywhere (a name
+    without spaces must not widen the table), the full text in the title (shown on hover)."""
+    if len(text) <= _SHOWN_NAME:
+        return f'<td class="who">{_e(text)}</td>'
+    return f'<td class="who" title="{html.escape(one_line(text), quote=True)}">{_e(text[:_SHOWN_NAME])}…</td>'
 
 
 def _table(head: list[str], rows: list[str], cls: str) -> str:
@@ -224,7 +238,7 @@ def report_html(data: dict[str, Any], scores_svg: str, questions_svg: str, title
         codes = ", ".join(dict.fromkeys(a["mistake"] for a in wrong if a["mistake"]))
         head = f"{len(wrong)} not right" + (f' — <span class="mistake">{_e(codes)}</span>' if codes else "")
         detail = f"<details><summary>{head}</summary><ul>{items}</ul></details>" if wrong else ""
-        rows.append(f'<tr><td>{_e(st["id"])}</td><td>{_e(st["name"])}</td><td class="num">{st["right"]}</td>'
+        rows.append(f'<tr>{_who(st["id"])}{_who(st["name"])}<td class="num">{st["right"]}</td>'
                     f'<td class="num">{st["questions"]}</td><td class="num">{st["percent"]}</td><td>{detail}</td></tr>')
     parts.append(_table(["id", "name", "right", "questions", "%", "feedback"], rows, "students"))
     if data["unknown_students"]:

@@ -1,5 +1,6 @@
 """Building the sheets of a class: topics × students → :class:`~pgsym.exercises.model.Sheet` objects,
-the roster reader and the JSON manifest.
+and the JSON manifest (the roster reader lives in :mod:`pgsym.exercises.roster`; ``read_roster`` is
+still importable from here).
 
 >>> sheets = build_sheets(["join", "meet:2"], [("s1", "Ada"), ("s2", "Alan")], master_seed=7)
 >>> [len(s.exercises) for s in sheets], sheets[0].exercises[1].level
@@ -11,7 +12,6 @@ True
 from __future__ import annotations
 
 import json
-import unicodedata
 from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -20,12 +20,16 @@ from typing import Any
 from ..errors import PgsymError
 from ..escaping import one_line
 from ..limits import MAX_NAME_CHARS
-from .errors import ManifestError, RosterError, UnknownTopicError
+from .errors import ManifestError, TemplateError, UnknownTopicError
 from .mistakes import MAX_MISTAKES
 from .model import Answer, Mistake, Sheet
-from .reading import csv_rows, load_json, read_user_text
+from .reading import load_json
+from .registry import get_template
+from .roster import read_roster
 from .seeds import form_id, slot_keys, variant_seed
-from .template import TemplateError, get_template
+
+__all__ = ["ManifestData", "anonymous_students", "build_sheet", "build_sheets", "load_manifest",
+           "load_manifest_data", "manifest", "manifest_json", "parse_topics", "read_roster"]
 
 MANIFEST_VERSION = 1
 
@@ -107,56 +111,6 @@ def anonymous_students(count: int) -> list[tuple[str, str]]:
     """
     width = max(3, len(str(count)))
     return [(f"form-{i:0{width}d}", "") for i in range(1, count + 1)]
-
-
-def read_roster(path: str | Path) -> list[tuple[str, str]]:
-    """Read a roster CSV with a header: an ``id`` (or ``student_id``) column and optionally ``name``.
-
-    >>> import tempfile, os
-    >>> with tempfile.TemporaryDirectory() as d:
-    ...     p = os.path.join(d, "r.csv")
-    ...     _ = open(p, "w").write("id,name\\ns1,Ada\\ns2,Alan\\n")
-    ...     read_roster(p)
-    [('s1', 'Ada'), ('s2', 'Alan')]
-    """
-    p = Path(path)
-    rows, problems = csv_rows(read_user_text(p, "roster", RosterError))
-    if problems:
-        line, reason = problems[0]
-        raise RosterError(f"line {line} of the roster {p.name!r} is not valid CSV: {reason}")
-    if not rows:
-        raise RosterError(f"the roster {p.name!r} is empty; it needs a header row such as\n"
-                          "  id,name\n  s001,Ada Lovelace")
-    fields = [f.strip().lower() for f in rows[0][1]]
-    id_col = next((fields.index(f) for f in ("id", "student_id", "student") if f in fields), None)
-    if id_col is None:
-        shown = ", ".join(repr(one_line(f)[:40]) for f in fields[:10]) or "none"
-        raise RosterError(f"the roster {p.name!r} needs a header row with an 'id' column (found: {shown}); "
-                          "e.g.\n  id,name\n  s001,Ada Lovelace")
-    name_col = fields.index("name") if "name" in fields else None
-    students, seen = [], set()
-    for line, row in rows[1:]:
-        if not any(cell.strip() for cell in row):
-            continue  # a blank line
-        sid = row[id_col].strip() if id_col < len(row) else ""
-        if not sid:
-            raise RosterError(f"line {line} of {p.name!r} has no student id")
-        if len(sid) > 100:
-            raise RosterError(f"line {line} of {p.name!r}: the id is longer than 100 characters")
-        if any(unicodedata.category(c) == "Cc" for c in sid):
-            # an id names files and matches answers: a control character there is a broken roster
-            raise RosterError(f"line {line} of {p.name!r}: the id {one_line(sid)!r} contains a control character")
-        if sid in seen:
-            raise RosterError(f"line {line} of {p.name!r}: the id {one_line(sid)!r} appears twice")
-        seen.add(sid)
-        name = row[name_col].strip() if name_col is not None and name_col < len(row) else ""
-        if len(name) > MAX_NAME_CHARS:
-            raise RosterError(f"line {line} of {p.name!r}: the name is longer than {MAX_NAME_CHARS} characters "
-                              "(the limit)")
-        students.append((sid, name))
-    if not students:
-        raise RosterError(f"the roster {p.name!r} lists no students")
-    return students
 
 
 def manifest(sheets: Sequence[Sheet], topics: Sequence[tuple[str, int]]) -> dict[str, Any]:

@@ -6,9 +6,16 @@ template's independent :meth:`~pgsym.exercises.template.Template.verify` accepts
 answer with the pgsym core objects, not with the template's own solver), every answer round-trips
 through the answer parser and grades as right, every number in an answer stays within
 ``max_entry``, and multiple-choice keys are spread (no letter gets more than twice its fair share, and
-every letter appears when there are enough seeds).
+every letter appears when there are enough seeds), and the answers vary across seeds.
 
->>> from pgsym.exercises.template import get_template
+Variation: for each level and part, the *top share* is the fraction of instances whose answer is the
+most common one (answers compared as displayed, so equal up to the answer's own normal form). A
+student guessing that answer is right with that probability, and a class would share it: a part whose
+top share is at least :data:`MAX_TOP_SHARE` over at least :data:`MIN_VARIATION_INSTANCES` instances
+fails ("barely varies"). A fair coin over 20 instances reaches 0.8 with probability 2 · P(≥ 16 of 20)
+≈ 1.2 %, over 100 instances practically never.
+
+>>> from pgsym.exercises.registry import get_template
 >>> report = stress(get_template("join"), seeds=60)
 >>> report.ok, report.instances
 (True, 60)
@@ -23,7 +30,13 @@ from dataclasses import dataclass, field
 from ..errors import PgsymError
 from .answers import grade
 from .seeds import variant_seed
-from .template import Template
+from .template_base import Template
+
+#: Largest share of instances (of one level and part) that may have the same answer.
+MAX_TOP_SHARE = 0.8
+
+#: Instances of one level and part needed before the variation is judged.
+MIN_VARIATION_INSTANCES = 20
 
 
 @dataclass
@@ -35,6 +48,7 @@ class StressReport:
     failures: list[str] = field(default_factory=list)
     largest: int = 0
     keys: dict[str, Counter] = field(default_factory=dict)
+    top_shares: dict[str, tuple[float, int]] = field(default_factory=dict)
 
     @property
     def ok(self) -> bool:
@@ -57,6 +71,7 @@ def stress(template: Template, seeds: int = 10_000, master_seed: int = 0,
     report = StressReport(template.name)
     choice_counts: dict[str, Counter] = {}
     n_choices: dict[str, int] = {}
+    answers: dict[str, Counter] = {}
     for i in range(seeds):
         for level in (template.levels[i % len(template.levels)],):
             seed = variant_seed(master_seed, f"stress-{i}", f"{template.name}@{level}")
@@ -81,6 +96,8 @@ def stress(template: Template, seeds: int = 10_000, master_seed: int = 0,
                     report.failures.append(f"{where}: the key {ans.display()!r} cannot be read back: {err}")
                 if not right:
                     report.failures.append(f"{where}: the key {ans.display()!r} does not grade as right")
+                answers.setdefault(f"{part.label[len(str(ex.slot)):] or '-'}@level{level}", Counter())[
+                    ans.display()] += 1
                 if ans.kind == "choice":
                     key = f"{idx}@level{level}"
                     choice_counts.setdefault(key, Counter())[ans.value] += 1
@@ -96,4 +113,14 @@ def stress(template: Template, seeds: int = 10_000, master_seed: int = 0,
                 if share == 0 or share > 2 * total / n:
                     report.failures.append(f"keys of part {key} are not spread: {dict(counter)}")
                     break
+    for key, counter in sorted(answers.items()):
+        total = sum(counter.values())
+        top = counter.most_common(1)[0][1] / total
+        report.top_shares[key] = (top, len(counter))
+        if total >= MIN_VARIATION_INSTANCES and top >= MAX_TOP_SHARE:
+            part, _, level = key.partition("@")
+            report.failures.append(
+                f"part {part} at {level} barely varies: {len(counter)} distinct answer(s), the most common "
+                f"({counter.most_common(1)[0][0][:40]}) in {top:.0%} of {total} instances (at most "
+                f"{MAX_TOP_SHARE:.0%} allowed)")
     return report

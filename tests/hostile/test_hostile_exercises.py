@@ -267,7 +267,7 @@ def test_latex_source_escapes_payload(name, secret_file):
     payload = payloads(secret_file)[name]
     body = render_tex.render_sheet_body(hostile_sheet(name, payload), solutions=True)
     # the commands are the renderer's own and those of the template's allowed math: none from the payload
-    assert tex_commands(body) <= {"clearpage", "sheettitle", "texttt", "hfill", "exercisetitle", "textbf", "emph",
+    assert tex_commands(body) <= {"sheetstart", "sheettitle", "texttt", "hfill", "exercisetitle", "textbf", "emph",
                                   "begin", "end", "item", "Alph", "ifsolutions", "par", "fi", "tfrac",
                                   "textbackslash", "textasciitilde", "textasciicircum", "text"}
     assert "^^" not in body.replace(r"\textasciicircum{}", "")
@@ -491,8 +491,9 @@ def test_damaged_manifests_are_named(tmp_path, text):
 
 
 def test_roster_limits_and_bad_bytes(tmp_path):
-    (tmp_path / "r.csv").write_bytes(b"id,name\ns1,\xff\xfe\n")
-    with pytest.raises(RosterError, match="not UTF-8"):
+    # 0x81 is neither UTF-8 nor Windows-1252 (the fallback for other non-UTF-8 bytes)
+    (tmp_path / "r.csv").write_bytes(b"id,name\ns1,\xff\x81\n")
+    with pytest.raises(RosterError, match=r"neither UTF-8, UTF-16 nor Windows-1252.*CSV UTF-8"):
         read_roster(tmp_path / "r.csv")
     (tmp_path / "r.csv").write_text("id,name\ns1," + "x" * 200_000 + "\n")  # past the csv module's own limit
     with pytest.raises(RosterError, match="longer than 20000"):
@@ -544,10 +545,14 @@ def test_two_answers_to_one_question_are_reported(made):
     assert "s3 [1]: answered 2 times; not graded" in result.stderr
     assert result.stdout.splitlines()[-1] == "s3,1,2"
     assert "answered 2 times" in (base / "grades.csv").read_text()
-    # the same in the wide format: a label twice in the header
-    (base / "wide.csv").write_text(f'id,1,1,2\ns3,"{good}","{good}",{keys["s3"]["2"]["value"]}\n')
+    # the same in the wide format: a label twice in the header, with different answers
+    (base / "wide.csv").write_text(f'id,1,1,2\ns3,"{good}","(1, 2, 3)",{keys["s3"]["2"]["value"]}\n')
     result = check("--manifest", str(base / "out" / "manifest.json"), "--answers", str(base / "wide.csv"))
     assert result.exit_code == 3 and "s3 [1]: answered 2 times" in result.stderr
+    # the same answer twice (a row pasted again) is one answer, graded
+    (base / "wide.csv").write_text(f'id,1,1,2\ns3,"{good}","{good}",{keys["s3"]["2"]["value"]}\n')
+    result = check("--manifest", str(base / "out" / "manifest.json"), "--answers", str(base / "wide.csv"))
+    assert result.exit_code == 0 and result.stdout.splitlines()[-1] == "s3,2,2"
 
 
 def test_all_readable_exits_zero_and_help_documents_exit_codes(made):
@@ -574,8 +579,8 @@ def test_control_characters_never_reach_the_terminal(made):
 def test_answers_file_errors_are_named(tmp_path):
     with pytest.raises(AnswersFileError, match="does not exist"):
         read_answers(tmp_path / "missing.csv")
-    (tmp_path / "a.csv").write_bytes(b"id,1\ns1,\xff\n")
-    with pytest.raises(AnswersFileError, match="not UTF-8"):
+    (tmp_path / "a.csv").write_bytes(b"id,1\ns1,\x81\n")  # no encoding pgsym reads has byte 0x81 there
+    with pytest.raises(AnswersFileError, match="neither UTF-8, UTF-16 nor Windows-1252"):
         read_answers(tmp_path / "a.csv")
 
 

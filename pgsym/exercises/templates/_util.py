@@ -9,8 +9,22 @@ from fractions import Fraction
 from ...ring import det, matmul
 from ..model import matrix_latex, tuple_latex, vector_latex
 
-__all__ = ["det", "equation_latex", "homog_latex", "invertible", "matrix_latex", "nz", "primitive_dir", "tuple_latex",
-           "vector_latex"]
+__all__ = ["det", "equation_latex", "homog_latex", "integer_solution", "invertible", "matrix_latex", "nz",
+           "primitive_dir", "tuple_latex", "vector_latex"]
+
+
+def integer_solution(a: int, b: int, c: int) -> tuple[int, int]:
+    """A small integer solution (x, y) of a x + b y = c when gcd(a, b) = 1 (x is the least in [0, |b|]).
+
+    >>> integer_solution(3, 5, 1)  # 3·2 + 5·(-1) = 1
+    (2, -1)
+    >>> integer_solution(-1, 0, 4)  # b = 0 needs a = ±1: x = c·a = -4
+    (-4, 0)
+    """
+    if b == 0:
+        return c * a, 0  # a = ±1
+    x = next(x for x in range(abs(b) + 1) if (c - a * x) % b == 0)
+    return x, (c - a * x) // b
 
 
 def nz(rng: random.Random, bound: int) -> int:

@@ -8,7 +8,7 @@ from fractions import Fraction
 from ...projective_line import Point1, cross_ratio
 from ..mistakes import mistake
 from ..model import Answer, Exercise, Mistake
-from ..template import Draft, Template, check
+from ..template_base import Draft, Template, check
 from ._util import primitive_dir, tuple_latex
 
 

@@ -4,7 +4,7 @@ point, and the type of a conic from its points at infinity.
 An angle's cosine is usually a surd; it is asked as ``p√q`` (``p`` rational, ``q`` square-free), two parts
 that grade exactly.
 
->>> from pgsym.exercises.template import get_template
+>>> from pgsym.exercises.registry import get_template
 >>> ex = get_template("angle").generate(seed=1, level=2, slot=2)
 >>> [(p.label, p.answer.kind) for p in ex.parts]
 [('2a', 'scalar'), ('2b', 'integer')]
@@ -27,9 +27,8 @@ from ...projective_plane import Line, Point, incident
 from ...ring import cross, primitive_integers
 from ..mistakes import mistake
 from ..model import Answer, Exercise, Mistake
-from ..template import Draft, Template, check
-from ._util import equation_latex, matrix_latex, nz, primitive_dir, tuple_latex
-from .plane import _particular
+from ..template_base import Draft, Template, check
+from ._util import equation_latex, integer_solution, matrix_latex, nz, primitive_dir, tuple_latex
 
 # rotations by an angle with rational cosine and sine, (cos, sin, hypotenuse): Pythagorean triples
 _PYTHAGOREAN = ((3, 4, 5), (4, 3, 5), (5, 12, 13), (12, 5, 13), (8, 15, 17), (15, 8, 17))
@@ -84,7 +83,7 @@ def _line_through(p: tuple[int, int], q: tuple[int, int]) -> list[int]:
 def _two_points_on(line: list[int], rng: random.Random) -> tuple[tuple[int, int], tuple[int, int]]:
     """Two distinct integer points of an integer line ``a x + b y + c = 0`` with ``gcd(a, b) = 1``."""
     a, b, c = line
-    x0, y0 = _particular(a, b, -c)
+    x0, y0 = integer_solution(a, b, -c)
     s, t = rng.sample(range(-2, 3), 2)
     return (x0 + s * b, y0 - s * a), (x0 + t * b, y0 - t * a)
 
@@ -93,8 +92,8 @@ class AngleTemplate(Template):
     """The angle of two lines from the dual conic at infinity, cos θ = |lᵀC*∞m| / √((lᵀC*∞l)(mᵀC*∞m)).
 
     The answer is written ``p√q`` (``p`` rational, ``q`` square-free), so that a surd is graded exactly.
-    Level 1: the cosine is rational (the lines differ by a Pythagorean rotation); level 2: the cosine is a
-    surd; level 3: each line is given by two of its points.
+    Level 1: the cosine is rational (the lines differ by a Pythagorean rotation) and is the only answer;
+    level 2: the cosine is a surd; level 3: each line is given by two of its points.
     """
 
     name = "angle"
@@ -108,10 +107,12 @@ class AngleTemplate(Template):
         wrong3 = _surd(Fraction(_forms(l, m, 3)[0] ** 2, _forms(l, m, 3)[1] * _forms(l, m, 3)[2]))
         sine = _surd(1 - cos2)
         if index == 0:
-            out = [mistake("squared", Answer.scalar(cos2), "cos²θ: the square root was not taken"),
-                   mistake("absolute", Answer.scalar(wrong3[0]), "the third coordinates were used: the angle "
-                           "comes from C*∞ = diag(1, 1, 0), which ignores them"),
-                   mistake("sine", Answer.scalar(sine[0]), "sin θ computed instead of cos θ")]
+            one = len(exercise.parts) == 1  # level 1: the rational cosine itself; a surd is no candidate then
+            out = [mistake("squared", Answer.scalar(cos2), "cos²θ: the square root was not taken")]
+            out += [mistake("absolute", Answer.scalar(wrong3[0]), "the third coordinates were used: the angle "
+                            "comes from C*∞ = diag(1, 1, 0), which ignores them")] if not one or wrong3[1] == 1 else []
+            out += [mistake("sine", Answer.scalar(sine[0]), "sin θ computed instead of cos θ")
+                    ] if not one or sine[1] == 1 else []
         else:
             unreduced = cos2.numerator * cos2.denominator  # √(p/q) = √(pq)/q with pq not reduced
             out = [mistake("unsimplified", Answer.integer(unreduced), "the square factor was not taken out of the "
@@ -153,22 +154,26 @@ class AngleTemplate(Template):
             statement = (f"Let $\\mathbf{{l}} = {tuple_latex(l)}$ and $\\mathbf{{m}} = {tuple_latex(m)}$ be two "
                          f"lines {names}.")
             steps = []
-        statement += (" Let $\\theta$ be the angle between them, with $0 \\le \\theta \\le 90^\\circ$, and write "
-                      "$\\cos\\theta = p\\sqrt{q}$ with $p$ rational and $q$ a square-free positive integer "
-                      "($q = 1$ when the cosine is rational).")
+        statement += " Let $\\theta$ be the angle between them, with $0 \\le \\theta \\le 90^\\circ$"
+        # at level 1 the cosine is rational: asking for q as well would give every student q = 1
+        statement += (", a rational number here." if level == 1 else
+                      ", and write $\\cos\\theta = p\\sqrt{q}$ with $p$ rational and $q$ a square-free positive "
+                      "integer ($q = 1$ when the cosine is rational).")
         steps += [f"With $C^*_\\infty = \\operatorname{{diag}}(1, 1, 0)$: "
                   f"$\\mathbf{{l}}^\\top C^*_\\infty \\mathbf{{m}} = {lm}$, "
                   f"$\\mathbf{{l}}^\\top C^*_\\infty \\mathbf{{l}} = {ll}$, "
                   f"$\\mathbf{{m}}^\\top C^*_\\infty \\mathbf{{m}} = {mm}$.",
                   f"$\\cos\\theta = \\frac{{|{lm}|}}{{\\sqrt{{{ll} \\cdot {mm}}}}}$, so "
-                  f"$\\cos^2\\theta = {_tex(Fraction(lm * lm, ll * mm))}$ and $\\cos\\theta = {_surd_tex(a, b)}$: "
-                  f"$p = {_tex(a)}$, $q = {b}$."]
-        parts = [("Give $p$.", Answer.scalar(a), ()), ("Give $q$.", Answer.integer(b), ())]
+                  f"$\\cos^2\\theta = {_tex(Fraction(lm * lm, ll * mm))}$ and $\\cos\\theta = {_surd_tex(a, b)}$"
+                  + (f": $p = {_tex(a)}$, $q = {b}$." if level > 1 else ".")]
+        parts = ([("Give $\\cos\\theta$.", Answer.scalar(a), ())] if level == 1 else
+                 [("Give $p$.", Answer.scalar(a), ()), ("Give $q$.", Answer.integer(b), ())])
         return Draft(statement, parts, steps, {"l": list(l), "m": list(m)})
 
     def verify(self, exercise: Exercise) -> None:
         l, m = Line(*exercise.params["l"]), Line(*exercise.params["m"])
-        a, b = exercise.parts[0].answer.value, exercise.parts[1].answer.value
+        a = exercise.parts[0].answer.value
+        b = exercise.parts[1].answer.value if len(exercise.parts) > 1 else 1  # level 1: one rational cosine
         check(l != m and not is_zero(cos_squared_angle(l, m) - 1), "the lines are parallel")
         check(a >= 0 and b >= 1 and _squarefree_split(b)[0] == 1, "a√b is not in the normal form")
         cos = sympy.Abs(cos_angle(l, m))

@@ -9,8 +9,8 @@ from ...projective_plane import Line, Point, incident
 from ...ring import cross, primitive_integers
 from ..mistakes import mistake
 from ..model import Answer, Exercise, Mistake
-from ..template import Draft, Template, check
-from ._util import equation_latex, nz, primitive_dir, tuple_latex
+from ..template_base import Draft, Template, check
+from ._util import equation_latex, integer_solution, nz, primitive_dir, tuple_latex
 
 
 def _letter(i: int) -> str:
@@ -211,7 +211,7 @@ class IdealPointTemplate(Template):
         statement = f"Let $\\mathbf{{l}} = {tuple_latex(l1)}$ be a line (that is, ${equation_latex(l1)}$)."
         if level == 3:
             # two integer points on a x + b y + c2 = 0: a particular one needs gcd(a, b) = 1, true here
-            x0, y0 = _particular(a, b, -c2)
+            x0, y0 = integer_solution(a, b, -c2)
             p = [x0, y0]
             r = rng.randint(1, 2)
             q = [x0 + d[0] * r, y0 + d[1] * r]
@@ -232,14 +232,6 @@ class IdealPointTemplate(Template):
         check(l != m, "the two lines coincide")
         x = Point(*exercise.parts[0].answer.value)
         check(x.is_ideal and incident(x, l) and incident(x, m), "the answer is not the common ideal point")
-
-
-def _particular(a: int, b: int, c: int) -> tuple[int, int]:
-    """A small integer solution of a x + b y = c when gcd(a, b) = 1."""
-    if b == 0:
-        return c * a, 0  # a = ±1
-    x = next(x for x in range(abs(b) + 1) if (c - a * x) % b == 0)
-    return x, (c - a * x) // b
 
 
 class IncidenceTemplate(Template):

@@ -12,7 +12,7 @@ from ...ring import cross, primitive_integers
 from ...space import Plane, Point3, plane_through, point_on_planes
 from ..mistakes import mistake
 from ..model import Answer, Exercise, Mistake
-from ..template import Draft, Template, check
+from ..template_base import Draft, Template, check
 from ._util import nz, primitive_dir, tuple_latex
 
 

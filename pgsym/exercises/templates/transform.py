@@ -18,7 +18,7 @@ from ...ring import adjugate, det, matmul, matvec, primitive_integer_matrix, pri
 from ..errors import TemplateError
 from ..mistakes import mistake
 from ..model import Answer, Exercise, Mistake
-from ..template import Draft, Template, check
+from ..template_base import Draft, Template, check
 from ._util import invertible, matrix_latex, nz, primitive_dir, tuple_latex
 
 
