@@ -100,7 +100,7 @@ def rotated_axes(R):
 
 def posts_along_a_road(world, image):
     """Draw equally spaced posts on a road (``world`` positions) and their photographed positions."""
-    _fig, (top, bottom) = plt.subplots(2, 1, figsize=(7, 2.8), sharex=False)
+    _fig, (top, bottom) = plt.subplots(2, 1, figsize=(7, 2.8), sharex=False, dpi=150)
     for ax, xs, title in ((top, world, "on the road"), (bottom, image, "in the photograph")):
         ax.axhline(0, color="0.5", lw=1)
         for k, xk in enumerate(xs):

@@ -8,6 +8,10 @@ CoincidentPointsError:
     ...
 >>> dot((1, 2, 3), (4, 5, 6))
 32
+>>> say("a sentence that is longer than the page is broken at spaces", width=30)
+a sentence that is longer than
+    the page is broken at
+    spaces
 """
 
 from __future__ import annotations
@@ -45,3 +49,8 @@ def dot(u: Iterable[Any], v: Iterable[Any]) -> sp.Expr:
 def xy(P: Any) -> tuple[Any, ...]:
     """The exact Euclidean coordinates of a finite point of the plane."""
     return tuple(P.dehomogenize())
+
+
+def say(text: str, width: int = WIDTH) -> None:
+    """Print a long line of text wrapped to the page, continuation lines indented."""
+    print(textwrap.fill(text, width, subsequent_indent="    "))
