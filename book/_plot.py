@@ -63,7 +63,7 @@ def plane_with_normal(pi, centre):
     s = np.linspace(-1, 1, 2)
     a, b = np.meshgrid(s, s)
     pts = c[:, None, None] + u[:, None, None] * a + v[:, None, None] * b
-    fig = plt.figure(figsize=(4.6, 4))
+    fig = plt.figure(figsize=(4.6, 4), dpi=150)
     ax = fig.add_subplot(projection="3d")
     ax.plot_surface(*pts, alpha=0.3, color="tab:blue")
     unit = n / np.linalg.norm(n)
@@ -75,6 +75,7 @@ def plane_with_normal(pi, centre):
     ax.set_ylim(lo[1], hi[1])
     ax.set_zlim(lo[2], hi[2])
     ax.set_box_aspect((1, 1, 1))
+    _sparse_ticks(ax)
     ax.view_init(elev=20, azim=30)  # look at the plane obliquely, not edge-on
     plt.show()
     return float(n @ c + pi[3]), float(n @ u), float(n @ v)
@@ -83,7 +84,7 @@ def plane_with_normal(pi, centre):
 def rotated_axes(R):
     """Draw the axes e1, e2, e3 (grey) and their images r1, r2, r3, the columns of ``R``."""
     R = np.asarray(R, dtype=float)
-    fig = plt.figure(figsize=(4.6, 4))
+    fig = plt.figure(figsize=(4.6, 4), dpi=150)
     ax = fig.add_subplot(projection="3d")
     for i, color in enumerate(("tab:red", "tab:green", "tab:blue")):
         e = np.eye(3)[:, i]
@@ -94,8 +95,20 @@ def rotated_axes(R):
     for setter in (ax.set_xlim, ax.set_ylim, ax.set_zlim):
         setter(-1, 1)
     ax.set_box_aspect((1, 1, 1))
+    _sparse_ticks(ax)
     plt.show()
     return R
+
+
+def _sparse_ticks(ax, n=3):
+    """At most ``n`` ticks on each axis of a 3D plot, so that labels of neighbouring axes do not collide."""
+    from matplotlib.ticker import MaxNLocator
+
+    for axis in (ax.xaxis, ax.yaxis, ax.zaxis):
+        axis.set_major_locator(MaxNLocator(n))
+    ax.set_xlabel("$x$")
+    ax.set_ylabel("$y$")
+    ax.set_zlabel("$z$")
 
 
 def posts_along_a_road(world, image):
