@@ -91,11 +91,14 @@ def rotated_axes(R):
         ax.quiver(0, 0, 0, *e, color="0.6", lw=1)
         ax.text(*(1.08 * e), f"$e_{i + 1}$", color="0.4")
         ax.quiver(0, 0, 0, *R[:, i], color=color, lw=2)
-        ax.text(*(1.12 * R[:, i]), f"$r_{i + 1}$", color=color)
+        # the label of r_i a little further out, so that it stays readable when r_i = e_i
+        ax.text(*(1.3 * R[:, i]), f"$r_{i + 1}$", color=color)
     for setter in (ax.set_xlim, ax.set_ylim, ax.set_zlim):
-        setter(-1, 1)
+        setter(-1.3, 1.3)
     ax.set_box_aspect((1, 1, 1))
     _sparse_ticks(ax)
+    for set_ticks in (ax.set_xticks, ax.set_yticks, ax.set_zticks):
+        set_ticks([-1, 0, 1])
     plt.show()
     return R
 
