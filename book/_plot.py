@@ -63,7 +63,7 @@ def plane_with_normal(pi, centre):
     s = np.linspace(-1, 1, 2)
     a, b = np.meshgrid(s, s)
     pts = c[:, None, None] + u[:, None, None] * a + v[:, None, None] * b
-    fig = plt.figure(figsize=(4.6, 4))
+    fig = plt.figure(figsize=(4.6, 4), dpi=150)
     ax = fig.add_subplot(projection="3d")
     ax.plot_surface(*pts, alpha=0.3, color="tab:blue")
     unit = n / np.linalg.norm(n)
@@ -75,6 +75,7 @@ def plane_with_normal(pi, centre):
     ax.set_ylim(lo[1], hi[1])
     ax.set_zlim(lo[2], hi[2])
     ax.set_box_aspect((1, 1, 1))
+    _sparse_ticks(ax)
     ax.view_init(elev=20, azim=30)  # look at the plane obliquely, not edge-on
     plt.show()
     return float(n @ c + pi[3]), float(n @ u), float(n @ v)
@@ -83,19 +84,34 @@ def plane_with_normal(pi, centre):
 def rotated_axes(R):
     """Draw the axes e1, e2, e3 (grey) and their images r1, r2, r3, the columns of ``R``."""
     R = np.asarray(R, dtype=float)
-    fig = plt.figure(figsize=(4.6, 4))
+    fig = plt.figure(figsize=(4.6, 4), dpi=150)
     ax = fig.add_subplot(projection="3d")
     for i, color in enumerate(("tab:red", "tab:green", "tab:blue")):
         e = np.eye(3)[:, i]
         ax.quiver(0, 0, 0, *e, color="0.6", lw=1)
         ax.text(*(1.08 * e), f"$e_{i + 1}$", color="0.4")
         ax.quiver(0, 0, 0, *R[:, i], color=color, lw=2)
-        ax.text(*(1.12 * R[:, i]), f"$r_{i + 1}$", color=color)
+        # the label of r_i a little further out, so that it stays readable when r_i = e_i
+        ax.text(*(1.3 * R[:, i]), f"$r_{i + 1}$", color=color)
     for setter in (ax.set_xlim, ax.set_ylim, ax.set_zlim):
-        setter(-1, 1)
+        setter(-1.3, 1.3)
     ax.set_box_aspect((1, 1, 1))
+    _sparse_ticks(ax)
+    for set_ticks in (ax.set_xticks, ax.set_yticks, ax.set_zticks):
+        set_ticks([-1, 0, 1])
     plt.show()
     return R
+
+
+def _sparse_ticks(ax, n=3):
+    """At most ``n`` ticks on each axis of a 3D plot, so that labels of neighbouring axes do not collide."""
+    from matplotlib.ticker import MaxNLocator
+
+    for axis in (ax.xaxis, ax.yaxis, ax.zaxis):
+        axis.set_major_locator(MaxNLocator(n))
+    ax.set_xlabel("$x$")
+    ax.set_ylabel("$y$")
+    ax.set_zlabel("$z$")
 
 
 def posts_along_a_road(world, image):
