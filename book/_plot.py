@@ -150,7 +150,7 @@ def angle_and_laguerre(l, m, cr):
     right.axvline(0, color="0.8", lw=0.8)
     right.plot([0, cr.real], [0, cr.imag], color="tab:red", lw=1.5)
     right.plot(cr.real, cr.imag, "o", color="tab:red")
-    right.annotate(r"cr$(\mathbf{l}, \mathbf{m}; \mathbf{p}\vee\mathbf{I}, \mathbf{p}\vee\mathbf{J}) = e^{-2i\theta}$",
+    right.annotate(r"$(\mathbf{l}, \mathbf{m}; \mathbf{p}\vee\mathbf{I}, \mathbf{p}\vee\mathbf{J}) = e^{-2i\theta}$",
                    (cr.real, cr.imag), xytext=(-60, -22), textcoords="offset points", fontsize=9)
     arc2 = np.linspace(0, np.angle(cr), 50)
     right.plot(0.3 * np.cos(arc2), 0.3 * np.sin(arc2), color="black", lw=1)
