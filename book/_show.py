@@ -8,6 +8,9 @@ CoincidentPointsError:
     ...
 >>> dot((1, 2, 3), (4, 5, 6))
 32
+>>> say("a long verdict:", "x " * 40)
+a long verdict: x x x x x x x x x x x x x x x x x x x x x x x x x x x x
+    x x x x x x x x x x x x
 """
 
 from __future__ import annotations
@@ -35,6 +38,14 @@ def expect(error: type[BaseException], build: Callable[[], Any]) -> None:
         report(err)
         return
     raise AssertionError(f"expected {error.__name__}")
+
+
+def say(*parts: Any, sep: str = " ", indent: str = "    ", width: int = WIDTH) -> None:
+    """Print like ``print``, wrapped to the page, continuation lines indented (for verdicts, reasons,
+    lists of conditions)."""
+    text = sep.join(str(p) for p in parts)
+    for line in text.split("\n"):
+        print(textwrap.fill(line, width, subsequent_indent=indent, break_on_hyphens=False))
 
 
 def dot(u: Iterable[Any], v: Iterable[Any]) -> sp.Expr:
