@@ -274,3 +274,87 @@ def euclidean_figure(points, *, segments=(), lines=(), circles=(), highlight=(),
     ax.set_title(title, fontsize=9)
     plt.show()
     return radii
+
+
+def line_through(ax, p, q, extend=0.25, **kw):
+    """Draw the segment from ``p`` to ``q`` (pairs of floats), extended by a fraction of its length at
+    both ends; returns the two end points drawn."""
+    (x1, y1), (x2, y2) = p, q
+    dx, dy = x2 - x1, y2 - y1
+    ends = ((x1 - extend * dx, y1 - extend * dy), (x2 + extend * dx, y2 + extend * dy))
+    ax.plot([ends[0][0], ends[1][0]], [ends[0][1], ends[1][1]], **kw)
+    return ends
+
+
+def mark_points(ax, points, color="k", offsets=None):
+    """Mark named points (``name -> (x, y)``) with a dot and a label; ``offsets`` maps a name to the
+    label's offset in points (default ``(4, 4)``), to keep labels off the lines."""
+    offsets = offsets or {}
+    for name, (x, y) in points.items():
+        ax.plot([x], [y], "o", color=color, ms=4, zorder=3)
+        ax.annotate(name, (x, y), textcoords="offset points", xytext=offsets.get(name, (4, 4)), fontsize=9,
+                    color=color, bbox={"boxstyle": "round,pad=0.1", "fc": "white", "ec": "none", "alpha": 0.8},
+                    zorder=4)
+
+
+def radial_offsets(points, centre=(0.0, 0.0), distance=9):
+    """Label offsets pointing away from ``centre``: for points on a circle, the labels sit outside it."""
+    out = {}
+    for name, (x, y) in points.items():
+        d = np.hypot(x - centre[0], y - centre[1]) or 1.0
+        out[name] = (distance * (x - centre[0]) / d - 4, distance * (y - centre[1]) / d - 4)
+    return out
+
+
+def _span(ax, points, margin=0.0, **kw):
+    """Draw the segment covering collinear 3D ``points``, with ``margin`` (a fraction of its length)."""
+    pts = np.array(points, dtype=float)
+    d = pts[-1] - pts[0]
+    d = d / np.linalg.norm(d)
+    t = (pts - pts[0]) @ d
+    lo, hi = t.min(), t.max()
+    pad = margin * (hi - lo)
+    ends = np.array([pts[0] + (lo - pad) * d, pts[0] + (hi + pad) * d])
+    ax.plot(*ends.T, **kw)
+
+
+def desargues_in_space(triangles, centre, axis_points):
+    """Draw two triangles of space in perspective from ``centre`` (3D float triples), the rays from the centre
+    through corresponding vertices, the sides extended (dashed) to the points where corresponding sides meet,
+    and the axis through those points.
+
+    ``triangles`` is a pair of dicts ``name -> (x, y, z)`` listing corresponding vertices in the same order;
+    ``axis_points`` maps the names of the three meets (of sides 12, 23, 31) to their points. Returns the
+    number of rays drawn.
+    """
+    fig = plt.figure(figsize=(6.4, 5.6))
+    ax = fig.add_subplot(projection="3d")
+    colors = ("tab:blue", "tab:green")
+    meets = list(axis_points.values())
+    for tri, color in zip(triangles, colors, strict=True):
+        pts = list(tri.values())
+        ring = [*pts, pts[0]]
+        ax.plot(*zip(*ring, strict=True), color=color, lw=1.5)
+        for k in range(3):
+            _span(ax, [pts[k], pts[(k + 1) % 3], meets[k]], color=color, lw=0.7, ls="--")
+        for name, p in tri.items():
+            ax.scatter(*p, color=color, s=12)
+            ax.text(*p, f" {name}", color=color, fontsize=9)
+    rays = 0
+    for p, q in zip(triangles[0].values(), triangles[1].values(), strict=True):
+        _span(ax, [centre, p, q], color="0.5", lw=0.8, ls=":")
+        rays += 1
+    ax.scatter(*centre, color="black", s=14)
+    ax.text(*centre, " O", fontsize=9)
+    _span(ax, meets, margin=0.25, color="tab:red", lw=1.5)
+    for n, p in axis_points.items():
+        ax.scatter(*p, color="tab:red", s=14)
+        ax.text(*p, f" {n}", color="tab:red", fontsize=9)
+    ax.view_init(elev=18, azim=-35)
+    ax.set_xlabel("x")
+    ax.set_ylabel("y")
+    ax.set_zlabel("z")
+    ax.set_title("Desargues in space: the axis is the meet of the two planes", fontsize=9)
+    plt.tight_layout()
+    plt.show()
+    return rays
