@@ -235,12 +235,13 @@ def involution_on_a_line(vertices, pairs, y=0.0):
 
 
 def euclidean_figure(points, *, segments=(), lines=(), circles=(), highlight=(), title="", size=(5.6, 4.8),
-                     pad=1.0):
+                     pad=1.0, offsets=None):
     """Draw a Euclidean configuration from coordinates (exact numbers are converted to floats here).
 
     ``points`` maps names to ``(x, y)``; ``segments`` is a list of ``(P, Q, color)`` drawn between two named
     points, ``lines`` a list of ``(P, Q, color)`` drawn through them across the whole figure, ``circles`` a
-    list of ``(centre, r², color)`` with ``centre`` a name or ``(x, y)``. Points named in ``highlight`` are red.
+    list of ``(centre, r², color)`` with ``centre`` a name or ``(x, y)``. Points named in ``highlight`` are red;
+    ``offsets`` maps a name to its label's offset in points (default ``(4, 4)``), to keep labels apart.
     Returns the radii drawn, for the calling cell to compare with its exact squared radii.
     """
     pts = {n: np.array([float(c) for c in p]) for n, p in points.items()}
@@ -264,10 +265,12 @@ def euclidean_figure(points, *, segments=(), lines=(), circles=(), highlight=(),
         ax.plot(*np.array([a - 3 * span * d, a + 3 * span * d]).T, color=color, lw=1.0)
     for p, q, color in segments:
         ax.plot(*np.array([pts[p], pts[q]]).T, color=color, lw=1.2)
+    offsets = offsets or {}
     for name, p in pts.items():
         color = "tab:red" if name in highlight else "black"
-        ax.plot(*p, "o", color=color, ms=4)
-        ax.annotate(name, p, xytext=(4, 4), textcoords="offset points", fontsize=9, color=color)
+        ax.plot(*p, "o", color=color, ms=4, zorder=3)
+        ax.annotate(name, p, xytext=offsets.get(name, (4, 4)), textcoords="offset points", fontsize=9, color=color,
+                    bbox={"boxstyle": "round,pad=0.1", "fc": "white", "ec": "none", "alpha": 0.8}, zorder=4)
     ax.set_xlim(lo[0], hi[0])
     ax.set_ylim(lo[1], hi[1])
     ax.set_aspect("equal")
