@@ -166,7 +166,7 @@ def angle_and_laguerre(l, m, cr):
     right.axvline(0, color="0.8", lw=0.8)
     right.plot([0, cr.real], [0, cr.imag], color="tab:red", lw=1.5)
     right.plot(cr.real, cr.imag, "o", color="tab:red")
-    right.annotate(r"cr$(\mathbf{l}, \mathbf{m}; \mathbf{p}\vee\mathbf{I}, \mathbf{p}\vee\mathbf{J}) = e^{-2i\theta}$",
+    right.annotate(r"$(\mathbf{l}, \mathbf{m}; \mathbf{p}\vee\mathbf{I}, \mathbf{p}\vee\mathbf{J}) = e^{-2i\theta}$",
                    (cr.real, cr.imag), xytext=(-60, -22), textcoords="offset points", fontsize=9)
     arc2 = np.linspace(0, np.angle(cr), 50)
     right.plot(0.3 * np.cos(arc2), 0.3 * np.sin(arc2), color="black", lw=1)
@@ -251,12 +251,13 @@ def involution_on_a_line(vertices, pairs, y=0.0):
 
 
 def euclidean_figure(points, *, segments=(), lines=(), circles=(), highlight=(), title="", size=(5.6, 4.8),
-                     pad=1.0):
+                     pad=1.0, offsets=None):
     """Draw a Euclidean configuration from coordinates (exact numbers are converted to floats here).
 
     ``points`` maps names to ``(x, y)``; ``segments`` is a list of ``(P, Q, color)`` drawn between two named
     points, ``lines`` a list of ``(P, Q, color)`` drawn through them across the whole figure, ``circles`` a
-    list of ``(centre, r², color)`` with ``centre`` a name or ``(x, y)``. Points named in ``highlight`` are red.
+    list of ``(centre, r², color)`` with ``centre`` a name or ``(x, y)``. Points named in ``highlight`` are red;
+    ``offsets`` maps a name to its label's offset in points (default ``(4, 4)``), to keep labels apart.
     Returns the radii drawn, for the calling cell to compare with its exact squared radii.
     """
     pts = {n: np.array([float(c) for c in p]) for n, p in points.items()}
@@ -280,13 +281,99 @@ def euclidean_figure(points, *, segments=(), lines=(), circles=(), highlight=(),
         ax.plot(*np.array([a - 3 * span * d, a + 3 * span * d]).T, color=color, lw=1.0)
     for p, q, color in segments:
         ax.plot(*np.array([pts[p], pts[q]]).T, color=color, lw=1.2)
+    offsets = offsets or {}
     for name, p in pts.items():
         color = "tab:red" if name in highlight else "black"
-        ax.plot(*p, "o", color=color, ms=4)
-        ax.annotate(name, p, xytext=(4, 4), textcoords="offset points", fontsize=9, color=color)
+        ax.plot(*p, "o", color=color, ms=4, zorder=3)
+        ax.annotate(name, p, xytext=offsets.get(name, (4, 4)), textcoords="offset points", fontsize=9, color=color,
+                    bbox={"boxstyle": "round,pad=0.1", "fc": "white", "ec": "none", "alpha": 0.8}, zorder=4)
     ax.set_xlim(lo[0], hi[0])
     ax.set_ylim(lo[1], hi[1])
     ax.set_aspect("equal")
     ax.set_title(title, fontsize=9)
     plt.show()
     return radii
+
+
+def line_through(ax, p, q, extend=0.25, **kw):
+    """Draw the segment from ``p`` to ``q`` (pairs of floats), extended by a fraction of its length at
+    both ends; returns the two end points drawn."""
+    (x1, y1), (x2, y2) = p, q
+    dx, dy = x2 - x1, y2 - y1
+    ends = ((x1 - extend * dx, y1 - extend * dy), (x2 + extend * dx, y2 + extend * dy))
+    ax.plot([ends[0][0], ends[1][0]], [ends[0][1], ends[1][1]], **kw)
+    return ends
+
+
+def mark_points(ax, points, color="k", offsets=None):
+    """Mark named points (``name -> (x, y)``) with a dot and a label; ``offsets`` maps a name to the
+    label's offset in points (default ``(4, 4)``), to keep labels off the lines."""
+    offsets = offsets or {}
+    for name, (x, y) in points.items():
+        ax.plot([x], [y], "o", color=color, ms=4, zorder=3)
+        ax.annotate(name, (x, y), textcoords="offset points", xytext=offsets.get(name, (4, 4)), fontsize=9,
+                    color=color, bbox={"boxstyle": "round,pad=0.1", "fc": "white", "ec": "none", "alpha": 0.8},
+                    zorder=4)
+
+
+def radial_offsets(points, centre=(0.0, 0.0), distance=9):
+    """Label offsets pointing away from ``centre``: for points on a circle, the labels sit outside it."""
+    out = {}
+    for name, (x, y) in points.items():
+        d = np.hypot(x - centre[0], y - centre[1]) or 1.0
+        out[name] = (distance * (x - centre[0]) / d - 4, distance * (y - centre[1]) / d - 4)
+    return out
+
+
+def _span(ax, points, margin=0.0, **kw):
+    """Draw the segment covering collinear 3D ``points``, with ``margin`` (a fraction of its length)."""
+    pts = np.array(points, dtype=float)
+    d = pts[-1] - pts[0]
+    d = d / np.linalg.norm(d)
+    t = (pts - pts[0]) @ d
+    lo, hi = t.min(), t.max()
+    pad = margin * (hi - lo)
+    ends = np.array([pts[0] + (lo - pad) * d, pts[0] + (hi + pad) * d])
+    ax.plot(*ends.T, **kw)
+
+
+def desargues_in_space(triangles, centre, axis_points):
+    """Draw two triangles of space in perspective from ``centre`` (3D float triples), the rays from the centre
+    through corresponding vertices, the sides extended (dashed) to the points where corresponding sides meet,
+    and the axis through those points.
+
+    ``triangles`` is a pair of dicts ``name -> (x, y, z)`` listing corresponding vertices in the same order;
+    ``axis_points`` maps the names of the three meets (of sides 12, 23, 31) to their points. Returns the
+    number of rays drawn.
+    """
+    fig = plt.figure(figsize=(6.4, 5.6))
+    ax = fig.add_subplot(projection="3d")
+    colors = ("tab:blue", "tab:green")
+    meets = list(axis_points.values())
+    for tri, color in zip(triangles, colors, strict=True):
+        pts = list(tri.values())
+        ring = [*pts, pts[0]]
+        ax.plot(*zip(*ring, strict=True), color=color, lw=1.5)
+        for k in range(3):
+            _span(ax, [pts[k], pts[(k + 1) % 3], meets[k]], color=color, lw=0.7, ls="--")
+        for name, p in tri.items():
+            ax.scatter(*p, color=color, s=12)
+            ax.text(*p, f" {name}", color=color, fontsize=9)
+    rays = 0
+    for p, q in zip(triangles[0].values(), triangles[1].values(), strict=True):
+        _span(ax, [centre, p, q], color="0.5", lw=0.8, ls=":")
+        rays += 1
+    ax.scatter(*centre, color="black", s=14)
+    ax.text(*centre, " O", fontsize=9)
+    _span(ax, meets, margin=0.25, color="tab:red", lw=1.5)
+    for n, p in axis_points.items():
+        ax.scatter(*p, color="tab:red", s=14)
+        ax.text(*p, f" {n}", color="tab:red", fontsize=9)
+    ax.view_init(elev=18, azim=-35)
+    ax.set_xlabel("x")
+    ax.set_ylabel("y")
+    ax.set_zlabel("z")
+    ax.set_title("Desargues in space: the axis is the meet of the two planes", fontsize=9)
+    plt.tight_layout()
+    plt.show()
+    return rays

@@ -8,10 +8,9 @@ CoincidentPointsError:
     ...
 >>> dot((1, 2, 3), (4, 5, 6))
 32
->>> say("a sentence that is longer than the page is broken at spaces", width=30)
-a sentence that is longer than
-    the page is broken at
-    spaces
+>>> say("a long verdict:", "x " * 40)
+a long verdict: x x x x x x x x x x x x x x x x x x x x x x x x x x x x
+    x x x x x x x x x x x x
 """
 
 from __future__ import annotations
@@ -41,6 +40,14 @@ def expect(error: type[BaseException], build: Callable[[], Any]) -> None:
     raise AssertionError(f"expected {error.__name__}")
 
 
+def say(*parts: Any, sep: str = " ", indent: str = "    ", width: int = WIDTH) -> None:
+    """Print like ``print``, wrapped to the page, continuation lines indented (for verdicts, reasons,
+    lists of conditions)."""
+    text = sep.join(str(p) for p in parts)
+    for line in text.split("\n"):
+        print(textwrap.fill(line, width, subsequent_indent=indent, break_on_hyphens=False))
+
+
 def dot(u: Iterable[Any], v: Iterable[Any]) -> sp.Expr:
     """The expanded dot product of two coordinate vectors (points, lines, planes or tuples)."""
     return sp.expand(sum(a * b for a, b in zip(u, v, strict=True)))
@@ -49,8 +56,3 @@ def dot(u: Iterable[Any], v: Iterable[Any]) -> sp.Expr:
 def xy(P: Any) -> tuple[Any, ...]:
     """The exact Euclidean coordinates of a finite point of the plane."""
     return tuple(P.dehomogenize())
-
-
-def say(text: str, width: int = WIDTH) -> None:
-    """Print a long line of text wrapped to the page, continuation lines indented."""
-    print(textwrap.fill(text, width, subsequent_indent="    "))
