@@ -14,6 +14,7 @@ from ..errors import PgsymError
 
 __all__ = [
     "AnswersFileError",
+    "LmsReportError",
     "ManifestError",
     "MathJaxMissingError",
     "RosterError",
@@ -62,3 +63,8 @@ class TeXFailedError(PgsymError, RuntimeError):
 
 class UnparsableAnswerError(PgsymError, ValueError):
     """A typed answer cannot be read as the expected kind of value."""
+
+
+class LmsReportError(AnswersFileError):
+    """A Canvas or Moodle quiz report that cannot be graded: no question of the report carries a pgsym
+    variant id, a variant the manifest does not know, or a report of neither platform."""
