@@ -62,9 +62,10 @@ live: $(LIVE_BUILT)  ## build the live cells' assets (Pyodide, wheels, editor bu
 # Debian packages: chromium for the browser test, TeX for the PDF exercise sheets, pdftotext to read them back.
 # The sheets are typeset by LuaLaTeX with the Noto fonts, so every script prints (Latin, Greek, Cyrillic,
 # CJK, Arabic, Hebrew, Devanagari, Thai, ...): texlive-luatex, fonts-noto-core and fonts-noto-cjk.
+# Maxima runs the potential response trees of the STACK export in the tests (the CAS behind Moodle's STACK).
 APT_PACKAGES := chromium texlive-latex-extra texlive-fonts-recommended tex-gyre latexmk lmodern poppler-utils \
-                texlive-luatex fonts-noto-core fonts-noto-cjk
-system-deps:  ## install Debian's chromium and TeX (when root), or say how
+                texlive-luatex fonts-noto-core fonts-noto-cjk maxima
+system-deps:  ## install Debian's chromium, TeX and Maxima (when root), or say how
 	@missing=""; \
 	command -v chromium >/dev/null || missing="$$missing chromium"; \
 	command -v pdflatex >/dev/null && command -v latexmk >/dev/null || missing="$$missing tex"; \
@@ -72,6 +73,7 @@ system-deps:  ## install Debian's chromium and TeX (when root), or say how
 	fc-list | grep -q 'Noto Serif CJK SC' || missing="$$missing fonts-noto-cjk"; \
 	fc-list | grep -q 'Noto Naskh Arabic' || missing="$$missing fonts-noto-core"; \
 	command -v pdftotext >/dev/null || missing="$$missing poppler-utils"; \
+	command -v maxima >/dev/null || missing="$$missing maxima"; \
 	if [ -n "$$missing" ]; then \
 	  if [ "$$(id -u)" = 0 ] && command -v apt-get >/dev/null; then \
 	    echo "installing Debian packages for:$$missing"; \

@@ -114,7 +114,10 @@ class _NoBar:
 @click.option("--seed", type=int, default=0, show_default=True, help="Master seed of the whole set.")
 @click.option("--roster", type=click.Path(dir_okay=False), help="CSV with an 'id' column (and optionally 'name').")
 @click.option("--format", "formats", default="md", show_default=True,
-              help="Comma-separated: md,tex,pdf,html,ipynb,moodle,qti.")
+              help="Comma-separated: md,tex,pdf,html,ipynb,moodle,stack,qti.")
+@click.option("--points", "points_spec", default="", metavar="TOPIC=P[+P...],...",
+              help="Points of each part, e.g. 'join=2,classify=1+3,default=1' (default: a template's own "
+                   "points, else 1 per part); every output and gradebook uses them.")
 @click.option("--level", type=click.IntRange(1, 9), default=1, show_default=True,
               help="Level of topics given without one.")
 @click.option("--solutions-in-sheets", "solutions_in_sheets", is_flag=True,
@@ -129,12 +132,13 @@ class _NoBar:
 @click.option("--mathjax", type=click.Path(file_okay=False), hidden=True,
               help="Deprecated and ignored: the HTML pages carry MathML and need no MathJax.")
 @click.option("--progress/--no-progress", default=None, help="Show a progress bar (default: for 50 sheets or more).")
-def sheet_command(topics: str, count: int, seed: int, roster: str | None, formats: str, level: int,
-                  solutions_in_sheets: bool, old_solutions: bool, key: bool, out: str, template_dirs: tuple[str, ...],
-                  mathjax: str | None, progress: bool | None) -> None:
+def sheet_command(topics: str, count: int, seed: int, roster: str | None, formats: str, points_spec: str,
+                  level: int, solutions_in_sheets: bool, old_solutions: bool, key: bool, out: str,
+                  template_dirs: tuple[str, ...], mathjax: str | None, progress: bool | None) -> None:
     """Generate per-student exercise sheets, their answer key and key table, in every requested format."""
     from ..atomic import Terminated, write_new_folder
     from ..exercises.output import parse_formats, render_all
+    from ..exercises.points import parse_points
     from ..exercises.sheets import anonymous_students, build_sheets, parse_topics, read_roster
 
     if old_solutions:
@@ -151,10 +155,11 @@ def sheet_command(topics: str, count: int, seed: int, roster: str | None, format
         raise click.BadParameter(str(err), param_hint="--format") from None
     try:
         pairs = parse_topics(topics, level)
+        points = parse_points(points_spec)
         students = read_roster(roster) if roster else anonymous_students(count)
         show = progress if progress is not None else len(students) >= 50
         with _progress(len(students), "building sheets", show) as bar:
-            sheets = build_sheets(pairs, students, seed, progress=bar.update)
+            sheets = build_sheets(pairs, students, seed, progress=bar.update, points=points)
         with _progress(len(students), "rendering", show) as bar:
             target = write_new_folder(out, lambda tmp: render_all(sheets, pairs, fmt, tmp, solutions,
                                                                   progress=bar.update, key=key))
@@ -171,33 +176,54 @@ def sheet_command(topics: str, count: int, seed: int, roster: str | None, format
 @click.command("check", epilog=_EPILOG_CHECK)
 @click.option("--manifest", required=True, type=click.Path(dir_okay=False),
               help="manifest.json written by 'pgsym sheet'.")
-@click.option("--answers", required=True, type=click.Path(dir_okay=False), help="CSV of typed answers.")
+@click.option("--answers", required=True, type=click.Path(dir_okay=False),
+              help="A pgsym answers CSV, Canvas's Student Analysis CSV or Moodle's Responses CSV (detected).")
 @click.option("--out", type=click.Path(dir_okay=False),
               help="Also write every graded answer, with the mistake recognised and its feedback, to this CSV.")
 @click.option("--report", "report_dir", type=click.Path(file_okay=False),
               help="Write a grade report (index.html, report.json, SVG plots) into this new or empty folder.")
+@click.option("--feedback", "feedback_dir", type=click.Path(file_okay=False),
+              help="Write one feedback page per student (answers, verdicts, mistakes, worked solutions) into "
+                   "this new or empty folder.")
 @click.option("--canvas", type=click.Path(dir_okay=False), help="Write a Canvas gradebook CSV to import.")
 @click.option("--canvas-title", default="pgsym exercises", show_default=True,
-              help="Assignment title of the Canvas column.")
+              help="Assignment title of the Canvas (and Moodle) grade column.")
 @click.option("--canvas-id", type=click.IntRange(1), help="Canvas id of an existing assignment (column 'Title (id)').")
+@click.option("--moodle-grades", type=click.Path(dir_okay=False),
+              help="Write a CSV for Moodle's gradebook import (Grades > Import > CSV file).")
 @click.option("--details", is_flag=True, help="Print every wrong or unreadable answer.")
 @click.pass_context
 def check_command(ctx: click.Context, manifest: str, answers: str, out: str | None, report_dir: str | None,
-                  canvas: str | None, canvas_title: str, canvas_id: int | None, details: bool) -> None:
+                  feedback_dir: str | None, canvas: str | None, canvas_title: str, canvas_id: int | None,
+                  moodle_grades: str | None, details: bool) -> None:
     """Grade the answers of every student against the manifest, naming the common mistakes."""
     from ..atomic import Terminated, write_new_folder
     from ..csv_cells import csv_text
     from ..escaping import clean
-    from ..exercises.grading import grade_rows, read_answer_file, results_csv, summary
+    from ..exercises.grading import grade_rows, read_answer_file, results_csv, score_summary
+    from ..exercises.lms import grade_lms, read_lms_report
+    from ..exercises.points import points_text
+    from ..exercises.roundtrip import Graded, own_variants, people_of_manifest
     from ..exercises.sheets import load_manifest_data
 
     try:
         data = load_manifest_data(manifest)
-        rows, problems = read_answer_file(answers)
-        report = grade_rows(data.keys, rows, data.mistakes)
+        lms = read_lms_report(answers, {v: labels for v, (_, labels) in data.variants.items()})
+        if lms is None:
+            rows, problems = read_answer_file(answers)
+            report = grade_rows(data.keys, rows, data.mistakes, data.points)
+            graded = Graded(report, people_of_manifest(data), own_variants(data), list(problems), "pgsym")
+        else:
+            result = grade_lms(lms, data.keys, data.variants, data.mistakes, data.points)
+            graded = Graded(result.report, result.people, result.variants, result.problems, lms.platform)
     except PgsymError as err:
         raise fail(err) from None
-    click.echo(csv_text([["student", "right", "questions"], *summary(report)]), nl=False)
+    report, problems = graded.report, graded.problems
+    right = {s: (r, n) for s, r, n in ((s, sum(x.correct for x in rs), sum(x.counted for x in rs))
+                                       for s, rs in report.items())}
+    click.echo(csv_text([["student", "right", "questions", "score", "points"],
+                         *[[s, *right[s], points_text(got), points_text(worth)]
+                           for s, got, worth in score_summary(report)]]), nl=False)
     unreadable = [r for rs in report.values() for r in rs if r.unreadable]
     for rs in report.values():
         for r in rs:
@@ -207,19 +233,27 @@ def check_command(ctx: click.Context, manifest: str, answers: str, out: str | No
     for message in problems:
         click.echo(clean(f"  {message}")[:1000], err=True)
     if unreadable or problems:
-        click.echo(f"{len(unreadable)} answer(s) could not be read or were given twice, and {len(problems)} line(s) "
-                   "of the answers file were skipped (see above); every other answer was graded.", err=True)
+        click.echo(f"{len(unreadable)} answer(s) could not be read or were given twice, and {len(problems)} "
+                   "problem(s) with the answers file (see above); every other answer was graded.", err=True)
     try:
         if report_dir:
             from ..exercises.report import report_data, write_report
 
-            numbers = report_data(report, data.names, data.topics, problems)
+            numbers = report_data(report, graded.names, data.topics, problems)
             title = f"Grade report: {Path(manifest).resolve().parent.name or 'exercises'}"
             write_new_folder(report_dir, lambda tmp: write_report(tmp, numbers, title))
+        if feedback_dir:
+            from ..exercises.feedback import write_feedback
+
+            write_new_folder(feedback_dir, lambda tmp: write_feedback(tmp, graded, data, canvas_title))
         if canvas:
             from ..exercises.canvas import canvas_csv
 
-            _write_text(Path(canvas), canvas_csv(report, data.names, canvas_title, canvas_id))
+            _write_text(Path(canvas), canvas_csv(report, graded.names, canvas_title, canvas_id, graded.people))
+        if moodle_grades:
+            from ..exercises.moodle_grades import moodle_grades_csv
+
+            _write_text(Path(moodle_grades), moodle_grades_csv(report, graded.people, canvas_title))
         if out:
             _write_text(Path(out), results_csv(report, problems))
     except PgsymError as err:

@@ -40,8 +40,8 @@ from .reading import csv_rows, read_user_text
 
 MAX_CSV_BYTES = MAX_FILE_BYTES
 
-__all__ = ["AnswersFileError", "Result", "grade_rows", "read_answer_file", "read_answers", "results_csv", "score_summary",
-           "summary"]
+__all__ = ["AnswersFileError", "Result", "grade_rows", "read_answer_file", "read_answers", "results_csv",
+           "score_summary", "summary"]
 
 _SHOWN = 200  # characters of a given answer kept in a report
 
@@ -204,7 +204,8 @@ def score_summary(report: Mapping[str, list[Result]]) -> list[tuple[str, Fractio
 
 def results_csv(report: dict[str, list[Result]], problems: Iterable[str] = ()) -> str:
     """Every graded answer as CSV: student, question, answer, correct, reason, mistake (its class) and
-    feedback, the part's points and the score earned (then one row per line of the answers file that could not be read). Cells a spreadsheet
+    feedback, the part's points and the score earned (then one row per line of the answers file that could
+    not be read). Cells a spreadsheet
     would run as a formula are neutralised (:func:`pgsym.csv_cells.safe_cell`).
 
     >>> print(results_csv({"=1+1": [Result("=1+1", "1", "-2+3", False, "wrong", False, "sign", "the sign is wrong")]}),

@@ -123,7 +123,7 @@ def split_parts(text: str, labels: Sequence[str]) -> dict[str, str]:
     if loose:  # more lines than parts: keep them, so the grader reports the answer as unreadable
         last = labels[-1]
         out[last] = " | ".join([out.get(last, ""), *loose]).strip(" |")
-    return out
+    return {label: out[label] for label in labels if label in out}
 
 
 def _maxima_matrix(text: str) -> str:
@@ -224,7 +224,7 @@ def _read_moodle(rows: list[tuple[int, list[str]]], labels_of: Mapping[str, tupl
                                 "the last one listed is graded")
         kept[person.key] = (line, row)
         out.people[person.key] = person
-    for key, (line, row) in kept.items():
+    for key, (_line, row) in kept.items():
         for slot in slots:
             vid = _variant(_cell(row, question_cols[slot]))
             if vid is None or vid not in labels_of:

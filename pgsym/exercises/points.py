@@ -9,11 +9,11 @@ weights, the Canvas and Moodle gradebooks and the grade report. A part is graded
 Weights come from the command line (``pgsym sheet --points``) or from a template's class attribute
 ``points`` (a number for every part, or one number per part); the command line wins.
 
->>> spec = parse_points("join=2, classify=1/3, default=1")
+>>> spec = parse_points("join=2, classify=1+3, default=1/2")
 >>> spec["join"], spec["classify"]
 ((Fraction(2, 1),), (Fraction(1, 1), Fraction(3, 1)))
 >>> part_points(spec, "classify", 2), part_points(spec, "meet", 1)
-((Fraction(1, 1), Fraction(3, 1)), (Fraction(1, 1),))
+((Fraction(1, 1), Fraction(3, 1)), (Fraction(1, 2),))
 """
 
 from __future__ import annotations
@@ -42,15 +42,16 @@ def _number(text: str, where: str) -> Fraction:
 
 
 def parse_points(spec: str) -> dict[str, tuple[Fraction, ...]]:
-    """Read ``"join=2,classify=1/3,default=1"``: a topic's points for each part (one number for all
-    parts, or ``/``-separated numbers, one per part); ``default`` applies to the other topics.
+    """Read ``"join=2,classify=1+3,default=1"``: a topic's points for each part (one number for all
+    parts, or ``+``-separated numbers, one per part; fractions such as ``1/2`` allowed); ``default``
+    applies to the other topics.
 
-    >>> parse_points("decompose=1/2/2")["decompose"]
+    >>> parse_points("decompose=1+2+2")["decompose"]
     (Fraction(1, 1), Fraction(2, 1), Fraction(2, 1))
     >>> parse_points("join")
     Traceback (most recent call last):
     ...
-    pgsym.exercises.errors.TemplateError: --points: 'join' should be TOPIC=POINTS, e.g. join=2 or classify=1/3
+    pgsym.exercises.errors.TemplateError: --points: 'join' should be TOPIC=POINTS, e.g. join=2 or classify=1+3
     """
     out: dict[str, tuple[Fraction, ...]] = {}
     for item in (i.strip() for i in spec.split(",")):
@@ -58,8 +59,8 @@ def parse_points(spec: str) -> dict[str, tuple[Fraction, ...]]:
             continue
         topic, sep, value = item.partition("=")
         if not sep or not topic.strip() or not value.strip():
-            raise TemplateError(f"--points: {item[:40]!r} should be TOPIC=POINTS, e.g. join=2 or classify=1/3")
-        out[topic.strip()] = tuple(_number(v, f"--points {topic.strip()}") for v in value.split("/"))
+            raise TemplateError(f"--points: {item[:40]!r} should be TOPIC=POINTS, e.g. join=2 or classify=1+3")
+        out[topic.strip()] = tuple(_number(v, f"--points {topic.strip()}") for v in value.split("+"))
     return out
 
 

@@ -85,7 +85,7 @@ def _shape(key: Answer, k: int) -> str:
         rows, cols = len(key.value), len(key.value[0])
         return (f"matrixp({sa}) and is(length({sa})={rows}) and is(length({sa}[1])={cols}) "
                 f"and every(ratnump,flatten(args({sa})))")
-    return f"member({sa},[{','.join(_LETTERS[:max(2, _choices(key))])}])"
+    return f"member({sa},[{','.join(_LETTERS)}])"  # every letter pgsym reads is an answer, right or wrong
 
 
 def _choices(key: Answer) -> int:
@@ -157,7 +157,8 @@ def _node(index: int, variable: str, note: str, feedback: str, last: bool, right
             "        <testoptions/>\n        <quiet>1</quiet>\n"
             f"        <truescoremode>=</truescoremode>\n        <truescore>{true_score}</truescore>\n"
             "        <truepenalty>0</truepenalty>\n"
-            f"        <truenextnode>{true_next}</truenextnode>\n        <trueanswernote>{escape(note)}</trueanswernote>\n"
+            f"        <truenextnode>{true_next}</truenextnode>\n"
+            f"        <trueanswernote>{escape(note)}</trueanswernote>\n"
             f'        <truefeedback format="html">{_html(true_feedback)}</truefeedback>\n'
             "        <falsescoremode>=</falsescoremode>\n        <falsescore>0</falsescore>\n"
             "        <falsepenalty>0</falsepenalty>\n"
@@ -179,7 +180,8 @@ def _input(part: Part, k: int) -> str:
     return (f"    <input>\n      <name>ans{k}</name>\n      <type>{kind}</type>\n      <tans>{tans}</tans>\n"
             "      <boxsize>20</boxsize>\n      <strictsyntax>1</strictsyntax>\n      <insertstars>0</insertstars>\n"
             "      <syntaxhint/>\n      <syntaxattribute>0</syntaxattribute>\n      <forbidwords/>\n"
-            "      <allowwords/>\n      <forbidfloat>1</forbidfloat>\n      <requirelowestterms>0</requirelowestterms>\n"
+            "      <allowwords/>\n      <forbidfloat>1</forbidfloat>\n"
+            "      <requirelowestterms>0</requirelowestterms>\n"
             "      <checkanswertype>0</checkanswertype>\n      <mustverify>1</mustverify>\n"
             "      <showvalidation>1</showvalidation>\n      <options/>\n    </input>\n")
 
