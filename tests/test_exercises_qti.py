@@ -14,7 +14,7 @@ import pytest
 from lxml import etree
 
 from pgsym.exercises import render_qti
-from pgsym.exercises.model import Answer, Exercise, Part, Sheet
+from pgsym.exercises.model import Sheet
 from pgsym.exercises.sheets import build_sheets, parse_topics
 
 SCHEMA = Path(__file__).parent / "data" / "qti" / "domainProfile_4" / "ims_qtiasiv1p2.xsd"

@@ -34,9 +34,25 @@ student's worked solutions) and the key table (student x question -> canonical a
   key/md/ key/html/ key/ipynb/      the answer key, one file per student
   key-table.md .html .ipynb         the key table of the class
   sheets.tex/.pdf key.tex/.pdf key-table.tex/.pdf
-  moodle.xml                        Moodle XML (one category per topic)
-  qti.zip                           Canvas QTI 1.2 (a question bank per topic, a quiz of question groups)
+  stack.xml                         Moodle STACK questions: graded up to scale in Moodle, with
+                                    pgsym's mistake feedback and the worked solution
+  moodle.xml                        Moodle Cloze questions (each box compared with the canonical
+                                    form; the questions say so: prefer stack.xml)
+  qti.zip                           Canvas QTI 1.2: a question bank per exercise, a quiz whose
+                                    question groups draw one variant from each bank
 HTML pages carry their math as MathML: no script, no network, nothing to install.
+
+\b
+Moodle and Canvas round trip:
+  pgsym sheet --topics join,classify:2 --roster students.csv --seed 7 --format stack,qti --out week4
+  (import stack.xml or qti.zip, give the quiz, download its report, then 'pgsym check')
+Every question carries its variant id (F-0123456789#1: form id and slot) in its title and text
+(STACK: in its question note), so a quiz may draw variants at random and 'pgsym check' still
+grades each answer against the variant the student saw. Canvas compares answers as strings and
+never up to scale, so Canvas does not grade these questions: they are essays, and pgsym grades
+the answers from Canvas's Student Analysis report. STACK grades them in Moodle itself.
+--points TOPIC=P sets the points of each part (join=2, classify=1+3 per part; default=1): the
+manifest stores them and every output uses them (QTI points, STACK marks, gradebooks, report).
 
 \b
 Names, ids and titles are printed as text in every format, never run as LaTeX, Markdown, HTML,
@@ -50,10 +66,22 @@ Examples:
   pgsym check --manifest week4/manifest.json --answers answers.csv --out grades.csv
   pgsym check --manifest week4/manifest.json --answers answers.csv --report week4-report \\
               --canvas canvas.csv --canvas-title "Week 4" --canvas-id 1234
+  pgsym check --manifest week4/manifest.json --answers student-analysis.csv \\
+              --canvas gradebook.csv --feedback week4-feedback
+  pgsym check --manifest week4/manifest.json --answers responses.csv \\
+              --moodle-grades grades-import.csv --feedback week4-feedback
 
 \b
-answers.csv is either wide (header: id,1,2,3a,3b,...; one row per student) or long
-(header: id,question,answer). Homogeneous answers are right up to a nonzero scale; fractions
+--answers is one of (detected from its header):
+  a pgsym answers CSV, wide (header: id,1,2,3a,3b,...; one row per student) or long
+    (header: id,question,answer);
+  Canvas's quiz "Student Analysis" report (Quiz Statistics > Student Analysis): columns
+    name, id, sis_id, then "<question id>: <question text>" per question (the text holds the
+    variant id), n correct, n incorrect, score; a multi-part answer has one line per part;
+  Moodle's quiz "Responses" report of the STACK questions, downloaded with "Question text"
+    ticked: identity columns, State, "Question N" (the variant id) and "Response N".
+A report whose questions carry no variant id of the manifest is an error, never zeros.
+Homogeneous answers are right up to a nonzero scale; fractions
 such as -2/3, decimals and 0 are read exactly; nothing typed is ever evaluated as code.
 The file may hold at most {MAX_FILE_BYTES // 1_000_000} MB, one answer at most {MAX_ANSWER_CHARS} characters.
 An answer that cannot be read (too long, not a number, vector or matrix) or a question
@@ -63,9 +91,13 @@ A wrong answer that is a common mistake (a sign lost, the dual object, a matrix 
 or inverted, H applied to a line, an ideal point given as finite, a wrong scale, ...) is
 named in --out, --report and with --details; the manifest holds the candidates.
 --report writes index.html (no script, no network), report.json and SVG plots into a new
-folder; --canvas writes Canvas's gradebook import CSV (Student, ID, SIS User ID, SIS Login
-ID, Section, "Title (id)") with the number of right answers as the score.
-Cells of --out, --canvas (and of the summary) that a spreadsheet would run as a formula
+folder; --feedback writes one HTML page per student (their answers, the verdicts, the mistakes
+explained, the worked solutions) and an index into a new folder; --canvas writes Canvas's
+gradebook import CSV (Student, ID, SIS User ID, SIS Login ID, Section, "Title (id)");
+--moodle-grades writes a CSV for Moodle's grade import (Email address, ID number, Username,
+Full name, the grade, Feedback). Scores are points: each part earns its points when right
+(set by 'pgsym sheet --points'; 1 per part by default), the same in every output.
+Cells of --out, --canvas, --moodle-grades (and of the summary) that a spreadsheet would run as a formula
 (starting with = + - @, tab or carriage return) get a leading ' as OWASP recommends.
 
 \b
