@@ -47,7 +47,7 @@ def test_canvas_student_analysis_round_trip(week):
     result = run("check", "--manifest", str(week / "week" / "manifest.json"), "--answers",
                  str(DATA / "canvas-student-analysis.csv"), "--out", str(out / "graded.csv"), "--canvas",
                  str(out / "gradebook.csv"), "--canvas-title", "Week 4", "--canvas-id", "77", "--feedback",
-                 str(out / "feedback"))
+                 str(out / "feedback"), "--report", str(out / "report"))
     assert result.returncode == 3, result.stderr  # Dorothy's formula cannot be read; everything else graded
     # the README's derivations: Grace 3, Katherine 2, Dorothy 0, Mary 2 of 3 points
     assert result.stdout.splitlines() == ["student,right,questions,score,points", "g001,3,3,3,3", "g002,2,3,2,3",
@@ -63,6 +63,12 @@ def test_canvas_student_analysis_round_trip(week):
         ["Points Possible", "", "", "", "", "3"],
         ["Grace Hopper", "9001", "g001", "", "", "3"], ["Katherine Johnson", "9002", "g002", "", "", "2"],
         ["Dorothy Vaughan", "9003", "g003", "", "", "0"], ["Mary Jackson", "9004", "g004", "", "", "2"]]
+    # the report sums the same points
+    import json
+
+    report = json.loads((out / "report" / "report.json").read_text())
+    assert [(s["id"], s["score"], s["points"]) for s in report["students"]] == [
+        ("g001", "3", "3"), ("g002", "2", "3"), ("g003", "0", "3"), ("g004", "2", "3")]
     pages = sorted(p.name for p in (out / "feedback").iterdir())
     assert pages == ["feedback-g001.html", "feedback-g002.html", "feedback-g003.html", "feedback-g004.html",
                      "index.html"]
