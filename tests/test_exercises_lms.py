@@ -154,6 +154,17 @@ def test_hostile_reports_are_bounded(week, tmp_path):
     result = check_here("--manifest", manifest, "--answers", str(tmp_path / "long.csv"))
     assert result.exit_code == 3 and "at most 2000 are read" in result.output
     assert "g001,2,3,2,3" in result.output
+    # a hostile name and SIS id: the page stays inside the folder, the name shows as text
+    hostile = text.replace("Grace Hopper,9001,g001", '"<script>alert(1)</script>",9001,../../evil')
+    (tmp_path / "hostile.csv").write_text(hostile)
+    result = check_here("--manifest", manifest, "--answers", str(tmp_path / "hostile.csv"), "--feedback",
+                        str(tmp_path / "fb"))
+    assert result.exit_code == 3
+    names = sorted(p.name for p in (tmp_path / "fb").iterdir())
+    assert len(names) == 5 and all("/" not in n and not n.startswith(".") for n in names)
+    assert not (tmp_path.parent / "evil").exists() and not list(tmp_path.parent.glob("*evil*"))
+    page = next((tmp_path / "fb").glob("feedback-______evil-*.html")).read_text()
+    assert "<script>" not in page and "&lt;script&gt;alert(1)&lt;/script&gt;" in page
     # not UTF-8: a named error, no traceback
     (tmp_path / "bin.csv").write_bytes(b"name,id,sis_id\n\xff\xfe\n")
     result = check_here("--manifest", manifest, "--answers", str(tmp_path / "bin.csv"))

@@ -102,6 +102,11 @@ def test_items_are_ungraded_essays_that_carry_the_variant_and_the_points(package
             text = item.findtext(".//q:mattext", namespaces=NS)
             assert text.startswith(f"<p>pgsym {sheet.form_id}#{slot + 1}</p>")
             assert "Canvas does not grade this answer: pgsym grades it after the quiz" in text
+            # the worked solution is the general feedback, linked from the processing
+            exercise = sheet.exercises[slot]
+            feedback = item.find("q:itemfeedback[@ident='general_fb']", NS).findtext(".//q:mattext", namespaces=NS)
+            assert feedback.startswith("<ol><li>") and exercise.parts[-1].answer.display() in feedback
+            assert item.find(".//q:displayfeedback", NS).get("linkrefid") == "general_fb"
 
 
 def test_points_from_the_command_line_reach_every_item():

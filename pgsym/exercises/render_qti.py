@@ -7,7 +7,10 @@ types the answer as text (pgsym's syntax, e.g. ``(1, -2, 0)``; any nonzero multi
 Unicode minus are all fine), and ``pgsym check`` grades Canvas's Student Analysis report up to scale,
 naming the mistakes (:mod:`pgsym.exercises.lms`); the Canvas gradebook CSV it writes carries the
 points. The variant id (:func:`~pgsym.exercises.model.variant_id`) is the first line of every
-question's text and part of its title, so the report says which variant each student saw.
+question's text and part of its title, so the report says which variant each student saw. The worked
+solution is the item's general feedback (``itemfeedback`` ``general_fb``), which Canvas shows as the
+quiz's settings allow; the mistakes are named by ``pgsym check`` (``--feedback`` pages), since Canvas
+never sees a verdict.
 
 The zip holds ``imsmanifest.xml`` (IMS Content Packaging), ``banks/bank-NN-TOPIC.xml`` (an
 ``objectbank`` per slot, every variant an ``item``, imported once) and ``quiz.xml`` (an ``assessment``
@@ -92,8 +95,17 @@ def _item(ident: str, sheet: Sheet, ex: Exercise) -> str:
         + '<response_str ident="response1" rcardinality="Single"><render_fib><response_label ident="answer1" '
         'rshuffle="No"/></render_fib></response_str></presentation>',
         '<resprocessing><outcomes><decvar maxvalue="100" minvalue="0" varname="SCORE" vartype="Decimal"/>'
-        "</outcomes><respcondition continue=\"No\"><conditionvar><other/></conditionvar></respcondition>"
-        "</resprocessing></item>"])
+        '</outcomes><respcondition continue="Yes"><conditionvar><other/></conditionvar>'
+        '<displayfeedback feedbacktype="Response" linkrefid="general_fb"/></respcondition>'
+        '<respcondition continue="No"><conditionvar><other/></conditionvar></respcondition></resprocessing>',
+        '<itemfeedback ident="general_fb"><flow_mat>' + _material(_solution(ex)) + "</flow_mat></itemfeedback>",
+        "</item>"])
+
+
+def _solution(ex: Exercise) -> str:
+    """The worked solution and the expected answers: Canvas's general feedback of the item."""
+    return ("<ol>" + "".join(f"<li>{to_html(step)}</li>" for step in ex.solution) + "</ol>"
+            + "".join(f"<p><b>[{html.escape(p.label)}]</b> {html.escape(p.answer.display())}</p>" for p in ex.parts))
 
 
 def _slug(topic: str) -> str:
