@@ -424,7 +424,7 @@ def test_grades_csv_neutralises_formulas(made):
     assert len(cells) > 20 and not [c for c in cells if c.startswith(("=", "+", "-", "@", "\t", "\r"))]
     assert "'=1+2,1," in (base / "grades.csv").read_text() and "'=2+5" in (base / "grades.csv").read_text()
     assert "'-1+1" in (base / "grades.csv").read_text() and "'+999/1000" in (base / "grades.csv").read_text()
-    assert result.stdout.splitlines()[1:3] == ["'=1+2,1,2", "'@SUM(1),0,2"]
+    assert result.stdout.splitlines()[1:3] == ["'=1+2,1,2,1,2", "'@SUM(1),0,2,0,2"]  # right, questions, points
 
 
 # ----------------------------------------------------------------------------------- readers
@@ -520,7 +520,8 @@ def test_ten_megabyte_cell_costs_only_that_answer(made):
     result = check("--manifest", str(base / "out" / "manifest.json"), "--answers", str(base / "answers.csv"),
                    "--out", str(base / "grades.csv"))
     assert result.exit_code == 3
-    assert result.stdout.splitlines() == ["student,right,questions", "'=1+2,1,2", "'@SUM(1),0,2", "s3,2,2"]
+    assert result.stdout.splitlines() == ["student,right,questions,score,points", "'=1+2,1,2,1,2", "'@SUM(1),0,2,0,2",
+                                          "s3,2,2,2,2"]
     assert f"=1+2 [1]: cannot read the answer: it is 10000000 characters long; at most {MAX_ANSWER_CHARS}" \
         in result.stderr
     grades = (base / "grades.csv").read_text()
@@ -542,7 +543,7 @@ def test_two_answers_to_one_question_are_reported(made):
                    "--out", str(base / "grades.csv"))
     assert result.exit_code == 3
     assert "s3 [1]: answered 2 times; not graded" in result.stderr
-    assert result.stdout.splitlines()[-1] == "s3,1,2"
+    assert result.stdout.splitlines()[-1] == "s3,1,2,1,2"
     assert "answered 2 times" in (base / "grades.csv").read_text()
     # the same in the wide format: a label twice in the header
     (base / "wide.csv").write_text(f'id,1,1,2\ns3,"{good}","{good}",{keys["s3"]["2"]["value"]}\n')
@@ -556,7 +557,8 @@ def test_all_readable_exits_zero_and_help_documents_exit_codes(made):
                                      for label, p in parts.items()]
     (base / "answers.csv").write_text("\n".join(rows) + "\n")
     result = check("--manifest", str(base / "out" / "manifest.json"), "--answers", str(base / "answers.csv"))
-    assert result.exit_code == 0 and result.stdout.splitlines()[1:] == ["'=1+2,2,2", "'@SUM(1),2,2", "s3,2,2"]
+    assert result.exit_code == 0 and result.stdout.splitlines()[1:] == ["'=1+2,2,2,2,2", "'@SUM(1),2,2,2,2",
+                                                                        "s3,2,2,2,2"]
     helptext = " ".join(CliRunner().invoke(main, ["check", "--help"]).output.split())
     assert "Exit status: 0 every answer was read and graded" in helptext
     assert "3 some answers could not be read or were given twice" in helptext
