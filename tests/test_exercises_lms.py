@@ -13,10 +13,12 @@ from pathlib import Path
 
 import pytest
 from click.testing import CliRunner
+from hypothesis import given
+from hypothesis import strategies as st
 from lxml import html as lxml_html
 
 from pgsym.cli import main
-from pgsym.exercises.lms import MAX_COLUMNS
+from pgsym.exercises.lms import MAX_COLUMNS, split_parts
 
 DATA = Path(__file__).parent / "data" / "lms"
 PGSYM = shutil.which("pgsym", path=str(Path(sys.executable).parent))
@@ -179,3 +181,18 @@ def test_check_help_documents_the_round_trip():
     result = run("sheet", "--help")
     for phrase in ("stack.xml", "--points", "Canvas does not grade"):
         assert phrase in result.stdout, phrase
+
+
+labels_strategy = st.lists(st.from_regex(r"[1-9][a-d]", fullmatch=True), min_size=2, max_size=4, unique=True)
+answer_text = st.from_regex(r"\(?-?[0-9]{1,3}(, -?[0-9]{1,3}){0,3}\)?|[A-H]", fullmatch=True)
+
+
+@given(labels_strategy, st.data())
+def test_labelled_lines_reach_their_parts_in_any_order(labels, data):
+    answers = {label: data.draw(answer_text) for label in labels}
+    order = data.draw(st.permutations(labels))
+    style = data.draw(st.sampled_from(["{l}: {a}", "[{l}] {a}", "{l} = {a}", "<p>{l}: {a}</p>"]))
+    text = "\n".join(style.format(l=label, a=answers[label]) for label in order)
+    assert split_parts(text, labels) == answers
+    # unlabelled lines fill the parts in order
+    assert split_parts("\n".join(answers[label] for label in labels), labels) == answers

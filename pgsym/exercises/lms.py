@@ -101,6 +101,8 @@ def split_parts(text: str, labels: Sequence[str]) -> dict[str, str]:
 
     >>> split_parts("<p>4b: 8</p><p>[4a] D</p>", ["4a", "4b"])
     {'4a': 'D', '4b': '8'}
+    >>> split_parts("2a:C\\n2b = 6", ["2a", "2b"])
+    {'2a': 'C', '2b': '6'}
     >>> split_parts("(1, -2, 0)", ["1"])
     {'1': '(1, -2, 0)'}
     """
@@ -112,7 +114,7 @@ def split_parts(text: str, labels: Sequence[str]) -> dict[str, str]:
     for line in (ln.strip() for ln in plain.splitlines()):
         if not line:
             continue
-        match = re.match(r"^\[?\(?([0-9]{1,3}[a-z]?)\)?\]?\s*[:=)\]]?\s+(.*)$", line)
+        match = re.match(r"^\[?\(?([0-9]{1,3}[a-z]?)\)?\]?(?:\s*[:=]\s*|\s+)(.+)$", line)
         if match and match.group(1) in labels and match.group(1) not in out:
             out[match.group(1)] = match.group(2).strip()
         else:
