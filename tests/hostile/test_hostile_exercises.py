@@ -33,7 +33,7 @@ from pgsym.cli import main
 from pgsym.csv_cells import csv_text, safe_cell
 from pgsym.errors import InputLimitError
 from pgsym.escaping import REPLACEMENT, math_is_safe, one_line
-from pgsym.exercises import html_math, render_html, render_ipynb, render_md, render_moodle, render_tex
+from pgsym.exercises import html_math, render_html, render_ipynb, render_md, render_moodle, render_stack, render_tex
 from pgsym.exercises.errors import AnswersFileError, ManifestError, RosterError, TeXFailedError
 from pgsym.exercises.grading import read_answers
 from pgsym.exercises.model import Answer, Exercise, Part, Sheet
@@ -246,6 +246,30 @@ def test_moodle_shows_payload_literally(name, secret_file):
     feedback = questions[0].find("generalfeedback/text").text
     assert f"Step {visible(payload)}" in " ".join("".join(parse_page(feedback).text).split())
     assert questions[0].find("name/text").text.endswith("[pgsym F-0000000000#1]")  # the variant, not the student
+
+
+@pytest.mark.parametrize("name", NAMES)
+def test_stack_shows_payload_literally(name, secret_file):
+    # STACK reads CASText in the question text: {@...@} and {#...#} run Maxima, [[...]] are inputs and
+    # blocks. The only ones left are those made from the key; the Maxima code holds the key only.
+    payload = payloads(secret_file)[name]
+    xml = render_stack.render_stack_quiz([hostile_sheet(name, payload)])
+    root = ElementTree.fromstring(xml.encode())
+    (question,) = root.findall("question[@type='stack']")
+    texts = [question.find(f"{f}/text").text or "" for f in ("questiontext", "generalfeedback")]
+    # every CASText field (all <text> but the question's name, which STACK shows as plain text)
+    texts += [n.text for field in question if field.tag != "name" for n in field.iter("text") if n.text]
+    for text in texts:
+        assert "{@" not in text and "{#" not in text, text[:200]
+        assert re.findall(r"\[\[[^\]]*\]\]", text) in ([], ["[[input:ans1]]", "[[validation:ans1]]",
+                                                          "[[feedback:prt1]]", "[[input:ans2]]",
+                                                          "[[validation:ans2]]", "[[feedback:prt2]]"])
+    shown = " ".join("".join(parse_page(question.find("questiontext/text").text).text).split())
+    assert f"Statement {visible(payload)}" in shown
+    maxima = question.findtext("questionvariables/text") + "".join(p.findtext("feedbackvariables/text")
+                                                                   for p in question.findall("prt"))
+    assert set(maxima) <= set("abcdefghijklmnopqrstuvwxyzABCDEFGH0123456789:;[](),=/-_\n \"") , maxima
+    assert question.find("name/text").text.endswith("[pgsym F-0000000000#1]")
 
 
 # ----------------------------------------------------------------------------------- LaTeX and PDF
