@@ -203,3 +203,38 @@ def test_points_are_the_prt_values(exported):
                      and "Decompose" in q.findtext("name/text"))
     assert [Fraction(p.findtext("value")) for p in decompose.findall("prt")] == [1, 2, 2]
     assert Fraction(decompose.findtext("defaultgrade")) == 5  # 1 + 2 + 2
+
+
+def test_the_question_tests_in_the_xml_pass_in_maxima(exported):
+    """STACK's own question tests, as exported (key, multiple, each mistake), give their expected notes."""
+    questions = _questions((exported / "out" / "stack.xml").read_bytes())
+    script, jobs = [], []
+    for question in questions:
+        qvars = question.findtext("questionvariables/text")
+        prts = question.findall("prt")
+        for test in question.findall("qtest"):
+            inputs = {t.findtext("name"): t.findtext("value") for t in test.findall("testinput")}
+            expected = {e.findtext("name"): (e.findtext("expectedscore"), e.findtext("expectedanswernote"))
+                        for e in test.findall("expected")}
+            assert set(expected) == {p.findtext("name") for p in prts}
+            for prt in prts:
+                nodes = prt.findall("node")
+                job = len(jobs)
+                jobs.append((nodes, expected[prt.findtext("name")], test.findtext("description")))
+                script += ["kill(all)$", "display2d:false$", qvars, *[f"{k}:{v}$" for k, v in inputs.items()],
+                           prt.findtext("feedbackvariables/text"),
+                           f'print("CASE",{job},[{",".join(n.findtext("sans") for n in nodes)}])$']
+    assert len(jobs) > 200
+    out = subprocess.run([MAXIMA, "--very-quiet"], input="\n".join(script) + "\nquit()$\n", capture_output=True,
+                         text=True, timeout=600)
+    values = {}
+    for line in out.stdout.splitlines():
+        if line.startswith("CASE "):
+            _, case, rest = line.split(" ", 2)
+            values[int(case)] = [v.strip() == "true" for v in rest.strip("[] ").split(",")]
+    assert sorted(values) == list(range(len(jobs))), out.stdout[-2000:]
+    described = set()
+    for job, (nodes, (score, note), description) in enumerate(jobs):
+        assert _walk(nodes, values[job]) == (score, note), (description, note)
+        described.add(description.split(":")[0])
+    assert {"the key", "a multiple of the key (right up to scale)"} <= described

@@ -16,7 +16,9 @@ feedback variables compute in Maxima:
    of the letters); otherwise the student is told what to type.
 
 The answer notes (``prtK-right``, ``prtK-mistake-CODE``, ``prtK-wrong``, ``prtK-unreadable``) appear
-in Moodle's Responses report, and the worked solution is the general feedback. The question note
+in Moodle's Responses report, and the worked solution is the general feedback. Every question also
+carries STACK question tests (the key, a multiple of it, each stored mistake, with the notes expected),
+which Moodle runs under "Question tests & deployed variants". The question note
 carries the variant id, so that ``pgsym check`` can grade the Responses report of a quiz that drew
 random variants. STACK refuses decimals at validation (``forbidfloat``), so students type fractions;
 pgsym reads decimals exactly, the one place where the two differ.
@@ -40,6 +42,7 @@ from fractions import Fraction
 from xml.sax.saxutils import escape
 
 from ..escaping import one_line, to_moodle
+from .answers import matches
 from .model import Answer, Exercise, Mistake, Part, Sheet, variant_id
 from .points import points_text
 
@@ -122,8 +125,7 @@ def prt_logic(part: Part, k: int) -> tuple[str, list[tuple[str, str, str]]]:
     nodes = [(f"right{k}", f"prt{k}-right", "")]
     for j, m in enumerate(_ordered(key, part.mistakes), start=1):
         lines.append(f"m{k}x{j}:if wf{k} then ({_equal(m.answer, key.kind, k)}) else false;")
-        code = re.sub(r"[^A-Za-z0-9-]", "_", m.code)[:40]
-        nodes.append((f"m{k}x{j}", f"prt{k}-mistake-{code}", m.message))
+        nodes.append((f"m{k}x{j}", f"prt{k}-mistake-{_code(m)}", m.message))
     nodes.append((f"wf{k}", f"prt{k}-wrong", ""))
     return "\n".join(lines), nodes
 
@@ -197,6 +199,50 @@ def _variables(ex: Exercise) -> str:
     return "\n".join(lines)
 
 
+def _scaled(answer: Answer, factor: int) -> Answer:
+    """A nonzero multiple of a homogeneous answer (another right answer); exact answers unchanged."""
+    if answer.kind == "projective":
+        return Answer("projective", tuple(factor * v for v in answer.value))
+    if answer.kind == "matrix":
+        return Answer("matrix", tuple(tuple(factor * v for v in row) for row in answer.value))
+    return answer
+
+
+def _qtest(number: int, description: str, inputs: Sequence[str], expected: Sequence[tuple[str, str]]) -> str:
+    """A STACK question test: the inputs and, for every tree, the expected score and answer note."""
+    given = "".join(f"      <testinput>\n        <name>ans{k}</name>\n        <value>{escape(v)}</value>\n"
+                    "      </testinput>\n" for k, v in enumerate(inputs, start=1))
+    wanted = "".join(f"      <expected>\n        <name>prt{k}</name>\n        <expectedscore>{score}</expectedscore>\n"
+                     "        <expectedpenalty>0</expectedpenalty>\n"
+                     f"        <expectedanswernote>{escape(note)}</expectedanswernote>\n      </expected>\n"
+                     for k, (score, note) in enumerate(expected, start=1))
+    return (f"    <qtest>\n      <testcase>{number}</testcase>\n"
+            f"      <description>{escape(description)}</description>\n{given}{wanted}    </qtest>\n")
+
+
+def _qtests(ex: Exercise) -> str:
+    """Question tests Moodle can run ("Question tests & deployed variants"): the key, a multiple of it and
+    every stored mistake, each with the verdicts ``pgsym check`` gives."""
+    keys = [_maxima(p.answer) for p in ex.parts]
+    right = [("1", f"prt{k}-right") for k in range(1, len(ex.parts) + 1)]
+    tests = [_qtest(1, "the key", keys, right),
+             _qtest(2, "a multiple of the key (right up to scale)", [_maxima(_scaled(p.answer, -2)) for p in ex.parts],
+                    right)]
+    for k, part in enumerate(ex.parts, start=1):
+        ordered = _ordered(part.answer, part.mistakes)
+        for m in ordered:
+            typed = _scaled(m.answer, 3)  # a multiple of a homogeneous mistake is the same mistake
+            caught = next(x for x in ordered if matches(x.answer, typed.value))  # the first node that fires
+            inputs = [*keys[:k - 1], _maxima(typed), *keys[k:]]
+            expected = [*right[:k - 1], ("0", f"prt{k}-mistake-{_code(caught)}"), *right[k:]]
+            tests.append(_qtest(len(tests) + 1, f"part {part.label}: {m.code}", inputs, expected))
+    return "".join(tests)
+
+
+def _code(m: Mistake) -> str:
+    return re.sub(r"[^A-Za-z0-9-]", "_", m.code)[:40]
+
+
 def _question(sheet: Sheet, ex: Exercise) -> str:
     vid = variant_id(sheet.form_id, ex.slot)
     text = [f"<p>{to_moodle(ex.statement)}</p>"]
@@ -237,7 +283,7 @@ def _question(sheet: Sheet, ex: Exercise) -> str:
             "    <decimals>.</decimals>\n    <multiplicationsign>dot</multiplicationsign>\n"
             "    <sqrtsign>1</sqrtsign>\n    <complexno>i</complexno>\n    <inversetrig>cos-1</inversetrig>\n"
             "    <matrixparens>[</matrixparens>\n    <variantsselectionseed/>\n"
-            + "".join(_input(p, k) for k, p in enumerate(ex.parts, start=1)) + "".join(prts)
+            + "".join(_input(p, k) for k, p in enumerate(ex.parts, start=1)) + "".join(prts) + _qtests(ex)
             + "  </question>\n")
 
 
