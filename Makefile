@@ -64,9 +64,10 @@ live: $(LIVE_BUILT)  ## build the live cells' assets (Pyodide, wheels, editor bu
 # CJK, Arabic, Hebrew, Devanagari, Thai, Bengali, Tamil, Ethiopic, Khmer, ...: fonts-noto-core and
 # fonts-noto-cjk) and emoji print in colour (fonts-noto-color-emoji, through luaotfload's HarfBuzz mode);
 # poppler-utils cuts the class PDF into one PDF per student.
+# Maxima runs the potential response trees of the STACK export in the tests (the CAS behind Moodle's STACK).
 APT_PACKAGES := chromium texlive-latex-extra texlive-fonts-recommended tex-gyre latexmk lmodern poppler-utils \
-                texlive-luatex fonts-noto-core fonts-noto-cjk fonts-noto-color-emoji
-system-deps:  ## install Debian's chromium and TeX (when root), or say how
+                texlive-luatex fonts-noto-core fonts-noto-cjk fonts-noto-color-emoji maxima
+system-deps:  ## install Debian's chromium, TeX, fonts and Maxima (when root), or say how
 	@missing=""; \
 	command -v chromium >/dev/null || missing="$$missing chromium"; \
 	command -v pdflatex >/dev/null && command -v latexmk >/dev/null || missing="$$missing tex"; \
@@ -77,6 +78,7 @@ system-deps:  ## install Debian's chromium and TeX (when root), or say how
 	fc-list | grep -q 'Noto Color Emoji' || missing="$$missing fonts-noto-color-emoji"; \
 	command -v pdftotext >/dev/null && command -v pdfseparate >/dev/null && command -v pdfunite >/dev/null \
 	  || missing="$$missing poppler-utils"; \
+	command -v maxima >/dev/null || missing="$$missing maxima"; \
 	if [ -n "$$missing" ]; then \
 	  if [ "$$(id -u)" = 0 ] && command -v apt-get >/dev/null; then \
 	    echo "installing Debian packages for:$$missing"; \

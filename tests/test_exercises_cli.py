@@ -70,7 +70,9 @@ def test_check_grades_right_scaled_wrong_and_hostile(made):
     result = run("check", "--manifest", str(made / "out" / "manifest.json"), "--answers", str(made / "answers.csv"),
                  "--out", str(made / "grades.csv"), cwd=made)
     assert result.returncode == 3, result.stderr  # some answers could not be read; all others graded
-    assert result.stdout.splitlines() == ["student,right,questions", "s1,5,5", "s2,0,5", "s3,0,5"]
+    # right answers, questions, then points earned of points possible (1 per part by default)
+    assert result.stdout.splitlines() == ["student,right,questions,score,points", "s1,5,5,5,5", "s2,0,5,0,5",
+                                          "s3,0,5,0,5"]
     assert "cannot read the answer: unexpected character '_'" in result.stderr
     assert "division by zero" in result.stderr and "more than 40 digits" in result.stderr
     assert not (made / "HACKED").exists()

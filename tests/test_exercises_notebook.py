@@ -7,6 +7,7 @@ import os
 from pathlib import Path
 
 import nbformat
+import pytest
 from nbclient import NotebookClient
 
 from pgsym.exercises.render_ipynb import render_sheet
@@ -15,9 +16,10 @@ from pgsym.exercises.sheets import build_sheet
 ROOT = Path(__file__).resolve().parents[1]
 
 
-def _run(text: str) -> nbformat.NotebookNode:
+def _run(text: str, monkeypatch: pytest.MonkeyPatch) -> nbformat.NotebookNode:
     nb = nbformat.reads(text, as_version=4)
-    os.environ["PYTHONPATH"] = os.pathsep.join([str(ROOT), os.environ.get("PYTHONPATH", "")])
+    # the kernel imports this checkout's pgsym; monkeypatch restores the environment for the other tests
+    monkeypatch.setenv("PYTHONPATH", os.pathsep.join([str(ROOT), os.environ.get("PYTHONPATH", "")]))
     NotebookClient(nb, timeout=120, kernel_name="python3").execute()  # raises CellExecutionError on any error
     return nb
 
@@ -26,7 +28,7 @@ def _outputs(nb: nbformat.NotebookNode) -> str:
     return "".join(o.get("text", "") for c in nb.cells if c.cell_type == "code" for o in c.outputs)
 
 
-def test_run_all_with_an_empty_an_unreadable_and_a_right_answer():
+def test_run_all_with_an_empty_an_unreadable_and_a_right_answer(monkeypatch):
     sheet = build_sheet(["join", "meet", "cross-ratio"], "s1", "Ada", 7)
     nb = json.loads(render_sheet(sheet))
     right = sheet.exercises[1].parts[0].answer.value
@@ -35,13 +37,13 @@ def test_run_all_with_an_empty_an_unreadable_and_a_right_answer():
     answer_cells = [c for c in nb["cells"] if c["cell_type"] == "code"][1:]
     for slot, source in typed.items():
         answer_cells[slot - 1]["source"] = [source]
-    out = _outputs(_run(json.dumps(nb)))
+    out = _outputs(_run(json.dumps(nb), monkeypatch))
     assert "1 no answer yet" in out  # question 1 left empty: a message, and the next cells still ran
     assert "2 right" in out
     assert "3 cannot read the answer:" in out
 
 
-def test_a_graded_notebook_has_no_digest_and_collects_the_answers():
+def test_a_graded_notebook_has_no_digest_and_collects_the_answers(monkeypatch):
     sheet = build_sheet(["join", "meet"], "s1", "Ada", 7)
     with_check, without = render_sheet(sheet), render_sheet(sheet, self_check=False)
     from pgsym.exercises.answers import answer_digest
@@ -54,7 +56,7 @@ def test_a_graded_notebook_has_no_digest_and_collects_the_answers():
     cells.append({"cell_type": "code", "execution_count": None, "id": "probe", "metadata": {}, "outputs": [],
                   "source": ["print(ANSWERS)"]})
     nb["cells"].append(cells[-1])
-    assert "{'1': '(1, 2, 3)', '2': ''}" in _outputs(_run(json.dumps(nb)))
+    assert "{'1': '(1, 2, 3)', '2': ''}" in _outputs(_run(json.dumps(nb), monkeypatch))
 
 
 def test_the_cli_writes_graded_notebooks_on_request(tmp_path):

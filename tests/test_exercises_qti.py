@@ -1,5 +1,7 @@
-"""The Canvas QTI 1.2 package: valid against the IMS QTI ASI 1.2 schema, one bank per topic, every variant
-in its bank and in its question group, answers in canonical form, hostile names inert."""
+"""The Canvas QTI 1.2 package: valid against the IMS QTI ASI 1.2 schema, one bank per topic holding every
+variant once, question groups that refer to the banks, essay questions Canvas does not grade (never a
+string match that claims to compare up to scale), the variant id in every question, the points of the
+manifest, hostile names inert."""
 
 from __future__ import annotations
 
@@ -12,7 +14,7 @@ import pytest
 from lxml import etree
 
 from pgsym.exercises import render_qti
-from pgsym.exercises.model import Answer, Exercise, Part, Sheet
+from pgsym.exercises.model import Sheet
 from pgsym.exercises.sheets import build_sheets, parse_topics
 
 SCHEMA = Path(__file__).parent / "data" / "qti" / "domainProfile_4" / "ims_qtiasiv1p2.xsd"
@@ -49,89 +51,84 @@ def test_every_qti_file_validates_against_the_schema(schema, package):
 def test_the_schema_rejects_a_broken_item(schema, package):
     # the validation is not vacuous: an item without its ident, or an unknown element, is refused
     _, files = package
-    doc = etree.fromstring(files["quiz.xml"])
+    bank = next(name for name in files if name.startswith("banks/"))
+    doc = etree.fromstring(files[bank])
     item = doc.find(".//q:item", NS)
     del item.attrib["ident"]
     assert not schema.validate(doc)
-    doc = etree.fromstring(files["quiz.xml"])
+    doc = etree.fromstring(files[bank])
     etree.SubElement(doc.find(".//q:item", NS), f"{{{render_qti.QTI_NAMESPACE}}}answer").text = "1"
     assert not schema.validate(doc)
 
 
-def test_banks_and_groups_hold_every_variant(package):
+def test_banks_hold_every_variant_once_and_groups_refer_to_them(package):
     sheets, files = package
     manifest = etree.fromstring(files["imsmanifest.xml"])
     hrefs = sorted(r.get("href") for r in manifest.iter("{http://www.imsglobal.org/xsd/imscp_v1p1}resource"))
     assert hrefs == sorted(n for n in files if n != "imsmanifest.xml")
     quiz = etree.fromstring(files["quiz.xml"])
+    assert quiz.findall(".//q:item", NS) == []  # no variant is imported a second time through the quiz
     groups = quiz.findall("q:assessment/q:section/q:section", NS)
     assert len(groups) == len(sheets[0].exercises)
     for slot, group in enumerate(groups):
-        assert group.findtext("q:selection_ordering/q:selection/q:selection_number", namespaces=NS) == "1"
-        titles = [item.get("title") for item in group.findall("q:item", NS)]
-        # one item per student, titled with the form and student id
-        assert titles == [f"{slot + 1}. {s.exercises[slot].title} [{s.form_id} / {s.student_id}]" for s in sheets]
+        selection = group.find("q:selection_ordering/q:selection", NS)
+        assert selection.findtext("q:selection_number", namespaces=NS) == "1"
         topic = sheets[0].exercises[slot].topic
         bank = etree.fromstring(files[f"banks/bank-{slot + 1:02d}-{topic}.xml"])
-        assert [i.get("title") for i in bank.findall("q:objectbank/q:item", NS)] == titles
+        assert selection.findtext("q:sourcebank_ref", namespaces=NS) == bank.find("q:objectbank", NS).get("ident")
+        titles = [i.get("title") for i in bank.findall("q:objectbank/q:item", NS)]
+        # one item per student, titled with the variant id: the form id and the slot
+        assert titles == [f"{slot + 1}. {s.exercises[slot].title} [pgsym {s.form_id}#{slot + 1}]" for s in sheets]
 
 
-def _answers(item: etree._Element) -> tuple[str, list[str]]:
-    qtype = item.findtext(".//q:qtimetadatafield[q:fieldlabel='question_type']/q:fieldentry", namespaces=NS)
-    return qtype, [v.text for v in item.iter(f"{{{render_qti.QTI_NAMESPACE}}}varequal")]
+def _meta(item: etree._Element, label: str) -> str:
+    return item.findtext(f".//q:qtimetadatafield[q:fieldlabel='{label}']/q:fieldentry", namespaces=NS)
 
 
-def test_answers_are_canonical(package):
+def test_items_are_ungraded_essays_that_carry_the_variant_and_the_points(package):
     sheets, files = package
     quiz = etree.fromstring(files["quiz.xml"])
-    groups = quiz.findall("q:assessment/q:section/q:section", NS)
-    seen = set()
-    for slot, group in enumerate(groups):
-        for sheet, item in zip(sheets, group.findall("q:item", NS), strict=True):
-            parts = sheet.exercises[slot].parts
-            qtype, values = _answers(item)
-            seen.add(qtype)
-            if qtype == "multiple_choice_question":
-                assert values == [parts[0].answer.value]
-            elif qtype == "numerical_question":
-                value = Fraction(parts[0].answer.value)
-                assert value.denominator == 1 and values == [str(value.numerator)]
-                bounds = [e.text for e in item.iter() if e.tag.endswith(("}vargte", "}varlte"))]
-                assert bounds == [str(value.numerator)] * 2  # Canvas's exact answer: = or (>= and <=)
-            elif qtype == "short_answer_question":
-                text = parts[0].answer.display()
-                assert values == list(dict.fromkeys([text, text.replace(" ", "")]))
-            else:
-                assert qtype == "fill_in_multiple_blanks_question"
-                labels = {lab.get("ident"): lab.findtext(".//q:mattext", namespaces=NS)
-                          for lab in item.iter(f"{{{render_qti.QTI_NAMESPACE}}}response_label")}
-                accepted = {labels[v] for v in values}
-                for p in parts:
-                    assert (p.answer.value if p.answer.kind == "choice" else p.answer.display()) in accepted
-    assert {"multiple_choice_question", "fill_in_multiple_blanks_question", "short_answer_question"} <= seen
+    for slot, group in enumerate(quiz.findall("q:assessment/q:section/q:section", NS)):
+        topic = sheets[0].exercises[slot].topic
+        bank = etree.fromstring(files[f"banks/bank-{slot + 1:02d}-{topic}.xml"])
+        points = {Fraction(_meta(i, "points_possible")) for i in bank.findall("q:objectbank/q:item", NS)}
+        expected = sum(p.points for p in sheets[0].exercises[slot].parts)  # 1 per part by default
+        assert points == {expected} == {len(sheets[0].exercises[slot].parts)}
+        assert Fraction(group.findtext(".//q:points_per_item", namespaces=NS)) == expected
+        for sheet, item in zip(sheets, bank.findall("q:objectbank/q:item", NS), strict=True):
+            assert _meta(item, "question_type") == "essay_question"
+            # Canvas matches nothing: no answer text anywhere, so no string match can mark a right multiple wrong
+            assert list(item.iter(f"{{{render_qti.QTI_NAMESPACE}}}varequal")) == []
+            text = item.findtext(".//q:mattext", namespaces=NS)
+            assert text.startswith(f"<p>pgsym {sheet.form_id}#{slot + 1}</p>")
+            assert "Canvas does not grade this answer: pgsym grades it after the quiz" in text
+            # the worked solution is the general feedback, linked from the processing
+            exercise = sheet.exercises[slot]
+            feedback = item.find("q:itemfeedback[@ident='general_fb']", NS).findtext(".//q:mattext", namespaces=NS)
+            assert feedback.startswith("<ol><li>") and exercise.parts[-1].answer.display() in feedback
+            assert item.find(".//q:displayfeedback", NS).get("linkrefid") == "general_fb"
 
 
-def test_projective_answer_is_asked_in_canonical_form():
-    # the key (2, -4, 6) is stored as the primitive vector (1, -2, 3); the accepted text is exactly that
-    part = Part("1", "Give the line.", Answer.projective((2, -4, 6)))
-    sheet = Sheet("s1", "", "F-1", 0, (Exercise("join", "Join", 1, 1, 0, "S", (part,), ("s",), {}),))
-    data = render_qti.render_package([sheet], [("join", 1)])
-    bank = zipfile.ZipFile(io.BytesIO(data)).read("banks/bank-01-join.xml")
-    qtype, values = _answers(etree.fromstring(bank))
-    assert qtype == "short_answer_question" and values == ["(1, -2, 3)", "(1,-2,3)"]
-    # an integer answer is a numerical question; a fraction stays text in lowest terms (-6/4 -> -3/2)
-    for answer, expected in ((Answer.integer(-7), ("numerical_question", ["-7"])),
-                             (Answer.scalar(Fraction(-6, 4)), ("short_answer_question", ["-3/2"]))):
-        one = Sheet("s1", "", "F-1", 0, (Exercise("t", "T", 1, 1, 0, "S", (Part("1", "P", answer),), ("s",), {}),))
-        bank = zipfile.ZipFile(io.BytesIO(render_qti.render_package([one], [("t", 1)]))).read("banks/bank-01-t.xml")
-        assert _answers(etree.fromstring(bank)) == expected
+def test_points_from_the_command_line_reach_every_item():
+    pairs = parse_topics("join,classify")
+    from pgsym.exercises.points import parse_points
+
+    sheets = build_sheets(pairs, [("s1", "")], master_seed=1, points=parse_points("join=3,classify=1/2+2"))
+    data = render_qti.render_package(sheets, pairs)
+    archive = zipfile.ZipFile(io.BytesIO(data))
+    join = etree.fromstring(archive.read("banks/bank-01-join.xml")).find("q:objectbank/q:item", NS)
+    classify = etree.fromstring(archive.read("banks/bank-02-classify.xml")).find("q:objectbank/q:item", NS)
+    assert _meta(join, "points_possible") == "3" and _meta(classify, "points_possible") == "2.5"  # 1/2 + 2
+    quiz = etree.fromstring(archive.read("quiz.xml"))
+    assert [g.text for g in quiz.iter(f"{{{render_qti.QTI_NAMESPACE}}}points_per_item")] == ["3", "2.5"]
 
 
 def test_hostile_names_stay_text_and_the_zip_is_reproducible(package):
     sheets, files = package
-    quiz = files["quiz.xml"].decode()
-    assert "<script>" not in quiz and "&lt;script&gt;" in quiz  # escaped into the title attribute
-    titles = [i.get("title") for i in etree.fromstring(files["quiz.xml"]).iter(f"{{{render_qti.QTI_NAMESPACE}}}item")]
-    assert sum(HOSTILE_ID in t for t in titles) == len(sheets[0].exercises)  # read back as the literal id
+    banks = "".join(files[name].decode() for name in files if name.startswith("banks/"))
+    assert "<script>" not in banks
+    titles = [i.get("title") for name in files if name.startswith("banks/")
+              for i in etree.fromstring(files[name]).iter(f"{{{render_qti.QTI_NAMESPACE}}}item")]
+    assert not any(HOSTILE_ID in t for t in titles)  # the title names the variant, never the student
     assert render_qti.render_package(sheets, parse_topics(TOPICS)) == render_qti.render_package(
         sheets, parse_topics(TOPICS))

@@ -87,6 +87,24 @@ def test_moodle_xml(sheets):
     assert "{1:MULTICHOICE:" in choice
 
 
+def test_cloze_says_what_it_cannot_do_and_always_has_the_solution():
+    from pgsym.exercises.points import parse_points
+
+    sheets = build_sheets(["join", "classify"], [("s1", "")], 4, points=parse_points("join=3,classify=1+2"))
+    root = ElementTree.fromstring(render_moodle.render_quiz(sheets, solutions=False).encode())
+    join, classify = root.findall("question[@type='cloze']")
+    text = join.find("questiontext/text").text
+    # never a claim that multiples are accepted: the text says the opposite
+    assert "Another multiple of a right answer is marked wrong here" in text and "any nonzero multiple" not in text
+    # 3 points over the 3 coordinate boxes of the line: weight 1 each; the mark of the question is 3
+    assert re.findall(r"\{(\d+):NUMERICAL", text) == ["1", "1", "1"] and join.findtext("defaultgrade") == "3"
+    # classify: the letter worth 1, the degrees of freedom worth 2 (weights 1 and 2), 3 in all
+    assert re.findall(r"\{(\d+):[A-Z]+", classify.find("questiontext/text").text) == ["1", "2"]
+    assert classify.findtext("defaultgrade") == "3"
+    # the worked solution is the general feedback even when the sheets carry no solutions
+    assert join.find("generalfeedback/text").text.startswith("<ol><li>")
+
+
 def _render(tmp: Path, formats, sheets, **kw) -> dict[str, bytes]:
     render_all(sheets, [(t.split(":")[0], int(t.split(":")[1]) if ":" in t else 1) for t in TOPICS], formats, tmp, **kw)
     return {str(p.relative_to(tmp)): p.read_bytes() for p in sorted(tmp.rglob("*")) if p.is_file()

@@ -37,8 +37,12 @@ student's worked solutions) and the key table (student x question -> canonical a
                                     (each sheet on its own pages: it starts on an odd page, its
                                     pages are numbered from 1)
   pdf/ key/pdf/                     one PDF per student (with --format pdf)
-  moodle.xml                        Moodle XML (one category per topic)
-  qti.zip                           Canvas QTI 1.2 (a question bank per topic, a quiz of question groups)
+  stack.xml                         Moodle STACK questions: graded up to scale in Moodle, with
+                                    pgsym's mistake feedback and the worked solution
+  moodle.xml                        Moodle Cloze questions (each box compared with the canonical
+                                    form; the questions say so: prefer stack.xml)
+  qti.zip                           Canvas QTI 1.2: a question bank per exercise, a quiz whose
+                                    question groups draw one variant from each bank
 HTML pages carry their math as MathML: no script, no network, nothing to install.
 Student notebooks check each typed answer against salted digests of the key: a practice aid,
 not a secret (answers with few possible values are found from the digests by trying them in
@@ -50,6 +54,18 @@ or '|' (or Excel's 'sep=' line), in UTF-8, UTF-16 (Excel "Unicode text") or Wind
 is the first of: SIS User ID (Canvas gradebook export; 'Student' is the name, the Points
 Possible row is skipped), ID number (Moodle; first and last name joined), Student ID /
 student number / registration (R/exams), id; --roster-id-column chooses another column.
+
+\b
+Moodle and Canvas round trip:
+  pgsym sheet --topics join,classify:2 --roster students.csv --seed 7 --format stack,qti --out week4
+  (import stack.xml or qti.zip, give the quiz, download its report, then 'pgsym check')
+Every question carries its variant id (F-0123456789#1: form id and slot) in its title and text
+(STACK: in its question note), so a quiz may draw variants at random and 'pgsym check' still
+grades each answer against the variant the student saw. Canvas compares answers as strings and
+never up to scale, so Canvas does not grade these questions: they are essays, and pgsym grades
+the answers from Canvas's Student Analysis report. STACK grades them in Moodle itself.
+--points TOPIC=P sets the points of each part (join=2, classify=1+3 per part; default=1): the
+manifest stores them and every output uses them (QTI points, STACK marks, gradebooks, report).
 
 \b
 Names, ids and titles are printed as text in every format, never run as LaTeX, Markdown, HTML,
@@ -65,10 +81,22 @@ Examples:
   pgsym check --manifest week4/manifest.json --answers answers.csv --out grades.csv
   pgsym check --manifest week4/manifest.json --answers answers.csv --report week4-report \\
               --canvas canvas.csv --canvas-title "Week 4" --canvas-id 1234
+  pgsym check --manifest week4/manifest.json --answers student-analysis.csv \\
+              --canvas gradebook.csv --feedback week4-feedback
+  pgsym check --manifest week4/manifest.json --answers responses.csv \\
+              --moodle-grades grades-import.csv --feedback week4-feedback
 
 \b
-answers.csv is either wide (header: id,1,2,3a,3b,...; one row per student) or long
-(header: id,question,answer). Homogeneous answers are right up to a nonzero scale; fractions
+--answers is one of (detected from its header):
+  a pgsym answers CSV, wide (header: id,1,2,3a,3b,...; one row per student) or long
+    (header: id,question,answer);
+  Canvas's quiz "Student Analysis" report (Quiz Statistics > Student Analysis): columns
+    name, id, sis_id, then "<question id>: <question text>" per question (the text holds the
+    variant id), n correct, n incorrect, score; a multi-part answer has one line per part;
+  Moodle's quiz "Responses" report of the STACK questions, downloaded with "Question text"
+    ticked: identity columns, State, "Question N" (the variant id) and "Response N".
+A report whose questions carry no variant id of the manifest is an error, never zeros.
+Homogeneous answers are right up to a nonzero scale; fractions
 such as -2/3, decimals and 0 are read exactly; nothing typed is ever evaluated as code.
 The file may hold at most {MAX_FILE_BYTES // 1_000_000} MB, one answer at most {MAX_ANSWER_CHARS} characters.
 An answer that cannot be read (too long, not a number, vector or matrix) or a question
@@ -78,9 +106,13 @@ A wrong answer that is a common mistake (a sign lost, the dual object, a matrix 
 or inverted, H applied to a line, an ideal point given as finite, a wrong scale, ...) is
 named in --out, --report and with --details; the manifest holds the candidates.
 --report writes index.html (no script, no network), report.json and SVG plots into a new
-folder; --canvas writes Canvas's gradebook import CSV (Student, ID, SIS User ID, SIS Login
-ID, Section, "Title (id)") with the number of right answers as the score.
-Cells of --out, --canvas (and of the summary) that a spreadsheet would run as a formula
+folder; --feedback writes one HTML page per student (their answers, the verdicts, the mistakes
+explained, the worked solutions) and an index into a new folder; --canvas writes Canvas's
+gradebook import CSV (Student, ID, SIS User ID, SIS Login ID, Section, "Title (id)");
+--moodle-grades writes a CSV for Moodle's grade import (Email address, ID number, Username,
+Full name, the grade, Feedback). Scores are points: each part earns its points when right
+(set by 'pgsym sheet --points'; 1 per part by default), the same in every output.
+Cells of --out, --canvas, --moodle-grades (and of the summary) that a spreadsheet would run as a formula
 (starting with = + - @, tab or carriage return) get a leading ' as OWASP recommends.
 
 \b
@@ -135,7 +167,10 @@ class _NoBar:
 @click.option("--roster-id-column", "roster_id_column", metavar="HEADER",
               help="Take the student id from this column (default: SIS User ID, ID number, Student ID, id, ...).")
 @click.option("--format", "formats", default="md", show_default=True,
-              help="Comma-separated: md,tex,pdf,html,ipynb,moodle,qti.")
+              help="Comma-separated: md,tex,pdf,html,ipynb,moodle,stack,qti.")
+@click.option("--points", "points_spec", default="", metavar="TOPIC=P[+P...],...",
+              help="Points of each part, e.g. 'join=2,classify=1+3,default=1' (default: a template's own "
+                   "points, else 1 per part); every output and gradebook uses them.")
 @click.option("--level", type=click.IntRange(1, 9), default=1, show_default=True,
               help="Level of topics given without one.")
 @click.option("--solutions-in-sheets", "solutions_in_sheets", is_flag=True,
@@ -155,13 +190,14 @@ class _NoBar:
               help="Deprecated and ignored: the HTML pages carry MathML and need no MathJax.")
 @click.option("--progress/--no-progress", default=None, help="Show a progress bar (default: for 50 sheets or more).")
 def sheet_command(topics: str, count: int, seed: int, roster: str | None, roster_id_column: str | None,
-                  formats: str, level: int,
+                  formats: str, points_spec: str, level: int,
                   solutions_in_sheets: bool, old_solutions: bool, key: bool, self_check: bool, out: str,
                   template_dirs: tuple[str, ...], replace_templates: bool, mathjax: str | None,
                   progress: bool | None) -> None:
     """Generate per-student exercise sheets, their answer key and key table, in every requested format."""
     from ..atomic import Terminated, write_new_folder
     from ..exercises.output import parse_formats, render_all
+    from ..exercises.points import parse_points
     from ..exercises.sheets import anonymous_students, build_sheets, parse_topics, read_roster
 
     if old_solutions:
@@ -178,13 +214,14 @@ def sheet_command(topics: str, count: int, seed: int, roster: str | None, roster
         raise click.BadParameter(str(err), param_hint="--format") from None
     try:
         pairs = parse_topics(topics, level)
+        points = parse_points(points_spec)
         notes: list[str] = []
         students = read_roster(roster, roster_id_column, notes) if roster else anonymous_students(count)
         for note in notes:
             click.echo(f"note: {note}", err=True)
         show = progress if progress is not None else len(students) >= 50
         with _progress(len(students), "building sheets", show) as bar:
-            sheets = build_sheets(pairs, students, seed, progress=bar.update)
+            sheets = build_sheets(pairs, students, seed, progress=bar.update, points=points)
         with _progress(len(students), "rendering", show) as bar:
             target = write_new_folder(out, lambda tmp: render_all(sheets, pairs, fmt, tmp, solutions,
                                                                   progress=bar.update, key=key,
@@ -202,33 +239,54 @@ def sheet_command(topics: str, count: int, seed: int, roster: str | None, roster
 @click.command("check", epilog=_EPILOG_CHECK)
 @click.option("--manifest", required=True, type=click.Path(dir_okay=False),
               help="manifest.json written by 'pgsym sheet'.")
-@click.option("--answers", required=True, type=click.Path(dir_okay=False), help="CSV of typed answers.")
+@click.option("--answers", required=True, type=click.Path(dir_okay=False),
+              help="A pgsym answers CSV, Canvas's Student Analysis CSV or Moodle's Responses CSV (detected).")
 @click.option("--out", type=click.Path(dir_okay=False),
               help="Also write every graded answer, with the mistake recognised and its feedback, to this CSV.")
 @click.option("--report", "report_dir", type=click.Path(file_okay=False),
               help="Write a grade report (index.html, report.json, SVG plots) into this new or empty folder.")
+@click.option("--feedback", "feedback_dir", type=click.Path(file_okay=False),
+              help="Write one feedback page per student (answers, verdicts, mistakes, worked solutions) into "
+                   "this new or empty folder.")
 @click.option("--canvas", type=click.Path(dir_okay=False), help="Write a Canvas gradebook CSV to import.")
 @click.option("--canvas-title", default="pgsym exercises", show_default=True,
-              help="Assignment title of the Canvas column.")
+              help="Assignment title of the Canvas (and Moodle) grade column.")
 @click.option("--canvas-id", type=click.IntRange(1), help="Canvas id of an existing assignment (column 'Title (id)').")
+@click.option("--moodle-grades", type=click.Path(dir_okay=False),
+              help="Write a CSV for Moodle's gradebook import (Grades > Import > CSV file).")
 @click.option("--details", is_flag=True, help="Print every wrong or unreadable answer.")
 @click.pass_context
 def check_command(ctx: click.Context, manifest: str, answers: str, out: str | None, report_dir: str | None,
-                  canvas: str | None, canvas_title: str, canvas_id: int | None, details: bool) -> None:
+                  feedback_dir: str | None, canvas: str | None, canvas_title: str, canvas_id: int | None,
+                  moodle_grades: str | None, details: bool) -> None:
     """Grade the answers of every student against the manifest, naming the common mistakes."""
     from ..atomic import Terminated, write_new_folder
     from ..csv_cells import csv_text
     from ..escaping import clean
-    from ..exercises.grading import grade_rows, read_answer_file, results_csv, summary
+    from ..exercises.grading import grade_rows, read_answer_file, results_csv, score_summary
+    from ..exercises.lms import grade_lms, read_lms_report
+    from ..exercises.points import points_text
+    from ..exercises.roundtrip import Graded, own_variants, people_of_manifest
     from ..exercises.sheets import load_manifest_data
 
     try:
         data = load_manifest_data(manifest)
-        rows, problems = read_answer_file(answers, data.keys)
-        report = grade_rows(data.keys, rows, data.mistakes)
+        lms = read_lms_report(answers, {v: labels for v, (_, labels) in data.variants.items()})
+        if lms is None:
+            rows, problems = read_answer_file(answers, data.keys)
+            report = grade_rows(data.keys, rows, data.mistakes, data.points)
+            graded = Graded(report, people_of_manifest(data), own_variants(data), list(problems), "pgsym")
+        else:
+            result = grade_lms(lms, data.keys, data.variants, data.mistakes, data.points)
+            graded = Graded(result.report, result.people, result.variants, result.problems, lms.platform)
     except PgsymError as err:
         raise fail(err) from None
-    click.echo(csv_text([["student", "right", "questions"], *summary(report)]), nl=False)
+    report, problems = graded.report, graded.problems
+    right = {s: (r, n) for s, r, n in ((s, sum(x.correct for x in rs), sum(x.counted for x in rs))
+                                       for s, rs in report.items())}
+    click.echo(csv_text([["student", "right", "questions", "score", "points"],
+                         *[[s, *right[s], points_text(got), points_text(worth)]
+                           for s, got, worth in score_summary(report)]]), nl=False)
     unreadable = [r for rs in report.values() for r in rs if r.unreadable]
     for rs in report.values():
         for r in rs:
@@ -238,19 +296,27 @@ def check_command(ctx: click.Context, manifest: str, answers: str, out: str | No
     for message in problems:
         click.echo(clean(f"  {message}")[:1000], err=True)
     if unreadable or problems:
-        click.echo(f"{len(unreadable)} answer(s) could not be read or were given twice, and {len(problems)} line(s) "
-                   "of the answers file were skipped (see above); every other answer was graded.", err=True)
+        click.echo(f"{len(unreadable)} answer(s) could not be read or were given twice, and {len(problems)} "
+                   "problem(s) with the answers file (see above); every other answer was graded.", err=True)
     try:
         if report_dir:
             from ..exercises.report import report_data, write_report
 
-            numbers = report_data(report, data.names, data.topics, problems)
+            numbers = report_data(report, graded.names, data.topics, problems)
             title = f"Grade report: {Path(manifest).resolve().parent.name or 'exercises'}"
             write_new_folder(report_dir, lambda tmp: write_report(tmp, numbers, title))
+        if feedback_dir:
+            from ..exercises.feedback import write_feedback
+
+            write_new_folder(feedback_dir, lambda tmp: write_feedback(tmp, graded, data, canvas_title))
         if canvas:
             from ..exercises.canvas import canvas_csv
 
-            _write_text(Path(canvas), canvas_csv(report, data.names, canvas_title, canvas_id))
+            _write_text(Path(canvas), canvas_csv(report, graded.names, canvas_title, canvas_id, graded.people))
+        if moodle_grades:
+            from ..exercises.moodle_grades import moodle_grades_csv
+
+            _write_text(Path(moodle_grades), moodle_grades_csv(report, graded.people, canvas_title))
         if out:
             _write_text(Path(out), results_csv(report, problems))
     except PgsymError as err:

@@ -14,6 +14,7 @@ from ..errors import PgsymError
 
 __all__ = [
     "AnswersFileError",
+    "LmsReportError",
     "ManifestError",
     "MathJaxMissingError",
     "MissingGlyphError",
@@ -72,3 +73,8 @@ class UnparsableAnswerError(PgsymError, ValueError):
 
 class MissingGlyphError(TeXFailedError):
     """A character of a sheet that no installed font has (it would print as an empty box)."""
+
+
+class LmsReportError(AnswersFileError):
+    """A Canvas or Moodle quiz report that cannot be graded: no question of the report carries a pgsym
+    variant id, a variant the manifest does not know, or a report of neither platform."""

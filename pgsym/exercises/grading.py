@@ -25,7 +25,8 @@ from __future__ import annotations
 
 import io
 from collections.abc import Iterable, Mapping, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
+from fractions import Fraction
 from pathlib import Path
 
 from ..csv_cells import write_csv
@@ -34,14 +35,19 @@ from .answers import matches, read_as
 from .errors import AnswersFileError, UnparsableAnswerError
 from .mistakes import recognise
 from .model import Answer, Mistake
+from .points import points_text
 from .reading import read_table, separator_hint
 from .roster import NOT_QUESTION_HEADERS, find_id_column, normal_header
 
 MAX_CSV_BYTES = MAX_FILE_BYTES
 
-__all__ = ["AnswersFileError", "Result", "grade_rows", "read_answer_file", "read_answers", "results_csv", "summary"]
+__all__ = ["AnswersFileError", "Result", "grade_rows", "read_answer_file", "read_answers", "results_csv",
+           "score_summary", "summary"]
 
 _SHOWN = 200  # characters of a given answer kept in a report
+
+NOT_ON_SHEET = "no such question on this student's sheet"
+NOT_IN_MANIFEST = "student not in the manifest"
 
 
 @dataclass(frozen=True)
@@ -62,6 +68,17 @@ class Result:
     unreadable: bool = False
     mistake: str = ""
     feedback: str = ""
+    points: Fraction = Fraction(1)
+
+    @property
+    def score(self) -> Fraction:
+        """The points earned: all of the part's points if right, none otherwise (partial credit is per part)."""
+        return Fraction(self.points) if self.correct else Fraction(0)
+
+    @property
+    def counted(self) -> bool:
+        """Whether the answer belongs to the student's sheet (not an extra column or an unknown student)."""
+        return self.reason not in (NOT_ON_SHEET, NOT_IN_MANIFEST)
 
 
 def read_answer_file(path: str | Path, keys: Mapping[str, Mapping[str, Answer]] | None = None,
@@ -142,11 +159,13 @@ def _shown(text: str) -> str:
 
 
 def grade_rows(keys: dict[str, dict[str, Answer]], rows: Iterable[tuple[str, str, str]],
-               mistakes: Mapping[str, Mapping[str, Sequence[Mistake]]] | None = None) -> dict[str, list[Result]]:
+               mistakes: Mapping[str, Mapping[str, Sequence[Mistake]]] | None = None,
+               points: Mapping[str, Mapping[str, Fraction]] | None = None) -> dict[str, list[Result]]:
     """Grade (student, label, text) triples against the keys; students without a row get 'no answer'.
 
     ``mistakes`` (student → label → candidates, as stored in the manifest) names the class of a
-    wrong answer that is a known mistake; a right answer is never one.
+    wrong answer that is a known mistake; a right answer is never one. ``points`` (student → label →
+    points, as stored in the manifest) says what each part is worth (1 when not given).
 
     Every answer is graded on its own: an answer that cannot be read (or is longer than
     :data:`pgsym.limits.MAX_ANSWER_CHARS`) is marked ``unreadable`` and the others are still graded;
@@ -158,7 +177,7 @@ def grade_rows(keys: dict[str, dict[str, Answer]], rows: Iterable[tuple[str, str
     for student, label, text in rows:
         if student not in keys:
             unknown.setdefault(student, []).append(Result(student, label, _shown(text), False,
-                                                          "student not in the manifest"))
+                                                          NOT_IN_MANIFEST))
             continue
         given.setdefault(student, {}).setdefault(label, []).append(text)
     report: dict[str, list[Result]] = {}
@@ -191,8 +210,9 @@ def grade_rows(keys: dict[str, dict[str, Answer]], rows: Iterable[tuple[str, str
                     results.append(Result(student, label, texts[0], False, str(err), unreadable=True))
         for label in sorted(set(typed) - set(answers)):
             results.append(Result(student, label, _shown(" | ".join(typed[label])), False,
-                                  "no such question on this student's sheet"))
-        report[student] = results
+                                  NOT_ON_SHEET))
+        worth = (points or {}).get(student, {})
+        report[student] = [replace(r, points=worth[r.label]) if r.label in worth else r for r in results]
     report.update(unknown)
     return report
 
@@ -203,26 +223,37 @@ def summary(report: dict[str, list[Result]]) -> list[tuple[str, int, int]]:
     >>> summary({"s1": [Result("s1", "1", "x", True, ""), Result("s1", "2", "", False, "no answer")]})
     [('s1', 1, 2)]
     """
-    return [(s, sum(r.correct for r in rs), sum(r.reason != "no such question on this student's sheet"
-                                                 and r.reason != "student not in the manifest" for r in rs))
-            for s, rs in report.items()]
+    return [(s, sum(r.correct for r in rs), sum(r.counted for r in rs)) for s, rs in report.items()]
+
+
+def score_summary(report: Mapping[str, list[Result]]) -> list[tuple[str, Fraction, Fraction]]:
+    """(student, points earned, points possible) per student: the one sum every gradebook and report uses.
+
+    >>> score_summary({"s1": [Result("s1", "1", "x", True, "", points=Fraction(2)),
+    ...                       Result("s1", "2", "", False, "no answer", points=Fraction(1, 2))]})
+    [('s1', Fraction(2, 1), Fraction(5, 2))]
+    """
+    return [(s, sum((r.score for r in rs if r.counted), Fraction(0)),
+             sum((Fraction(r.points) for r in rs if r.counted), Fraction(0))) for s, rs in report.items()]
 
 
 def results_csv(report: dict[str, list[Result]], problems: Iterable[str] = ()) -> str:
     """Every graded answer as CSV: student, question, answer, correct, reason, mistake (its class) and
-    feedback (then one row per line of the answers file that could not be read). Cells a spreadsheet
+    feedback, the part's points and the score earned (then one row per line of the answers file that could
+    not be read). Cells a spreadsheet
     would run as a formula are neutralised (:func:`pgsym.csv_cells.safe_cell`).
 
     >>> print(results_csv({"=1+1": [Result("=1+1", "1", "-2+3", False, "wrong", False, "sign", "the sign is wrong")]}),
     ...       end="")
-    student,question,answer,correct,reason,mistake,feedback
-    '=1+1,1,'-2+3,0,wrong,sign,the sign is wrong
+    student,question,answer,correct,reason,mistake,feedback,points,score
+    '=1+1,1,'-2+3,0,wrong,sign,the sign is wrong,1,0
     """
-    rows: list[list[object]] = [["student", "question", "answer", "correct", "reason", "mistake", "feedback"]]
+    rows: list[list[object]] = [["student", "question", "answer", "correct", "reason", "mistake", "feedback",
+                                 "points", "score"]]
     for results in report.values():
-        rows += [[r.student, r.label, _shown(r.given), int(r.correct), r.reason, r.mistake, r.feedback]
-                 for r in results]
-    rows += [["", "", "", 0, message, "", ""] for message in problems]
+        rows += [[r.student, r.label, _shown(r.given), int(r.correct), r.reason, r.mistake, r.feedback,
+                  points_text(r.points), points_text(r.score)] for r in results]
+    rows += [["", "", "", 0, message, "", "", "", ""] for message in problems]
     buf = io.StringIO()
     write_csv(buf, rows)
     return buf.getvalue()

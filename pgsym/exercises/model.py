@@ -13,6 +13,7 @@ True
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass, field
 from fractions import Fraction
 from typing import Any
@@ -236,6 +237,7 @@ class Part:
     answer: Answer
     choices: tuple[str, ...] = ()
     mistakes: tuple[Mistake, ...] = ()
+    points: Fraction = Fraction(1)
 
 
 @dataclass(frozen=True)
@@ -260,10 +262,37 @@ class Exercise:
             "level": self.level,
             "seed": self.seed,
             "params": self.params,
-            "parts": [{"label": p.label, "choices": list(p.choices), **p.answer.to_json(),
+            "title": self.title,
+            "statement": self.statement,
+            "solution": list(self.solution),
+            "parts": [{"label": p.label, "prompt": p.prompt, "choices": list(p.choices), **p.answer.to_json(),
+                       "points": _fraction_text(Fraction(p.points)),
                        **({"mistakes": [m.to_json() for m in p.mistakes]} if p.mistakes else {})}
                       for p in self.parts],
         }
+
+    @property
+    def points(self) -> Fraction:
+        """The points of the whole exercise: the sum over its parts."""
+        return sum((Fraction(p.points) for p in self.parts), Fraction(0))
+
+
+def variant_id(form: str, slot: int) -> str:
+    """The identity of one exercise variant: the form id of its sheet and its slot, e.g. ``F-0A1B2C3D4E#2``.
+
+    It travels with every LMS question (title, question text, STACK question note) so that an answer
+    typed in Moodle or Canvas is graded against the variant the student actually saw.
+
+    >>> variant_id("F-0A1B2C3D4E", 2)
+    'F-0A1B2C3D4E#2'
+    >>> VARIANT_PATTERN.search("[pgsym F-0A1B2C3D4E#2] Join").group(0)
+    'F-0A1B2C3D4E#2'
+    """
+    return f"{form}#{int(slot)}"
+
+
+#: A variant id inside a longer text (a question title, a question's text or note).
+VARIANT_PATTERN = re.compile(r"F-[0-9A-F]{10}#[0-9]{1,3}")
 
 
 @dataclass(frozen=True)

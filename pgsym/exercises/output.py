@@ -12,7 +12,8 @@ solutions) and the key table of the class (student × question → canonical ans
     sheets.pdf key.pdf key-table.pdf   the same through LuaLaTeX (compiled side by side); each sheet starts
                                        on an odd page and numbers its pages from 1
     pdf/ key/pdf/                      one PDF per student, cut from sheets.pdf and key.pdf
-    moodle.xml  qti.zip                Moodle XML and the Canvas QTI 1.2 package
+    stack.xml                          Moodle STACK questions (graded up to scale, pgsym's mistake feedback)
+    moodle.xml  qti.zip                Moodle Cloze questions and the Canvas QTI 1.2 package
 
 Everything is written into a temporary folder next to the target and moved into place only when
 every format succeeded, so an error (for example TeX failing), Ctrl-C or SIGTERM leaves no partial
@@ -29,13 +30,13 @@ from collections.abc import Callable, Sequence
 from concurrent.futures import Future, ThreadPoolExecutor
 from pathlib import Path
 
-from . import key_table, render_html, render_ipynb, render_md, render_moodle, render_qti, render_tex
+from . import key_table, render_html, render_ipynb, render_md, render_moodle, render_qti, render_stack, render_tex
 from .model import Sheet
 from .sheets import manifest_json
 
 __all__ = ["FORMATS", "KEY_HEADING", "parse_formats", "render_all"]
 
-FORMATS = ("md", "tex", "pdf", "html", "ipynb", "moodle", "qti")
+FORMATS = ("md", "tex", "pdf", "html", "ipynb", "moodle", "stack", "qti")
 
 #: The heading of the answer key's pages.
 KEY_HEADING = "Answer key"
@@ -108,6 +109,8 @@ def render_all(sheets: Sequence[Sheet], topics: Sequence[tuple[str, int]], forma
                 write("key-table.tex", key_table.render_tex(sheets, render_tex.preamble))
         if "moodle" in formats:
             write("moodle.xml", render_moodle.render_quiz(sheets, solutions))
+        if "stack" in formats:
+            write("stack.xml", render_stack.render_stack_quiz(sheets))
         if "qti" in formats:
             write("qti.zip", render_qti.render_package(sheets, topics))
         for name, future in pdfs.items():

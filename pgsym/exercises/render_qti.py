@@ -1,14 +1,23 @@
-"""IMS QTI 1.2 package (a zip) for Canvas: one question bank per topic, one quiz with a question group per
-topic that draws one of its variants.
+"""IMS QTI 1.2 package (a zip) for Canvas: one question bank per exercise slot holding every student's variant,
+and one quiz whose question groups draw one variant from each bank.
+
+Canvas quizzes compare typed answers as strings, never up to a nonzero scale, and cannot give a student
+their own variant. So each variant is an **essay question that Canvas does not grade**: the student
+types the answer as text (pgsym's syntax, e.g. ``(1, -2, 0)``; any nonzero multiple, fractions, a
+Unicode minus are all fine), and ``pgsym check`` grades Canvas's Student Analysis report up to scale,
+naming the mistakes (:mod:`pgsym.exercises.lms`); the Canvas gradebook CSV it writes carries the
+points. The variant id (:func:`~pgsym.exercises.model.variant_id`) is the first line of every
+question's text and part of its title, so the report says which variant each student saw. The worked
+solution is the item's general feedback (``itemfeedback`` ``general_fb``), which Canvas shows as the
+quiz's settings allow; the mistakes are named by ``pgsym check`` (``--feedback`` pages), since Canvas
+never sees a verdict.
 
 The zip holds ``imsmanifest.xml`` (IMS Content Packaging), ``banks/bank-NN-TOPIC.xml`` (an
-``objectbank`` per exercise slot, every student's variant an ``item``) and ``quiz.xml`` (an
-``assessment`` whose sections are Canvas question groups, ``selection_number`` 1, holding the same
-variants). Answers are asked in canonical form, the text ``pgsym check`` reads
-(:meth:`~pgsym.exercises.model.Answer.display`; homogeneous answers as coprime integers, first nonzero
-entry positive): an integer is a ``numerical_question`` (exact), a single other answer a
-``short_answer_question``, a multiple-choice part a ``multiple_choice_question`` and several parts a
-``fill_in_multiple_blanks_question`` with one blank per part.
+``objectbank`` per slot, every variant an ``item``, imported once) and ``quiz.xml`` (an ``assessment``
+whose sections are question groups that *refer* to the banks through ``sourcebank_ref`` with
+``selection_number`` 1, as Canvas's own QTI export writes groups linked to a bank; no item is repeated).
+Points are the exercise's points (:mod:`pgsym.exercises.points`): ``points_possible`` of every item
+and ``points_per_item`` of every group, the same numbers as the STACK questions and the gradebooks.
 
 Question text is HTML made by :func:`~pgsym.escaping.to_html` (math as ``\\(...\\)``, which Canvas
 typesets) carried as escaped text; names and titles go through :func:`~pgsym.escaping.xml_escape`.
@@ -28,10 +37,10 @@ import io
 import re
 import zipfile
 from collections.abc import Sequence
-from fractions import Fraction
 
 from ..escaping import one_line, to_html, xml_escape
-from .model import KIND_HINTS, Exercise, Part, Sheet
+from .model import Exercise, Part, Sheet, variant_id
+from .points import points_text
 
 __all__ = ["QTI_NAMESPACE", "render_package"]
 
@@ -51,96 +60,52 @@ def _material(html_text: str) -> str:
     return f'<material><mattext texttype="text/html">{xml_escape(html_text)}</mattext></material>'
 
 
-def _accepted(part: Part) -> list[str]:
-    """The texts accepted for a part: the canonical text, and the same without spaces."""
-    text = part.answer.display()
-    return list(dict.fromkeys([text, text.replace(" ", "")]))
+_HOW = {
+    "projective": "a vector such as (1, -2, 0); any nonzero multiple is right",
+    "vector": "a vector such as (1/2, -3); fractions are exact",
+    "scalar": "a number such as -3/4",
+    "integer": "an integer",
+    "matrix": "a matrix such as [[1, 0, 2], [0, 1, 0], [0, 0, 1]]; any nonzero multiple is right",
+    "matrix_exact": "a matrix such as [[1, 1/2], [0, 1]]",
+    "choice": "one letter",
+}
 
 
-def _is_integer(part: Part) -> bool:
-    return part.answer.kind in ("integer", "scalar") and Fraction(part.answer.value).denominator == 1
-
-
-def _blank(label: str) -> str:
-    return "q" + re.sub(r"[^A-Za-z0-9]", "_", label)
-
-
-def _prompt(part: Part, blank: str | None) -> str:
-    canonical = ("" if part.answer.kind in ("choice", "integer") else
-                 f" Type it exactly as {KIND_HINTS[part.answer.kind]}; homogeneous answers as coprime integers "
-                 "with the first nonzero entry positive.")
-    text = f"<p><b>[{part.label}]</b> {to_html(part.prompt)}{html.escape(canonical, quote=False)}"
+def _prompt(part: Part, many: bool) -> str:
+    how = f"Type {_HOW[part.answer.kind]}" + (f", on a line starting with {part.label}:" if many else "") + "."
+    text = f"<p><b>[{html.escape(part.label)}]</b> {to_html(part.prompt)} <i>{html.escape(how)}</i>"
     if part.choices:
         text += '<ol type="A">' + "".join(f"<li>{to_html(c)}</li>" for c in part.choices) + "</ol>"
-    if blank is not None:
-        text += f" Answer: [{blank}]"
     return text + "</p>"
 
 
 def _item(ident: str, sheet: Sheet, ex: Exercise) -> str:
-    title = one_line(f"{ex.slot}. {ex.title} [{sheet.form_id} / {sheet.student_id}]")
-    single = len(ex.parts) == 1
-    part = ex.parts[0]
-    if single and part.answer.kind == "choice":
-        qtype = "multiple_choice_question"
-    elif single and _is_integer(part):
-        qtype = "numerical_question"
-    elif single:
-        qtype = "short_answer_question"
-    else:
-        qtype = "fill_in_multiple_blanks_question"
-    blanks = qtype == "fill_in_multiple_blanks_question"
-    body = f"<p>{to_html(ex.statement)}</p>" + "".join(_prompt(p, _blank(p.label) if blanks else None)
-                                                     for p in ex.parts)
-    out = [f'<item ident="{ident}" title="{xml_escape(title)}">',
-           "<itemmetadata><qtimetadata>" + _field("question_type", qtype) + _field("points_possible", "1.0")
-           + _field("original_answer_ids", "") + "</qtimetadata></itemmetadata>",
-           "<presentation>" + _material(body)]
-    conditions: list[str] = []
-    if qtype == "multiple_choice_question":
-        labels = "".join(f'<response_label ident="{letter}">' + _material(to_html(choice)) + "</response_label>"
-                         for letter, choice in zip("ABCDEFGH", part.choices, strict=False))
-        out.append(f'<response_lid ident="response1" rcardinality="Single"><render_choice>{labels}'
-                   "</render_choice></response_lid>")
-        conditions.append(f'<varequal respident="response1">{xml_escape(str(part.answer.value))}</varequal>')
-    elif qtype == "numerical_question":
-        value = str(Fraction(part.answer.value).numerator)
-        out.append('<response_str ident="response1" rcardinality="Single"><render_fib fibtype="Decimal">'
-                   '<response_label ident="answer1"/></render_fib></response_str>')
-        conditions.append(f'<or><varequal respident="response1">{value}</varequal><and>'
-                          f'<vargte respident="response1">{value}</vargte><varlte respident="response1">{value}'
-                          "</varlte></and></or>")
-    elif qtype == "short_answer_question":
-        out.append('<response_str ident="response1" rcardinality="Single"><render_fib>'
-                   '<response_label ident="answer1" rshuffle="No"/></render_fib></response_str>')
-        conditions.append("<or>" + "".join(f'<varequal respident="response1">{xml_escape(t)}</varequal>'
-                                           for t in _accepted(part)) + "</or>")
-    else:
-        for p in ex.parts:
-            blank = _blank(p.label)
-            accepted = [str(p.answer.value)] if p.answer.kind == "choice" else _accepted(p)
-            labels = "".join(f'<response_label ident="{ident}_{blank}_{i}">'
-                             f'<material><mattext texttype="text/plain">{xml_escape(t)}</mattext></material>'
-                             "</response_label>" for i, t in enumerate(accepted))
-            out.append(f'<response_lid ident="response_{blank}"><material><mattext>{blank}</mattext></material>'
-                       f"<render_choice>{labels}</render_choice></response_lid>")
-    out.append("</presentation>")
-    out.append('<resprocessing><outcomes><decvar maxvalue="100" minvalue="0" varname="SCORE" vartype="Decimal"/>'
-               "</outcomes>")
-    if blanks:
-        share = f"{100 / len(ex.parts):.2f}"
-        for p in ex.parts:
-            blank = _blank(p.label)
-            n = 1 if p.answer.kind == "choice" else len(_accepted(p))
-            alternatives = "".join(f'<varequal respident="response_{blank}">{ident}_{blank}_{i}</varequal>'
-                                   for i in range(n))
-            out.append(f"<respcondition><conditionvar><or>{alternatives}</or></conditionvar>"
-                       f'<setvar varname="SCORE" action="Add">{share}</setvar></respcondition>')
-    else:
-        out.append(f'<respcondition continue="No"><conditionvar>{conditions[0]}</conditionvar>'
-                   '<setvar varname="SCORE" action="Set">100</setvar></respcondition>')
-    out.append("</resprocessing></item>")
-    return "".join(out)
+    vid = variant_id(sheet.form_id, ex.slot)
+    title = one_line(f"{ex.slot}. {ex.title} [pgsym {vid}]")
+    many = len(ex.parts) > 1
+    body = (f"<p>pgsym {vid}</p><p>{to_html(ex.statement)}</p>" + "".join(_prompt(p, many) for p in ex.parts)
+            + "<p><i>Canvas does not grade this answer: pgsym grades it after the quiz, up to scale where the "
+            "answer is homogeneous, and the score reaches the gradebook with the instructor's import.</i></p>")
+    return "".join([
+        f'<item ident="{ident}" title="{xml_escape(title)}">',
+        "<itemmetadata><qtimetadata>" + _field("question_type", "essay_question")
+        + _field("points_possible", points_text(ex.points)) + _field("original_answer_ids", "")
+        + "</qtimetadata></itemmetadata>",
+        "<presentation>" + _material(body)
+        + '<response_str ident="response1" rcardinality="Single"><render_fib><response_label ident="answer1" '
+        'rshuffle="No"/></render_fib></response_str></presentation>',
+        '<resprocessing><outcomes><decvar maxvalue="100" minvalue="0" varname="SCORE" vartype="Decimal"/>'
+        '</outcomes><respcondition continue="Yes"><conditionvar><other/></conditionvar>'
+        '<displayfeedback feedbacktype="Response" linkrefid="general_fb"/></respcondition>'
+        '<respcondition continue="No"><conditionvar><other/></conditionvar></respcondition></resprocessing>',
+        '<itemfeedback ident="general_fb"><flow_mat>' + _material(_solution(ex)) + "</flow_mat></itemfeedback>",
+        "</item>"])
+
+
+def _solution(ex: Exercise) -> str:
+    """The worked solution and the expected answers: Canvas's general feedback of the item."""
+    return ("<ol>" + "".join(f"<li>{to_html(step)}</li>" for step in ex.solution) + "</ol>"
+            + "".join(f"<p><b>[{html.escape(p.label)}]</b> {html.escape(p.answer.display())}</p>" for p in ex.parts))
 
 
 def _slug(topic: str) -> str:
@@ -149,6 +114,7 @@ def _slug(topic: str) -> str:
 
 def render_package(sheets: Sequence[Sheet], topics: Sequence[tuple[str, int]], title: str = "pgsym exercises") -> bytes:
     """The QTI 1.2 zip of every variant of every student (``topics`` as given to ``pgsym sheet``)."""
+    del topics  # the slots of the sheets say everything
     files: dict[str, str] = {}
     groups = []
     slots = sheets[0].exercises if sheets else ()
@@ -160,11 +126,11 @@ def render_package(sheets: Sequence[Sheet], topics: Sequence[tuple[str, int]], t
         files[f"banks/bank-{name}.xml"] = (
             _HEAD + f'<objectbank ident="{bank_id}"><qtimetadata>{_field("bank_title", bank_title)}</qtimetadata>\n'
             + "\n".join(items) + "\n</objectbank>\n</questestinterop>\n")
-        group_items = [_item(f"g{first.slot:02d}_{n:05d}", s, s.exercises[index]) for n, s in enumerate(sheets)]
+        worth = points_text(first.points)
         groups.append(f'<section ident="group_{first.slot:02d}" title="{xml_escape(bank_title)}"><selection_ordering>'
-                      "<selection><selection_number>1</selection_number><selection_extension>"
-                      "<points_per_item>1</points_per_item></selection_extension></selection></selection_ordering>\n"
-                      + "\n".join(group_items) + "\n</section>")
+                      f"<selection><sourcebank_ref>{bank_id}</sourcebank_ref><selection_number>1</selection_number>"
+                      f"<selection_extension><points_per_item>{worth}</points_per_item></selection_extension>"
+                      "</selection></selection_ordering></section>")
     files["quiz.xml"] = (_HEAD + f'<assessment ident="pgsym_quiz" title="{xml_escape(one_line(title))}">'
                          f'<qtimetadata>{_field("cc_maxattempts", "1")}</qtimetadata>'
                          '<section ident="root_section">\n' + "\n".join(groups)

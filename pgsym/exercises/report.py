@@ -4,7 +4,8 @@ The page is self-contained: no script, no network (a Content-Security-Policy for
 plots by Matplotlib inlined as SVG, every name, id and typed answer escaped as text (typed answers in
 monospace, so no math engine is needed). It shows the score histogram, the success rate of every
 question, the mistakes recognised, the most frequent wrong answers with their mistake class and one
-row per student with the feedback on each wrong answer. ``report.json`` holds the same numbers.
+row per student with the points earned (the same sum as the gradebooks: :mod:`pgsym.exercises.points`)
+and the feedback on each wrong answer. ``report.json`` holds the same numbers.
 
 >>> from pgsym.exercises.grading import Result
 >>> results = {"s1": [Result("s1", "1", "(1, 2, 1)", False, "wrong", mistake="ideal-as-finite", feedback="…"),
@@ -22,12 +23,14 @@ import json
 import statistics
 from collections import Counter
 from collections.abc import Iterable, Mapping
+from fractions import Fraction
 from pathlib import Path
 from typing import Any
 
 from ..escaping import html_escape, one_line
 from .grading import Result
 from .mistakes import MISTAKE_CLASSES
+from .points import points_text
 
 __all__ = ["REPORT_FILES", "report_data", "report_html", "write_report"]
 
@@ -57,13 +60,17 @@ def report_data(report: Mapping[str, list[Result]], names: Mapping[str, str], to
     for sid, results in report.items():
         if sid not in names:
             continue
-        graded = [r for r in results if r.reason != "no such question on this student's sheet"]
+        graded = [r for r in results if r.counted]
         right = sum(r.correct for r in graded)
+        score = sum((r.score for r in graded), Fraction(0))
+        worth = sum((Fraction(r.points) for r in graded), Fraction(0))
         students.append({
             "id": sid, "name": names[sid], "right": right, "questions": len(graded),
+            "score": points_text(score), "points": points_text(worth),
             "percent": _percent(right, len(graded)),
             "answers": [{"question": r.label, "answer": r.given, "correct": r.correct, "reason": r.reason,
-                         "mistake": r.mistake, "feedback": r.feedback} for r in results],
+                         "mistake": r.mistake, "feedback": r.feedback, "points": points_text(r.points),
+                         "score": points_text(r.score)} for r in results],
         })
     most = max((s["questions"] for s in students), default=0)
     histogram = [0] * (most + 1)
@@ -239,8 +246,9 @@ def report_html(data: dict[str, Any], scores_svg: str, questions_svg: str, title
         head = f"{len(wrong)} not right" + (f' — <span class="mistake">{_e(codes)}</span>' if codes else "")
         detail = f"<details><summary>{head}</summary><ul>{items}</ul></details>" if wrong else ""
         rows.append(f'<tr>{_who(st["id"])}{_who(st["name"])}<td class="num">{st["right"]}</td>'
-                    f'<td class="num">{st["questions"]}</td><td class="num">{st["percent"]}</td><td>{detail}</td></tr>')
-    parts.append(_table(["id", "name", "right", "questions", "%", "feedback"], rows, "students"))
+                    f'<td class="num">{st["questions"]}</td><td class="num">{st["percent"]}</td>'
+                    f'<td class="num">{st["score"]} / {st["points"]}</td><td>{detail}</td></tr>')
+    parts.append(_table(["id", "name", "right", "questions", "%", "score", "feedback"], rows, "students"))
     if data["unknown_students"]:
         parts.append("<p>Answers of ids not in the manifest (not graded): "
                      + ", ".join(_e(u) for u in data["unknown_students"][:200]) + "</p>")

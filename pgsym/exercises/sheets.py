@@ -12,8 +12,9 @@ True
 from __future__ import annotations
 
 import json
-from collections.abc import Callable, Iterable, Sequence
+from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass, field
+from fractions import Fraction
 from pathlib import Path
 from typing import Any
 
@@ -22,7 +23,8 @@ from ..escaping import one_line
 from ..limits import MAX_NAME_CHARS
 from .errors import ManifestError, TemplateError, UnknownTopicError
 from .mistakes import MAX_MISTAKES
-from .model import Answer, Mistake, Sheet
+from .model import Answer, Mistake, Sheet, variant_id
+from .points import MAX_POINTS, apply_points
 from .reading import load_json
 from .registry import get_template
 from .roster import read_roster
@@ -35,6 +37,9 @@ MANIFEST_VERSION = 1
 
 #: Characters of a mistake's feedback kept from a manifest.
 MAX_MESSAGE_CHARS = 300
+
+#: Characters of a statement, prompt, title or solution step kept from a manifest.
+MAX_TEXT_CHARS = 20_000
 
 
 def parse_topics(spec: str | Sequence[str], default_level: int = 1) -> list[tuple[str, int]]:
@@ -63,8 +68,8 @@ def parse_topics(spec: str | Sequence[str], default_level: int = 1) -> list[tupl
 
 
 def build_sheet(topics: Sequence[tuple[str, int]] | Sequence[str], student_id: str, student_name: str,
-                master_seed: int) -> Sheet:
-    """The sheet of one student.
+                master_seed: int, points: Mapping[str, Sequence[Fraction]] | None = None) -> Sheet:
+    """The sheet of one student; ``points`` as :func:`pgsym.exercises.points.parse_points` reads them.
 
     >>> build_sheet(["join"], "s1", "Ada", 1).exercises[0].topic
     'join'
@@ -75,13 +80,15 @@ def build_sheet(topics: Sequence[tuple[str, int]] | Sequence[str], student_id: s
     for slot, ((topic, level), key) in enumerate(zip(pairs, keys, strict=True), start=1):
         seed = variant_seed(master_seed, student_id, f"{key}@{level}")
         exercises.append(get_template(topic).generate(seed, level, slot))
-    return Sheet(student_id, student_name, form_id(master_seed, student_id, [f"{k}@{lv}" for k, (_, lv) in
-                                                                              zip(keys, pairs, strict=True)]),
-                 master_seed, tuple(exercises))
+    sheet = Sheet(student_id, student_name, form_id(master_seed, student_id, [f"{k}@{lv}" for k, (_, lv) in
+                                                                               zip(keys, pairs, strict=True)]),
+                  master_seed, tuple(exercises))
+    return apply_points([sheet], points)[0]
 
 
 def build_sheets(topics: Sequence[tuple[str, int]] | Sequence[str], students: Iterable[tuple[str, str]],
-                 master_seed: int, progress: Callable[[int], None] | None = None) -> list[Sheet]:
+                 master_seed: int, progress: Callable[[int], None] | None = None,
+                 points: Mapping[str, Sequence[Fraction]] | None = None) -> list[Sheet]:
     """The sheets of every student (``progress(1)`` is called after each one).
 
     >>> [s.student_id for s in build_sheets(["meet"], [("a", ""), ("b", "")], 3)]
@@ -90,7 +97,7 @@ def build_sheets(topics: Sequence[tuple[str, int]] | Sequence[str], students: It
     sheets = []
     for sid, name in students:
         try:
-            sheets.append(build_sheet(topics, sid, name, master_seed))
+            sheets.append(build_sheet(topics, sid, name, master_seed, points))
         except (UnknownTopicError, OSError):
             raise
         except PgsymError as err:  # say whose sheet failed (a template may fail for one variant only)
@@ -142,6 +149,22 @@ class ManifestData:
     mistakes: dict[str, dict[str, tuple[Mistake, ...]]] = field(default_factory=dict)
     names: dict[str, str] = field(default_factory=dict)
     topics: dict[str, str] = field(default_factory=dict)
+    #: student → label → points of the part (1 for a manifest written before points were stored)
+    points: dict[str, dict[str, Fraction]] = field(default_factory=dict)
+    #: variant id (:func:`~pgsym.exercises.model.variant_id`) → (student, the labels of its parts)
+    variants: dict[str, tuple[str, tuple[str, ...]]] = field(default_factory=dict)
+    #: variant id → what a feedback document shows: title, statement, prompts by label, solution steps
+    texts: dict[str, VariantText] = field(default_factory=dict)
+
+
+@dataclass(frozen=True)
+class VariantText:
+    """The text of one variant as stored in the manifest (empty for a manifest of an older version)."""
+
+    title: str = ""
+    statement: str = ""
+    prompts: dict[str, str] = field(default_factory=dict)
+    solution: tuple[str, ...] = ()
 
 
 def _read_mistake(data: Any, lines: dict[str, str]) -> Mistake:
@@ -170,12 +193,29 @@ def load_manifest_data(path: str | Path) -> ManifestData:
                                                            for m in part.get("mistakes", ())[:MAX_MISTAKES])
                                  for ex in student["exercises"] for part in ex["parts"]}
             out.names[sid] = one_line(str(student.get("name", "")))[:MAX_NAME_CHARS]
+            out.points[sid] = {str(part["label"]): _points(part.get("points", "1"))
+                               for ex in student["exercises"] for part in ex["parts"]}
+            form = str(student.get("form_id", ""))
             for ex in student["exercises"]:
-                for part in ex["parts"]:
-                    out.topics.setdefault(str(part["label"]), one_line(str(ex.get("topic", ""))))
+                labels = tuple(str(part["label"]) for part in ex["parts"])
+                for label in labels:
+                    out.topics.setdefault(label, one_line(str(ex.get("topic", ""))))
+                vid = variant_id(form, int(ex["slot"]))
+                out.variants[vid] = (sid, labels)
+                out.texts[vid] = VariantText(
+                    str(ex.get("title", ""))[:MAX_TEXT_CHARS], str(ex.get("statement", ""))[:MAX_TEXT_CHARS],
+                    {str(p["label"]): str(p.get("prompt", ""))[:MAX_TEXT_CHARS] for p in ex["parts"]},
+                    tuple(str(step)[:MAX_TEXT_CHARS] for step in ex.get("solution", ())[:100]))
     except (KeyError, TypeError, ValueError, ArithmeticError, AttributeError, IndexError) as err:
         raise ManifestError(f"the manifest {str(p)!r} is damaged: {type(err).__name__}: {err}") from None
     return out
+
+
+def _points(value: Any) -> Fraction:
+    points = Fraction(str(value))
+    if not 0 < points <= MAX_POINTS:
+        raise ValueError(f"points {points} out of range (0, {MAX_POINTS}]")
+    return points
 
 
 def load_manifest(path: str | Path) -> dict[str, dict[str, Answer]]:

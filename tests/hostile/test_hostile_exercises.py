@@ -33,7 +33,7 @@ from pgsym.cli import main
 from pgsym.csv_cells import csv_text, safe_cell
 from pgsym.errors import InputLimitError
 from pgsym.escaping import REPLACEMENT, math_is_safe, one_line
-from pgsym.exercises import html_math, render_html, render_ipynb, render_md, render_moodle, render_tex
+from pgsym.exercises import html_math, render_html, render_ipynb, render_md, render_moodle, render_stack, render_tex
 from pgsym.exercises.errors import AnswersFileError, ManifestError, RosterError, TeXFailedError
 from pgsym.exercises.grading import read_answers
 from pgsym.exercises.model import Answer, Exercise, Part, Sheet
@@ -245,7 +245,31 @@ def test_moodle_shows_payload_literally(name, secret_file):
         assert math_is_safe("".join(groups)), groups
     feedback = questions[0].find("generalfeedback/text").text
     assert f"Step {visible(payload)}" in " ".join("".join(parse_page(feedback).text).split())
-    assert f"id-{name}" in questions[0].find("name/text").text
+    assert questions[0].find("name/text").text.endswith("[pgsym F-0000000000#1]")  # the variant, not the student
+
+
+@pytest.mark.parametrize("name", NAMES)
+def test_stack_shows_payload_literally(name, secret_file):
+    # STACK reads CASText in the question text: {@...@} and {#...#} run Maxima, [[...]] are inputs and
+    # blocks. The only ones left are those made from the key; the Maxima code holds the key only.
+    payload = payloads(secret_file)[name]
+    xml = render_stack.render_stack_quiz([hostile_sheet(name, payload)])
+    root = ElementTree.fromstring(xml.encode())
+    (question,) = root.findall("question[@type='stack']")
+    texts = [question.find(f"{f}/text").text or "" for f in ("questiontext", "generalfeedback")]
+    # every CASText field (all <text> but the question's name, which STACK shows as plain text)
+    texts += [n.text for field in question if field.tag != "name" for n in field.iter("text") if n.text]
+    for text in texts:
+        assert "{@" not in text and "{#" not in text, text[:200]
+        assert re.findall(r"\[\[[^\]]*\]\]", text) in ([], ["[[input:ans1]]", "[[validation:ans1]]",
+                                                          "[[feedback:prt1]]", "[[input:ans2]]",
+                                                          "[[validation:ans2]]", "[[feedback:prt2]]"])
+    shown = " ".join("".join(parse_page(question.find("questiontext/text").text).text).split())
+    assert f"Statement {visible(payload)}" in shown
+    maxima = question.findtext("questionvariables/text") + "".join(p.findtext("feedbackvariables/text")
+                                                                   for p in question.findall("prt"))
+    assert set(maxima) <= set("abcdefghijklmnopqrstuvwxyzABCDEFGH0123456789:;[](),=/-_\n \"") , maxima
+    assert question.find("name/text").text.endswith("[pgsym F-0000000000#1]")
 
 
 # ----------------------------------------------------------------------------------- LaTeX and PDF
@@ -424,7 +448,7 @@ def test_grades_csv_neutralises_formulas(made):
     assert len(cells) > 20 and not [c for c in cells if c.startswith(("=", "+", "-", "@", "\t", "\r"))]
     assert "'=1+2,1," in (base / "grades.csv").read_text() and "'=2+5" in (base / "grades.csv").read_text()
     assert "'-1+1" in (base / "grades.csv").read_text() and "'+999/1000" in (base / "grades.csv").read_text()
-    assert result.stdout.splitlines()[1:3] == ["'=1+2,1,2", "'@SUM(1),0,2"]
+    assert result.stdout.splitlines()[1:3] == ["'=1+2,1,2,1,2", "'@SUM(1),0,2,0,2"]  # right, questions, points
 
 
 # ----------------------------------------------------------------------------------- readers
@@ -521,7 +545,8 @@ def test_ten_megabyte_cell_costs_only_that_answer(made):
     result = check("--manifest", str(base / "out" / "manifest.json"), "--answers", str(base / "answers.csv"),
                    "--out", str(base / "grades.csv"))
     assert result.exit_code == 3
-    assert result.stdout.splitlines() == ["student,right,questions", "'=1+2,1,2", "'@SUM(1),0,2", "s3,2,2"]
+    assert result.stdout.splitlines() == ["student,right,questions,score,points", "'=1+2,1,2,1,2", "'@SUM(1),0,2,0,2",
+                                          "s3,2,2,2,2"]
     assert f"=1+2 [1]: cannot read the answer: it is 10000000 characters long; at most {MAX_ANSWER_CHARS}" \
         in result.stderr
     grades = (base / "grades.csv").read_text()
@@ -543,7 +568,7 @@ def test_two_answers_to_one_question_are_reported(made):
                    "--out", str(base / "grades.csv"))
     assert result.exit_code == 3
     assert "s3 [1]: answered 2 times; not graded" in result.stderr
-    assert result.stdout.splitlines()[-1] == "s3,1,2"
+    assert result.stdout.splitlines()[-1] == "s3,1,2,1,2"
     assert "answered 2 times" in (base / "grades.csv").read_text()
     # the same in the wide format: a label twice in the header, with different answers
     (base / "wide.csv").write_text(f'id,1,1,2\ns3,"{good}","(1, 2, 3)",{keys["s3"]["2"]["value"]}\n')
@@ -552,7 +577,7 @@ def test_two_answers_to_one_question_are_reported(made):
     # the same answer twice (a row pasted again) is one answer, graded
     (base / "wide.csv").write_text(f'id,1,1,2\ns3,"{good}","{good}",{keys["s3"]["2"]["value"]}\n')
     result = check("--manifest", str(base / "out" / "manifest.json"), "--answers", str(base / "wide.csv"))
-    assert result.exit_code == 0 and result.stdout.splitlines()[-1] == "s3,2,2"
+    assert result.exit_code == 0 and result.stdout.splitlines()[-1] == "s3,2,2,2,2"  # 2 of 2 right: 2 of 2 points
 
 
 def test_all_readable_exits_zero_and_help_documents_exit_codes(made):
@@ -561,7 +586,8 @@ def test_all_readable_exits_zero_and_help_documents_exit_codes(made):
                                      for label, p in parts.items()]
     (base / "answers.csv").write_text("\n".join(rows) + "\n")
     result = check("--manifest", str(base / "out" / "manifest.json"), "--answers", str(base / "answers.csv"))
-    assert result.exit_code == 0 and result.stdout.splitlines()[1:] == ["'=1+2,2,2", "'@SUM(1),2,2", "s3,2,2"]
+    assert result.exit_code == 0 and result.stdout.splitlines()[1:] == ["'=1+2,2,2,2,2", "'@SUM(1),2,2,2,2",
+                                                                        "s3,2,2,2,2"]
     helptext = " ".join(CliRunner().invoke(main, ["check", "--help"]).output.split())
     assert "Exit status: 0 every answer was read and graded" in helptext
     assert "3 some answers could not be read or were given twice" in helptext
