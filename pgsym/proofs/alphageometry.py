@@ -1,0 +1,941 @@
+"""AlphaGeometry's problems (its construction language) translated into pgsym's statement language.
+
+AlphaGeometry (google-deepmind/alphageometry) writes a problem as one line of clauses, each defining new
+points by one or two constructions of its ``defs.txt``, then a goal after ``?``::
+
+    a b c = triangle a b c; o = circle o a b c; d = on_line d a b, on_circle d o a ? cong o d o a
+
+:func:`translate` gives the same figure as text of :mod:`pgsym.proofs.language`, which
+:func:`~pgsym.proofs.language.parse_statement` reads and the engine proves. A clause with one construction
+of a one-dimensional locus is a free point on it (one parameter); two loci separated by a comma are
+intersected. AlphaGeometry chooses between the two points of a line and a circle (or two circles)
+numerically: a point already in the figure is avoided, otherwise either is taken at random. So:
+
+* when a point defined earlier lies on both loci *by construction* (tracked here: the points known on each
+  line and circle), the new point is the other one, which is rational: ``reflect P (foot O l)`` for a line
+  l and a circle of centre O through P, ``reflect P (join O O')`` for two circles;
+* otherwise either point is meant, which is pgsym's ``intersection`` (a conclusion must hold for both);
+* a choice pgsym cannot name (a ray meeting a circle picks the point on the ray) is refused with
+  :class:`~pgsym.proofs.errors.UnsupportedConstructionError` ("needs a branch condition"), never guessed.
+
+Goals: ``coll para perp cong cyclic eqangle eqratio midp simtri contri``. Constructions pgsym cannot
+express are refused with the same error, naming the construction.
+
+>>> print(translate("a b c = triangle a b c; d = midpoint d a b ? coll a b d"))
+expect true
+points a b c
+point d = midpoint a b
+prove collinear a b d
+>>> translate("a b c = triangle a b c; x y = trisect x y a b c ? coll a b x")
+Traceback (most recent call last):
+...
+pgsym.proofs.errors.UnsupportedConstructionError: unsupported: trisect (no construction of pgsym's statement language)
+"""
+
+from __future__ import annotations
+
+import os
+import re
+import time
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+from ..errors import InputLimitError, PgsymError
+from ..limits import MAX_ARGUMENT_CHARS, MAX_STATEMENT_LINE_CHARS, MAX_STATEMENT_NAME_CHARS, read_text_file
+from .errors import AlphaGeometryError, StatementError, UnsupportedConstructionError
+from .language import KEYWORDS
+
+__all__ = ["MAX_AG_BYTES", "MAX_AG_LINE_CHARS", "MAX_AG_PROBLEMS", "OUTCOMES", "Outcome", "Problem",
+           "read_alphageometry", "read_alphageometry_file", "solve", "translate"]
+
+MAX_AG_BYTES = 2_000_000
+"""The largest problem file read (the two public sets are about 60 kB)."""
+
+MAX_AG_LINE_CHARS = 4 * MAX_STATEMENT_LINE_CHARS
+"""The longest line of a problem file (the longest public problem has about 600 characters)."""
+
+MAX_AG_PROBLEMS = 5000
+"""The most problems in one file."""
+
+MAX_AG_CLAUSES = 100
+"""The most clauses (points defined) in one problem."""
+
+_NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]*\Z")
+_NUMBER = re.compile(r"-?[0-9]{1,4}\Z")
+
+
+@dataclass(frozen=True)
+class Problem:
+    """One problem of a file: its name, the line it is on, and the statement text or the error that refused it."""
+
+    name: str
+    line: int
+    source: str
+    statement: str | None = None
+    error: StatementError | None = None
+
+
+def read_alphageometry(text: str, source: str = "") -> list[Problem]:
+    """Read a problem file of AlphaGeometry (a name line, then the problem line) into translated problems.
+
+    Every problem is translated or carries its named error; only a file beyond the limits raises.
+
+    >>> [(p.name, p.error is None) for p in read_alphageometry("demo\\na b = segment a b; m = midpoint m a b"
+    ...                                                          " ? cong m a m b\\nbad\\na = foo a ? coll a a a")]
+    [('demo', True), ('bad', False)]
+    """
+    if len(text) > MAX_AG_BYTES:
+        raise AlphaGeometryError(f"the file has {len(text)} characters; at most {MAX_AG_BYTES} are read", source=source)
+    problems: list[Problem] = []
+    name, name_line = "", 0
+    for lineno, raw in enumerate(text.splitlines(), start=1):
+        if len(raw) > MAX_AG_LINE_CHARS:
+            raise AlphaGeometryError(f"a line of {len(raw)} characters; lines have at most {MAX_AG_LINE_CHARS}",
+                                     lineno, source=source)
+        line = raw.strip()
+        if not line or line.startswith("#"):
+            continue
+        bad = next((ch for ch in line if (ord(ch) < 32 and ch != "\t") or ch == "\x7f"), None)
+        if "=" not in line:  # a name line
+            if bad is not None or len(line) > MAX_ARGUMENT_CHARS:
+                raise AlphaGeometryError("a problem name must be printable text of at most "
+                                         f"{MAX_ARGUMENT_CHARS} characters", lineno, source=source)
+            name, name_line = line, lineno
+            continue
+        if len(problems) >= MAX_AG_PROBLEMS:
+            raise AlphaGeometryError(f"more than {MAX_AG_PROBLEMS} problems in one file", lineno, source=source)
+        this = name if name_line == lineno - 1 and name else f"problem-{len(problems) + 1}"
+        try:
+            if bad is not None:
+                raise AlphaGeometryError(f"a control character {bad!r}; a problem is plain text", lineno)
+            statement = translate(line, lineno, title=this)
+            problems.append(Problem(this, lineno, source, statement=statement))
+        except StatementError as err:
+            err.line, err.source = err.line or lineno, source
+            problems.append(Problem(this, lineno, source, error=err))
+    return problems
+
+
+def read_alphageometry_file(path: str | os.PathLike[str]) -> list[Problem]:
+    """Read a problem file (UTF-8, at most :data:`MAX_AG_BYTES` bytes) with :func:`read_alphageometry`."""
+    p = Path(path)
+    try:
+        text = read_text_file(p, "problem file", MAX_AG_BYTES)
+    except InputLimitError as err:
+        raise AlphaGeometryError(str(err), source=str(p)) from None
+    except UnicodeDecodeError as err:
+        line = err.object[: err.start].count(b"\n") + 1
+        raise AlphaGeometryError("the file is not UTF-8 text", line, source=str(p)) from None
+    except OSError as err:
+        raise AlphaGeometryError(f"cannot read the problem file: {err.strerror or err}", source=str(p)) from None
+    if "\x00" in text:
+        line = text[: text.index("\x00")].count("\n") + 1
+        raise AlphaGeometryError("the file holds binary data (a NUL byte); problems are plain text", line,
+                                 source=str(p))
+    return read_alphageometry(text, source=str(p))
+
+
+OUTCOMES = ("proved", "refuted", "unknown", "unsupported", "error")
+"""What :func:`solve` can say of a problem, in the order of the summaries."""
+
+
+@dataclass(frozen=True)
+class Outcome:
+    """The result of one problem: ``status`` one of :data:`OUTCOMES`, the engine's verdict when it ran, the
+    message of an unsupported construction or an error, and the seconds taken."""
+
+    problem: Problem
+    status: str
+    verdict: Any = None
+    message: str = ""
+    elapsed: float = 0.0
+
+
+def solve(problem: Problem, timeout: float | None = 10.0) -> Outcome:
+    """Parse a translated problem and prove it: proved, refuted (the engine found the goal false), unknown
+    (timed out or undecided), unsupported (not translated), error (not read, or the statement refused).
+
+    >>> [problem] = read_alphageometry("m\\na b = segment a b; m = midpoint m a b ? cong m a m b")
+    >>> solve(problem).status
+    'proved'
+    """
+    if problem.error is not None:
+        status = "unsupported" if isinstance(problem.error, UnsupportedConstructionError) else "error"
+        return Outcome(problem, status, message=str(problem.error))
+    from .engine import prove
+    from .language import parse_statement
+
+    start = time.perf_counter()
+    try:
+        claim = parse_statement(problem.statement or "", name=problem.name, source=problem.source)
+        verdict = prove(claim, timeout=timeout)
+    except PgsymError as err:
+        return Outcome(problem, "error", message=str(err), elapsed=time.perf_counter() - start)
+    status = {"proved": "proved", "false": "refuted"}.get(str(verdict.status), "unknown")
+    return Outcome(problem, status, verdict=verdict, elapsed=time.perf_counter() - start)
+
+
+def translate(problem: str, line: int = 0, title: str = "") -> str:
+    """The statement text (pgsym's language) of one problem line of AlphaGeometry.
+
+    Raises :class:`~pgsym.proofs.errors.AlphaGeometryError` for text that is not a problem, and
+    :class:`~pgsym.proofs.errors.UnsupportedConstructionError` for what pgsym cannot express.
+
+    >>> print(translate("a b = segment a b; c = on_circle c a b, on_line c a b ? cong a b a c"))
+    expect true
+    points a b
+    point c = reflect b (foot a (join a b))
+    prove equallength a b a c
+    """
+    if len(problem) > MAX_AG_LINE_CHARS:
+        raise AlphaGeometryError(f"a problem of {len(problem)} characters; at most {MAX_AG_LINE_CHARS}", line)
+    return _Translator(line).run(problem, title)
+
+
+# -- the figure: which points are known on which lines and circles ------------------------------------------
+
+
+@dataclass(eq=False)
+class _Circle:
+    centre: str | None  # an AG point, or None (then centre_expr is pgsym's centre (circle a b c))
+    points: set[str] = field(default_factory=set)
+    radius: frozenset[str] | None = None  # eqdistance: the centre's distance is |bc|
+
+
+@dataclass
+class _Locus:
+    kind: str  # "line" or "circle"
+    expr: str  # pgsym text of the line or circle (names already pgsym's)
+    on: set[str]  # AG points known on it
+    name: str  # the construction (for messages)
+    add: Callable[[str], None]  # records the new point on it
+    centre: str = ""  # circle: pgsym text of its centre
+    through: str = ""  # circle: pgsym text of a point on it (for a free point on the circle)
+    ray: bool = False  # a half-line of AG: meeting a circle picks the point on the ray
+
+
+class _Translator:
+    def __init__(self, line: int) -> None:
+        self.line = line
+        self.out: list[str] = []
+        self.defined: dict[str, str] = {}  # AG name -> pgsym name (in definition order)
+        self.collinear: list[set[str]] = []
+        self.keyed: dict[tuple, set[str]] = {}  # non-join lines: ("perp", P, {B, C}) -> points on it
+        self.circles: list[_Circle] = []
+        self.aux = 0
+
+    # -- errors and names ---------------------------------------------------------------------------------
+    def fail(self, message: str, construction: str = "") -> AlphaGeometryError:
+        return AlphaGeometryError(message, self.line, construction=construction)
+
+    def unsupported(self, construction: str, why: str) -> UnsupportedConstructionError:
+        return UnsupportedConstructionError(f"unsupported: {construction} ({why})", self.line,
+                                            construction=construction)
+
+    def p(self, ag: str) -> str:
+        """The pgsym name of a defined AG point."""
+        if ag not in self.defined:
+            raise self.fail(f"the point {ag!r} is used before it is defined")
+        return self.defined[ag]
+
+    def new_aux(self, prefix: str) -> str:
+        self.aux += 1
+        return f"{prefix}'{self.aux}"  # AG names never hold ', so no clash
+
+    def define(self, ag: str) -> str:
+        if not _NAME.match(ag) or len(ag) > MAX_STATEMENT_NAME_CHARS - 1:
+            raise self.fail(f"{ag[:40]!r} is not a point name (letters, digits and _, starting with a letter, "
+                            f"at most {MAX_STATEMENT_NAME_CHARS - 1} characters)")
+        if ag in self.defined:
+            raise self.fail(f"the point {ag} is defined twice")
+        self.defined[ag] = ag + "'" if ag in KEYWORDS else ag
+        return self.defined[ag]
+
+    # -- incidences known by construction -----------------------------------------------------------------
+    def on_join(self, a: str, b: str) -> set[str]:
+        found = {a, b}
+        for s in self.collinear:
+            if a in s and b in s:
+                found |= s
+        return found
+
+    def add_collinear(self, *pts: str) -> None:
+        new = set(pts)
+        if len(new) < 2:
+            return
+        keep = []
+        for s in self.collinear:
+            if len(s & new) >= 2:
+                new |= s
+            else:
+                keep.append(s)
+        self.collinear = [*keep, new]
+
+    def key_line(self, key: tuple, *pts: str) -> set[str]:
+        s = self.keyed.setdefault(key, set())
+        s.update(pts)
+        return s
+
+    def circle_record(self, centre: str | None, points: set[str], radius: frozenset[str] | None = None) -> _Circle:
+        """The record of the circle with that centre through those points (merged with what is known)."""
+        for c in self.circles:
+            same_centre = centre is not None and c.centre == centre
+            if same_centre and (c.points & points or (radius is not None and c.radius == radius)):
+                break
+            if len(c.points & points) >= 3 or (len(points) >= 3 and points <= c.points):
+                break
+        else:
+            c = _Circle(centre)
+            self.circles.append(c)
+        c.points |= points
+        if c.centre is None:
+            c.centre = centre
+        if c.radius is None:
+            c.radius = radius
+        return c
+
+    def circle_locus(self, rec: _Circle, name: str, expr: str = "", through: str = "") -> _Locus:
+        pts = sorted(rec.points, key=list(self.defined).index)
+        if rec.centre is not None and pts:
+            centre = self.p(rec.centre)
+            expr = expr or f"circle {centre} {self.p(pts[0])}"
+            through = through or self.p(pts[0])
+        elif rec.centre is not None:
+            centre = self.p(rec.centre)
+        else:
+            expr = f"circle {self.p(pts[0])} {self.p(pts[1])} {self.p(pts[2])}"
+            centre, through = f"(centre ({expr}))", self.p(pts[0])
+        return _Locus("circle", expr, set(rec.points), name, rec.points.add, centre=centre, through=through)
+
+    def join_locus(self, a: str, b: str, name: str) -> _Locus:
+        if a == b:
+            raise self.fail(f"{name}: the line through {a} and {b} needs two different points", name)
+        return _Locus("line", f"join {self.p(a)} {self.p(b)}", self.on_join(a, b), name,
+                      lambda x: self.add_collinear(a, b, x))
+
+    def keyed_locus(self, key: tuple, expr: str, through: str, name: str, ray: bool = False) -> _Locus:
+        pts = self.key_line(key, through)
+        return _Locus("line", expr, set(pts), name, lambda x: (pts.add(x), self.add_collinear(*pts)), ray=ray)
+
+    # -- a problem --------------------------------------------------------------------------------------------
+    def run(self, problem: str, title: str) -> str:
+        if problem.count("?") != 1:
+            raise self.fail("a problem is 'CLAUSES ? GOAL' with one '?'")
+        body, goal = problem.split("?")
+        clauses = [c for c in body.split(";") if c.strip()]
+        if not clauses:
+            raise self.fail("the problem defines no points")
+        if len(clauses) > MAX_AG_CLAUSES:
+            raise self.fail(f"more than {MAX_AG_CLAUSES} clauses in one problem")
+        head = [f"title {_printable(title)}"] if title else []
+        for clause in clauses:
+            self.clause(clause)
+        self.goal(goal.split())
+        return "\n".join([*head, "expect true", *self.out])
+
+    def clause(self, text: str) -> None:
+        if text.count("=") != 1:
+            raise self.fail(f"a clause is 'POINTS = CONSTRUCTION, …', found {text.strip()[:60]!r}")
+        lhs, rhs = text.split("=")
+        news = [w.split("@", 1)[0] for w in lhs.split()]  # x@1.5_2 : a numeric hint of AG's, not used
+        if not news:
+            raise self.fail(f"the clause {text.strip()[:60]!r} names no new point")
+        if len(set(news)) != len(news):
+            raise self.fail(f"a point is named twice in {lhs.strip()!r}")
+        parts = [c.split() for c in rhs.split(",")]
+        if any(not c for c in parts):
+            raise self.fail(f"an empty construction in {rhs.strip()[:60]!r}")
+        if len(parts) > 2:
+            raise self.unsupported(parts[0][0], "more than two constraints on one point")
+        for c in parts:
+            if c[0] not in _CONSTRUCTIONS:
+                if c[0] in _UNSUPPORTED:
+                    raise self.unsupported(c[0], _UNSUPPORTED[c[0]])
+                raise self.fail(f"unknown construction {c[0][:40]!r}", c[0][:40])
+            arity, count, _ = _CONSTRUCTIONS[c[0]]
+            if len(c) - 1 == arity - count and count == len(news):  # the short form: on_line b c for x
+                c[1:1] = news
+            if len(c) - 1 != arity:
+                raise self.fail(f"{c[0]} takes {arity} arguments, got {len(c) - 1}", c[0])
+            if c[0] in _NEW_AT:  # the new points first
+                at = _NEW_AT[c[0]]
+                c[1:] = [c[1 + i] for i in at] + [w for i, w in enumerate(c[1:]) if i not in at]
+            if sorted(c[1:1 + count]) != sorted(news):  # in any order: AG defines them as the arguments say
+                raise self.fail(f"{c[0]} defines {count} point(s), its first argument(s); the clause defines "
+                                f"{' '.join(news)}", c[0])
+            for a in c[1 + count:]:
+                if not _NUMBER.match(a) and a not in self.defined:
+                    raise self.fail(f"the point {a[:40]!r} is used before it is defined", c[0])
+        if len(parts) == 1:
+            name, *args = parts[0]
+            result = _CONSTRUCTIONS[name][2](self, args)
+            if isinstance(result, _Locus):
+                self.free_on(self.define(args[0]), args[0], result)
+            return
+        loci = []
+        for name, *args in parts:
+            result = _CONSTRUCTIONS[name][2](self, args)
+            if not isinstance(result, _Locus):
+                raise self.fail(f"{name} defines its point alone; it cannot be met with another construction", name)
+            loci.append(result)
+        self.intersect(parts[0][1], *loci)
+
+    def free_on(self, x: str, ag: str, locus: _Locus) -> None:
+        if locus.kind == "line":
+            two = locus.expr.split()
+            where = (f"{two[1]} {two[2]}" if two[0] == "join" and len(two) == 3
+                     else two[0] if len(two) == 1 else f"({locus.expr})")
+            self.out.append(f"point {x} on line {where}")
+        else:
+            self.out.append(f"point {x} on circle ({locus.expr}) through {locus.through}")
+        locus.add(ag)
+
+    def intersect(self, ag: str, one: _Locus, two: _Locus) -> None:
+        if one.kind == "circle" and two.kind == "line":
+            one, two = two, one
+        common = sorted((one.on & two.on) - {ag}, key=list(self.defined).index)
+        if one.kind == "line" and two.kind == "line":
+            x = self.define(ag)
+            self.out.append(f"point {x} = meet ({one.expr}) ({two.expr})")
+        elif one.kind == "line" and common:
+            x = self.define(ag)
+            self.out.append(f"point {x} = reflect {self.p(common[0])} (foot {two.centre} ({one.expr}))")
+        elif one.kind == "line":
+            if one.ray:
+                raise self.unsupported(one.name, "needs a branch condition: a ray meets the circle at the point "
+                                       "on the ray, which pgsym cannot name")
+            x = self.define(ag)
+            self.out.append(f"point {x} = intersection ({one.expr}) ({two.expr})")
+        elif common:
+            x = self.define(ag)
+            self.out.append(f"point {x} = reflect {self.p(common[0])} (join {one.centre} {two.centre})")
+        else:
+            x = self.define(ag)
+            self.out.append(f"point {x} = intersection ({one.expr}) ({two.expr})")
+        one.add(ag)
+        two.add(ag)
+
+    # -- goals ---------------------------------------------------------------------------------------------
+    def goal(self, words: list[str]) -> None:
+        if not words:
+            raise self.fail("the goal after '?' is empty")
+        name, args = words[0], words[1:]
+        counts = {"coll": None, "cyclic": None, "para": 4, "perp": 4, "cong": 4, "eqangle": 8, "eqratio": 8,
+                  "midp": 3, "simtri": 6, "contri": 6, "simtrir": 6, "contrir": 6}
+        if name not in counts:
+            raise self.unsupported(name[:40], "a goal pgsym's statement language cannot state")
+        want = counts[name]
+        if (want is not None and len(args) != want) or (want is None and len(args) < (3 if name == "coll" else 4)):
+            raise self.fail(f"the goal {name} takes {want or 'at least 3'} points, got {len(args)}", name)
+        p = [self.p(a) for a in args]
+
+        def d(i: int, j: int) -> str:
+            return f"(dist2 {p[i]} {p[j]})"
+
+        lines = []
+        if name == "coll":
+            lines = [f"collinear {p[0]} {p[1]} {q}" for q in p[2:]]
+        elif name == "cyclic":
+            lines = [f"concyclic {p[0]} {p[1]} {p[2]} {q}" for q in p[3:]]
+        elif name in ("para", "perp"):
+            word = "parallel" if name == "para" else "perpendicular"
+            lines = [f"{word} (join {p[0]} {p[1]}) (join {p[2]} {p[3]})"]
+        elif name == "cong":
+            lines = [f"equallength {' '.join(p)}"]
+        elif name == "eqangle":
+            lines = [f"equalangle {self.angle(p[0:4])} {self.angle(p[4:8])}"]
+        elif name == "eqratio":  # ab/cd = pq/rs, squared
+            lines = [f"equal (mul {d(0, 1)} {d(6, 7)}) (mul {d(2, 3)} {d(4, 5)})"]
+        elif name == "midp":
+            lines = [f"equal {p[0]} (midpoint {p[1]} {p[2]})"]
+        elif name in ("simtri", "simtrir"):  # ab·yz = bc·xy and bc·zx = ca·yz, squared (AG's check_simtri)
+            lines = [f"equal (mul {d(0, 1)} {d(4, 5)}) (mul {d(1, 2)} {d(3, 4)})",
+                     f"equal (mul {d(1, 2)} {d(5, 3)}) (mul {d(2, 0)} {d(4, 5)})"]
+        else:  # contri: the three sides equally long
+            lines = [f"equallength {p[0]} {p[1]} {p[3]} {p[4]}", f"equallength {p[1]} {p[2]} {p[4]} {p[5]}",
+                     f"equallength {p[2]} {p[0]} {p[5]} {p[3]}"]
+        self.out.extend(f"prove {text}" for text in lines)
+
+    def angle(self, q: list[str]) -> str:
+        """The angle from line q0 q1 to line q2 q3 as three arguments of equalangle (vertex in the middle)."""
+        a, b, c, e = q
+        for v in (a, b):
+            if v in (c, e):
+                u = b if v == a else a
+                w = e if v == c else c
+                return f"{u} {v} {w}"
+        return f"{b} {a} (translate {a} {c} {e})"  # the line cd moved through a
+
+
+def _printable(text: str) -> str:
+    return "".join(ch if ch.isprintable() else "?" for ch in text)[:200]
+
+
+# -- the constructions of defs.txt ------------------------------------------------------------------------------
+# name -> (number of arguments, how many of them are the new points, builder(translator, arguments)); a builder
+# returns a locus for a one-parameter construction, or writes the definitions of fully determined points.
+
+_Build = Callable[[_Translator, list[str]], "_Locus | None"]
+_CONSTRUCTIONS: dict[str, tuple[int, int, _Build]] = {}
+
+
+_NEW_AT = {"s_angle": (2,), "parallelogram": (3,), "square": (2, 3)}  # where the new points are, if not first
+
+
+def _construction(name: str, arity: int, count: int = 1) -> Callable[[_Build], _Build]:
+    def register(f: _Build) -> _Build:
+        _CONSTRUCTIONS[name] = (arity, count, f)
+        return f
+    return register
+
+
+def _free(n: int, name: str) -> _Build:
+    def build(t: _Translator, a: list[str]) -> None:
+        t.out.append("points " + " ".join(t.define(x) for x in a))
+    _CONSTRUCTIONS[name] = (n, n, build)
+    return build
+
+
+for _n, _word in ((1, "free"), (2, "segment"), (3, "triangle"), (4, "quadrangle"), (5, "pentagon")):
+    _free(_n, _word)
+
+
+def _point(t: _Translator, ag: str, expr: str) -> str:
+    x = t.define(ag)
+    t.out.append(f"point {x} = {expr}")
+    return x
+
+
+def _distinct(t: _Translator, name: str, *pts: str) -> None:
+    if len(set(pts)) != len(pts):
+        raise t.fail(f"{name} needs different points, got {' '.join(pts)}", name)
+
+
+@_construction("on_line", 3)
+def _on_line(t: _Translator, a: list[str]) -> _Locus:
+    return t.join_locus(a[1], a[2], "on_line")
+
+
+@_construction("on_circle", 3)
+def _on_circle(t: _Translator, a: list[str]) -> _Locus:
+    _distinct(t, "on_circle", a[1], a[2])
+    return t.circle_locus(t.circle_record(a[1], {a[2]}), "on_circle")
+
+
+@_construction("on_circum", 4)
+def _on_circum(t: _Translator, a: list[str]) -> _Locus:
+    _distinct(t, "on_circum", *a[1:])
+    return t.circle_locus(t.circle_record(None, set(a[1:])), "on_circum")
+
+
+@_construction("on_tline", 4)
+def _on_tline(t: _Translator, a: list[str]) -> _Locus:
+    _distinct(t, "on_tline", a[2], a[3])
+    return t.keyed_locus(("perp", a[1], frozenset(a[2:])), f"perpendicular (join {t.p(a[2])} {t.p(a[3])}) "
+                         f"{t.p(a[1])}", a[1], "on_tline")
+
+
+@_construction("lc_tangent", 3)
+def _lc_tangent(t: _Translator, a: list[str]) -> _Locus:
+    _distinct(t, "lc_tangent", a[1], a[2])
+    return t.keyed_locus(("perp", a[1], frozenset(a[1:])), f"perpendicular (join {t.p(a[1])} {t.p(a[2])}) "
+                         f"{t.p(a[1])}", a[1], "lc_tangent")
+
+
+@_construction("on_pline", 4)
+def _on_pline(t: _Translator, a: list[str]) -> _Locus:
+    _distinct(t, "on_pline", a[2], a[3])
+    return t.keyed_locus(("para", a[1], frozenset(a[2:])), f"parallel (join {t.p(a[2])} {t.p(a[3])}) "
+                         f"{t.p(a[1])}", a[1], "on_pline")
+
+
+@_construction("on_bline", 3)
+def _on_bline(t: _Translator, a: list[str]) -> _Locus:
+    _distinct(t, "on_bline", a[1], a[2])
+    pair = frozenset(a[1:])
+    key = ("bline", pair)
+    pts = t.key_line(key)
+    pts.update(c.centre for c in t.circles if c.centre is not None and pair <= c.points)
+    return _Locus("line", f"bisector {t.p(a[1])} {t.p(a[2])}", set(pts), "on_bline",
+                  lambda x: (pts.add(x), t.add_collinear(*pts)))
+
+
+@_construction("on_dia", 3)
+def _on_dia(t: _Translator, a: list[str]) -> _Locus:
+    _distinct(t, "on_dia", a[1], a[2])
+    rec = t.circle_record(None, set(a[1:]))
+    mid = f"(midpoint {t.p(a[1])} {t.p(a[2])})"
+    return _Locus("circle", f"circle {mid} {t.p(a[1])}", set(rec.points), "on_dia", rec.points.add, centre=mid,
+                  through=t.p(a[1]))
+
+
+@_construction("eqdistance", 4)
+def _eqdistance(t: _Translator, a: list[str]) -> _Locus:
+    _, o, b, c = a
+    _distinct(t, "eqdistance", b, c)
+    if o in (b, c):  # |xo| = |oc|: the circle of centre o through the other point
+        return t.circle_locus(t.circle_record(o, {c if o == b else b}), "eqdistance")
+    rec = t.circle_record(o, set(), frozenset((b, c)))
+    through = f"(translate {t.p(o)} {t.p(b)} {t.p(c)})"  # o moved by the vector bc: at distance |bc| from o
+    return _Locus("circle", f"circle {t.p(o)} {through}", set(rec.points), "eqdistance", rec.points.add,
+                  centre=t.p(o), through=through)
+
+
+@_construction("angle_bisector", 4)
+def _angle_bisector(t: _Translator, a: list[str]) -> _Locus:
+    _, p, v, q = a
+    _distinct(t, "angle_bisector", p, v, q)
+    line = t.new_aux("bis")
+    t.out.append(f"line {line} = anglebisector {t.p(p)} {t.p(v)} {t.p(q)}")
+    return t.keyed_locus(("bisect", p, v, q), line, v, "angle_bisector")
+
+
+@_construction("angle_mirror", 4)
+def _angle_mirror(t: _Translator, a: list[str]) -> _Locus:
+    _, p, v, q = a  # the ray from v that line vq bisects with line vp
+    _distinct(t, "angle_mirror", p, v, q)
+    return t.keyed_locus(("amirror", p, v, q), f"join {t.p(v)} (reflect {t.p(p)} (join {t.p(v)} {t.p(q)}))", v,
+                         "angle_mirror", ray=True)
+
+
+@_construction("s_angle", 4)
+def _s_angle(t: _Translator, a: list[str]) -> _Locus:
+    _, p, v, deg = a  # the ray from v turned counter-clockwise by deg degrees from vp
+    if not _NUMBER.match(deg) or _NUMBER.match(p) or _NUMBER.match(v):
+        raise t.fail(f"s_angle takes two points, the new point and an angle in degrees, got {' '.join(a)}",
+                     "s_angle")
+    _distinct(t, "s_angle", p, v)
+    r = t.new_aux("rot")
+    t.out.append(f"point {r} = rotate {t.p(p)} {t.p(v)} {int(deg)}")
+    return t.keyed_locus(("sangle", p, v, deg), f"join {t.p(v)} {r}", v, "s_angle", ray=True)
+
+
+@_construction("midpoint", 3)
+def _midpoint(t: _Translator, a: list[str]) -> None:
+    _distinct(t, "midpoint", a[1], a[2])
+    _point(t, a[0], f"midpoint {t.p(a[1])} {t.p(a[2])}")
+    t.add_collinear(*a)
+    t.key_line(("bline", frozenset(a[1:])), a[0])
+
+
+@_construction("mirror", 3)
+def _mirror(t: _Translator, a: list[str]) -> None:
+    _distinct(t, "mirror", a[1], a[2])
+    _point(t, a[0], f"reflect {t.p(a[1])} {t.p(a[2])}")
+    t.add_collinear(*a)
+    t.circle_record(a[2], {a[0], a[1]})
+
+
+@_construction("foot", 4)
+def _foot(t: _Translator, a: list[str]) -> None:
+    x, p, b, c = a
+    _distinct(t, "foot", b, c)
+    _point(t, x, f"foot {t.p(p)} (join {t.p(b)} {t.p(c)})")
+    t.add_collinear(x, b, c)
+    t.key_line(("perp", p, frozenset((b, c))), p, x)
+
+
+@_construction("reflect", 4)
+def _reflect(t: _Translator, a: list[str]) -> None:
+    x, p, b, c = a
+    _distinct(t, "reflect", b, c)
+    _point(t, x, f"reflect {t.p(p)} (join {t.p(b)} {t.p(c)})")
+    t.key_line(("perp", p, frozenset((b, c))), p, x)
+    t.circle_record(b, {p, x})
+    t.circle_record(c, {p, x})
+
+
+@_construction("circle", 4)
+def _circle(t: _Translator, a: list[str]) -> None:
+    _distinct(t, "circle", *a[1:])
+    _point(t, a[0], f"centre (circle {t.p(a[1])} {t.p(a[2])} {t.p(a[3])})")
+    t.circle_record(a[0], set(a[1:]))
+
+
+_CONSTRUCTIONS["circumcenter"] = (4, 1, _circle)
+
+
+@_construction("orthocenter", 4)
+def _orthocenter(t: _Translator, a: list[str]) -> None:
+    x, p, q, r = a
+    _distinct(t, "orthocenter", p, q, r)
+    _point(t, x, f"meet (perpendicular (join {t.p(q)} {t.p(r)}) {t.p(p)}) "
+                 f"(perpendicular (join {t.p(r)} {t.p(p)}) {t.p(q)})")
+    for u, v, w in ((p, q, r), (q, r, p), (r, p, q)):
+        t.key_line(("perp", u, frozenset((v, w))), u, x)
+
+
+def _centre_of(t: _Translator, x: str, p: str, q: str, r: str, external: bool) -> None:
+    """x: the incentre of pqr, or (external) the excentre opposite p (internal at p, external at q)."""
+    _distinct(t, "incenter", p, q, r)
+    one, two = t.new_aux("bis"), t.new_aux("bis")
+    t.out.append(f"line {one} = anglebisector {t.p(q)} {t.p(p)} {t.p(r)}")
+    t.out.append(f"line {two} = {'exbisector' if external else 'anglebisector'} {t.p(p)} {t.p(q)} {t.p(r)}")
+    _point(t, x, f"meet {one} {two}")
+
+
+@_construction("incenter", 4)
+def _incenter(t: _Translator, a: list[str]) -> None:
+    _centre_of(t, a[0], a[1], a[2], a[3], external=False)
+
+
+@_construction("excenter", 4)
+def _excenter(t: _Translator, a: list[str]) -> None:
+    _centre_of(t, a[0], a[1], a[3], a[2], external=True)  # bisect b a c, exbisect b c a: external at c
+
+
+def _feet(t: _Translator, x: str, y: str, z: str, i: str, p: str, q: str, r: str) -> None:
+    for foot, (u, v) in ((x, (q, r)), (y, (r, p)), (z, (p, q))):
+        _point(t, foot, f"foot {t.p(i)} (join {t.p(u)} {t.p(v)})")
+        t.add_collinear(foot, u, v)
+        t.key_line(("perp", i, frozenset((u, v))), i, foot)
+    t.circle_record(i, {x, y, z})
+
+
+@_construction("incenter2", 7, 4)
+def _incenter2(t: _Translator, a: list[str]) -> None:
+    x, y, z, i, p, q, r = a
+    _centre_of(t, i, p, q, r, external=False)
+    _feet(t, x, y, z, i, p, q, r)
+
+
+@_construction("excenter2", 7, 4)
+def _excenter2(t: _Translator, a: list[str]) -> None:
+    x, y, z, i, p, q, r = a  # bisect b a c, exbisect a b c: external at b
+    _centre_of(t, i, p, q, r, external=True)
+    _feet(t, x, y, z, i, p, q, r)
+
+
+def _midpoints(t: _Translator, x: str, y: str, z: str, p: str, q: str, r: str) -> None:
+    _distinct(t, "centroid", p, q, r)
+    for m, (u, v) in ((x, (q, r)), (y, (r, p)), (z, (p, q))):
+        _midpoint(t, [m, u, v])
+
+
+@_construction("centroid", 7, 4)
+def _centroid(t: _Translator, a: list[str]) -> None:
+    x, y, z, i, p, q, r = a
+    _midpoints(t, x, y, z, p, q, r)
+    _point(t, i, f"meet (join {t.p(p)} {t.p(x)}) (join {t.p(q)} {t.p(y)})")
+    for u, v in ((p, x), (q, y), (r, z)):
+        t.add_collinear(i, u, v)
+
+
+@_construction("ninepoints", 7, 4)
+def _ninepoints(t: _Translator, a: list[str]) -> None:
+    x, y, z, i, p, q, r = a
+    _midpoints(t, x, y, z, p, q, r)
+    _circle(t, [i, x, y, z])
+
+
+@_construction("intersection_ll", 5)
+def _intersection_ll(t: _Translator, a: list[str]) -> None:
+    x, p, q, r, s = a
+    _distinct(t, "intersection_ll", p, q)
+    _distinct(t, "intersection_ll", r, s)
+    t.intersect(x, t.join_locus(p, q, "intersection_ll"), t.join_locus(r, s, "intersection_ll"))
+
+
+@_construction("intersection_lc", 4)
+def _intersection_lc(t: _Translator, a: list[str]) -> None:
+    x, p, o, b = a  # line b p, circle of centre o through b: the point other than b
+    _distinct(t, "intersection_lc", p, b)
+    _distinct(t, "intersection_lc", o, b)
+    _point(t, x, f"reflect {t.p(b)} (foot {t.p(o)} (join {t.p(b)} {t.p(p)}))")
+    t.add_collinear(x, p, b)
+    t.circle_record(o, {b, x})
+
+
+@_construction("intersection_cc", 4)
+def _intersection_cc(t: _Translator, a: list[str]) -> None:
+    x, o, w, p = a  # the circles of centres o and w through p: the point other than p
+    _distinct(t, "intersection_cc", o, w, p)
+    _point(t, x, f"reflect {t.p(p)} (join {t.p(o)} {t.p(w)})")
+    t.circle_record(o, {p, x})
+    t.circle_record(w, {p, x})
+
+
+@_construction("intersection_lp", 6)
+def _intersection_lp(t: _Translator, a: list[str]) -> None:
+    x, p, q, c, m, n = a
+    _distinct(t, "intersection_lp", m, n)
+    t.intersect(x, t.join_locus(p, q, "intersection_lp"), _on_pline(t, [x, c, m, n]))
+
+
+@_construction("intersection_lt", 6)
+def _intersection_lt(t: _Translator, a: list[str]) -> None:
+    x, p, q, c, d, e = a
+    t.intersect(x, t.join_locus(p, q, "intersection_lt"), _on_tline(t, [x, c, d, e]))
+
+
+@_construction("intersection_pp", 7)
+def _intersection_pp(t: _Translator, a: list[str]) -> None:
+    x, p, b, c, q, e, f = a
+    t.intersect(x, _on_pline(t, [x, p, b, c]), _on_pline(t, [x, q, e, f]))
+
+
+@_construction("intersection_tt", 7)
+def _intersection_tt(t: _Translator, a: list[str]) -> None:
+    x, p, b, c, q, e, f = a
+    t.intersect(x, _on_tline(t, [x, p, b, c]), _on_tline(t, [x, q, e, f]))
+
+
+@_construction("parallelogram", 4)
+def _parallelogram(t: _Translator, a: list[str]) -> None:
+    x, p, q, r = a  # parallelogram a b c x: x = a + c − b
+    _distinct(t, "parallelogram", p, q, r)
+    x_ = t.define(x)
+    t.out.append(f"point {x_} = translate {t.p(r)} {t.p(q)} {t.p(p)}")
+    t.key_line(("para", r, frozenset((p, q))), r, x)
+    t.key_line(("para", p, frozenset((q, r))), p, x)
+
+
+@_construction("shift", 4)
+def _shift(t: _Translator, a: list[str]) -> None:
+    x, b, c, d = a  # x = b + (c − d)
+    _distinct(t, "shift", b, d)
+    _point(t, x, f"translate {t.p(b)} {t.p(d)} {t.p(c)}")
+
+
+def _rotate(t: _Translator, ag: str, x: str, o: str, sign: int) -> None:
+    """ag = x turned about o by +90° (sign 1) or −90°: an exact rotation (cos 0, sin ±1)."""
+    _point(t, ag, f"rotate {t.p(x)} {t.p(o)} 0 {'-' if sign < 0 else ''}1")
+
+
+@_construction("psquare", 3)
+def _psquare(t: _Translator, a: list[str]) -> None:
+    _distinct(t, "psquare", a[1], a[2])
+    _rotate(t, a[0], a[2], a[1], 1)  # a + (b − a) turned by +90°
+    t.circle_record(a[1], {a[0], a[2]})
+
+
+@_construction("nsquare", 3)
+def _nsquare(t: _Translator, a: list[str]) -> None:
+    _distinct(t, "nsquare", a[1], a[2])
+    _rotate(t, a[0], a[2], a[1], -1)
+    t.circle_record(a[1], {a[0], a[2]})
+
+
+@_construction("square", 4, 2)
+def _square(t: _Translator, a: list[str]) -> None:
+    x, y, p, q = a  # square a b x y: x = b + (a − b) turned by −90°, y = a + (b − a) turned by +90°
+    _distinct(t, "square", p, q)
+    _rotate(t, x, p, q, -1)
+    _rotate(t, y, q, p, 1)
+
+
+@_construction("isquare", 4, 4)
+def _isquare(t: _Translator, a: list[str]) -> None:
+    p, q, r, s = a
+    t.out.append(f"points {t.define(p)} {t.define(q)}")
+    _rotate(t, r, p, q, -1)
+    _rotate(t, s, q, p, 1)
+
+
+@_construction("eq_triangle", 3)
+def _eq_triangle(t: _Translator, a: list[str]) -> None:
+    x, b, c = a  # either apex: the rotation by 60° names one, its conjugate root the other
+    _distinct(t, "eq_triangle", b, c)
+    _point(t, x, f"rotate {t.p(c)} {t.p(b)} 60")
+    t.circle_record(b, {c, x})
+    t.circle_record(c, {b, x})
+
+
+@_construction("ieq_triangle", 3, 3)
+def _ieq_triangle(t: _Translator, a: list[str]) -> None:
+    p, q, r = a
+    t.out.append(f"points {t.define(p)} {t.define(q)}")
+    _point(t, r, f"rotate {t.p(q)} {t.p(p)} 60")
+
+
+@_construction("iso_triangle", 3, 3)
+def _iso_triangle(t: _Translator, a: list[str]) -> None:
+    p, q, r = a  # |pq| = |pr|
+    t.out.append(f"points {t.define(p)} {t.define(q)}")
+    t.free_on(t.define(r), r, t.circle_locus(t.circle_record(p, {q}), "iso_triangle"))
+
+
+@_construction("r_triangle", 3, 3)
+def _r_triangle(t: _Translator, a: list[str]) -> None:
+    p, q, r = a  # the right angle at p
+    t.out.append(f"points {t.define(p)} {t.define(q)}")
+    t.free_on(t.define(r), r, _on_tline(t, [r, p, p, q]))
+
+
+@_construction("risos", 3, 3)
+def _risos(t: _Translator, a: list[str]) -> None:
+    p, q, r = a  # the right angle at p, |pq| = |pr|; AG flips the figure at random, so one turn is general
+    t.out.append(f"points {t.define(p)} {t.define(q)}")
+    _rotate(t, r, q, p, 1)
+
+
+@_construction("triangle12", 3, 3)
+def _triangle12(t: _Translator, a: list[str]) -> None:
+    p, q, r = a  # |pr| = 2 |pq|
+    t.out.append(f"points {t.define(p)} {t.define(q)}")
+    far = f"(reflect {t.p(p)} {t.p(q)})"
+    t.out.append(f"point {t.define(r)} on circle (circle {t.p(p)} {far}) through {far}")
+
+
+@_construction("trapezoid", 4, 4)
+def _trapezoid(t: _Translator, a: list[str]) -> None:
+    p, q, r, s = a  # ab ∥ cd
+    t.out.append(f"points {t.define(p)} {t.define(q)} {t.define(r)}")
+    t.free_on(t.define(s), s, _on_pline(t, [s, r, p, q]))
+
+
+@_construction("r_trapezoid", 4, 4)
+def _r_trapezoid(t: _Translator, a: list[str]) -> None:
+    p, q, r, s = a  # ab ∥ cd, ab ⟂ ad
+    t.out.append(f"points {t.define(p)} {t.define(q)}")
+    t.free_on(t.define(s), s, _on_tline(t, [s, p, p, q]))
+    t.free_on(t.define(r), r, _on_pline(t, [r, s, p, q]))
+
+
+@_construction("eq_trapezoid", 4, 4)
+def _eq_trapezoid(t: _Translator, a: list[str]) -> None:
+    p, q, r, s = a  # dc ∥ ab, |da| = |bc|: d is c mirrored in the perpendicular bisector of ab
+    t.out.append(f"points {t.define(p)} {t.define(q)} {t.define(r)}")
+    _point(t, s, f"reflect {t.p(r)} (bisector {t.p(p)} {t.p(q)})")
+
+
+@_construction("rectangle", 4, 4)
+def _rectangle(t: _Translator, a: list[str]) -> None:
+    p, q, r, s = a
+    t.out.append(f"points {t.define(p)} {t.define(q)}")
+    t.free_on(t.define(r), r, _on_tline(t, [r, q, q, p]))
+    _point(t, s, f"translate {t.p(r)} {t.p(q)} {t.p(p)}")
+
+
+@_construction("eq_quadrangle", 4, 4)
+def _eq_quadrangle(t: _Translator, a: list[str]) -> None:
+    p, q, r, s = a  # |da| = |bc|
+    t.out.append(f"points {t.define(p)} {t.define(q)} {t.define(r)}")
+    t.free_on(t.define(s), s, _eqdistance(t, [s, p, q, r]))
+
+
+@_construction("eqdia_quadrangle", 4, 4)
+def _eqdia_quadrangle(t: _Translator, a: list[str]) -> None:
+    p, q, r, s = a  # |db| = |ac|
+    t.out.append(f"points {t.define(p)} {t.define(q)} {t.define(r)}")
+    t.free_on(t.define(s), s, _eqdistance(t, [s, q, p, r]))
+
+
+_UNSUPPORTED: dict[str, str] = {
+    "on_aline": "an angle copied from three points: no construction of pgsym's statement language",
+    "on_aline2": "an angle copied from three points: no construction of pgsym's statement language",
+    "eqangle2": "no construction of pgsym's statement language",
+    "eqangle3": "a circle of points seeing a segment under a given angle: no construction",
+    "trisect": "no construction of pgsym's statement language",
+    "trisegment": "no construction of pgsym's statement language",
+    "2l1c": "a circle touching two lines and a circle: no construction",
+    "e5128": "no construction of pgsym's statement language",
+    "3peq": "no construction of pgsym's statement language",
+    "cc_tangent": "common tangents of two circles: no construction",
+    "cc_tangent0": "common tangents of two circles: no construction",
+    "tangent": "needs a branch condition: the two tangent points from a point, told apart by AG numerically",
+    "on_opline": "a ray: no construction of pgsym's statement language",
+    "acircle": "no construction of pgsym's statement language",
+}
