@@ -152,6 +152,12 @@ class Outcome:
     message: str = ""
     elapsed: float = 0.0
 
+    @property
+    def either(self) -> bool:
+        """Whether the translation lets either common point of a line and a circle (or two circles) be taken,
+        as AlphaGeometry does at random: a refutation then may mean the problem needs a branch condition."""
+        return bool(self.problem.statement and re.search(r"=\s*intersection\b", self.problem.statement))
+
 
 def solve(problem: Problem, timeout: float | None = 10.0) -> Outcome:
     """Parse a translated problem and prove it: proved, refuted (the engine found the goal false), unknown
@@ -618,6 +624,7 @@ def _midpoint(t: _Translator, a: list[str]) -> None:
     _point(t, a[0], f"midpoint {t.p(a[1])} {t.p(a[2])}")
     t.add_collinear(*a)
     t.key_line(("bline", frozenset(a[1:])), a[0])
+    t.circle_record(a[0], {a[1], a[2]})
 
 
 @_construction("mirror", 3)
