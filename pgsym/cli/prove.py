@@ -7,8 +7,8 @@
 An argument ending in ``.thm``, or naming an existing file, is read as a theorem of the
 statement language (:mod:`pgsym.proofs.language`). ``--from alphageometry FILE [NAME…]`` reads a problem
 file of AlphaGeometry instead (:mod:`pgsym.proofs.alphageometry`; exit status 1 when a problem is refuted).
-The exit status is 1 when a claim stated as true is not proved, or a claim stated as false is "proved"; 2 for a file that cannot be read
-(``Error: FILE:LINE:COL: message``); 0 otherwise.
+The exit status is 1 when a claim stated as true is not proved, or a claim stated as false is "proved";
+2 for a file that cannot be read (``Error: FILE:LINE:COL: message``); 0 otherwise.
 """
 
 from __future__ import annotations
