@@ -34,7 +34,9 @@ pgsym.proofs.errors.UnsupportedConstructionError: unsupported: trisect (no const
 
 from __future__ import annotations
 
+import math
 import os
+import random
 import re
 import time
 from collections.abc import Callable
@@ -197,7 +199,14 @@ def translate(problem: str, line: int = 0, title: str = "") -> str:
     """
     if len(problem) > MAX_AG_LINE_CHARS:
         raise AlphaGeometryError(f"a problem of {len(problem)} characters; at most {MAX_AG_LINE_CHARS}", line)
-    return _Translator(line).run(problem, title)
+    for seed in range(_NUMERIC_TRIES):
+        try:
+            return _Translator(line, seed).run(problem, title)
+        except _NoFigure:
+            continue  # the random figure had no real intersection: another one, as AlphaGeometry does
+    raise UnsupportedConstructionError(f"unsupported: two loci that never met in two points in {_NUMERIC_TRIES} random "
+                                       "figures (they may touch), so their common points cannot be told apart",
+                                       line, construction="intersection")
 
 
 # -- the figure: which points are known on which lines and circles ------------------------------------------
@@ -220,17 +229,24 @@ class _Locus:
     centre: str = ""  # circle: pgsym text of its centre
     through: str = ""  # circle: pgsym text of a point on it (for a free point on the circle)
     ray: bool = False  # a half-line of AG: meeting a circle picks the point on the ray
+    tail: str = ""  # the ray's origin
 
 
 class _Translator:
-    def __init__(self, line: int) -> None:
+    def __init__(self, line: int, seed: int = 0) -> None:
         self.line = line
+        self.numeric = _Numeric(seed)
         self.out: list[str] = []
         self.defined: dict[str, str] = {}  # AG name -> pgsym name (in definition order)
         self.collinear: list[set[str]] = []
         self.keyed: dict[tuple, set[str]] = {}  # non-join lines: ("perp", P, {B, C}) -> points on it
         self.circles: list[_Circle] = []
         self.aux = 0
+
+    def emit(self, statement: str) -> None:
+        """Write a statement, and evaluate it on the numeric figure."""
+        self.out.append(statement)
+        self.numeric.run(statement)
 
     # -- errors and names ---------------------------------------------------------------------------------
     def fail(self, message: str, construction: str = "") -> AlphaGeometryError:
@@ -323,7 +339,8 @@ class _Translator:
 
     def keyed_locus(self, key: tuple, expr: str, through: str, name: str, ray: bool = False) -> _Locus:
         pts = self.key_line(key, through)
-        return _Locus("line", expr, set(pts), name, lambda x: (pts.add(x), self.add_collinear(*pts)), ray=ray)
+        return _Locus("line", expr, set(pts), name, lambda x: (pts.add(x), self.add_collinear(*pts)), ray=ray,
+                      tail=through)
 
     # -- a problem --------------------------------------------------------------------------------------------
     def run(self, problem: str, title: str) -> str:
@@ -393,33 +410,35 @@ class _Translator:
             two = locus.expr.split()
             where = (f"{two[1]} {two[2]}" if two[0] == "join" and len(two) == 3
                      else two[0] if len(two) == 1 else f"({locus.expr})")
-            self.out.append(f"point {x} on line {where}")
+            self.emit(f"point {x} on line {where}")
         else:
-            self.out.append(f"point {x} on circle ({locus.expr}) through {locus.through}")
+            self.emit(f"point {x} on circle ({locus.expr}) through {locus.through}")
         locus.add(ag)
 
     def intersect(self, ag: str, one: _Locus, two: _Locus) -> None:
         if one.kind == "circle" and two.kind == "line":
             one, two = two, one
         common = sorted((one.on & two.on) - {ag}, key=list(self.defined).index)
+        if one.kind != "line" or two.kind != "line":
+            common = self.numeric.common(one.expr, two.expr, common, self)
         if one.kind == "line" and two.kind == "line":
             x = self.define(ag)
-            self.out.append(f"point {x} = meet ({one.expr}) ({two.expr})")
+            self.emit(f"point {x} = meet ({one.expr}) ({two.expr})")
+        elif one.kind == "line" and one.ray and (not common or common[0] != one.tail):
+            raise self.unsupported(one.name, "needs a branch condition: a ray meets the circle at the point on the "
+                                   "ray, which pgsym cannot name")
         elif one.kind == "line" and common:
             x = self.define(ag)
-            self.out.append(f"point {x} = reflect {self.p(common[0])} (foot {two.centre} ({one.expr}))")
+            self.emit(f"point {x} = reflect {self.p(common[0])} (foot {two.centre} ({one.expr}))")
         elif one.kind == "line":
-            if one.ray:
-                raise self.unsupported(one.name, "needs a branch condition: a ray meets the circle at the point "
-                                       "on the ray, which pgsym cannot name")
             x = self.define(ag)
-            self.out.append(f"point {x} = intersection ({one.expr}) ({two.expr})")
+            self.emit(f"point {x} = intersection ({one.expr}) ({two.expr})")
         elif common:
             x = self.define(ag)
-            self.out.append(f"point {x} = reflect {self.p(common[0])} (join {one.centre} {two.centre})")
+            self.emit(f"point {x} = reflect {self.p(common[0])} (join {one.centre} {two.centre})")
         else:
             x = self.define(ag)
-            self.out.append(f"point {x} = intersection ({one.expr}) ({two.expr})")
+            self.emit(f"point {x} = intersection ({one.expr}) ({two.expr})")
         one.add(ag)
         two.add(ag)
 
@@ -499,7 +518,7 @@ def _construction(name: str, arity: int, count: int = 1) -> Callable[[_Build], _
 
 def _free(n: int, name: str) -> _Build:
     def build(t: _Translator, a: list[str]) -> None:
-        t.out.append("points " + " ".join(t.define(x) for x in a))
+        t.emit("points " + " ".join(t.define(x) for x in a))
     _CONSTRUCTIONS[name] = (n, n, build)
     return build
 
@@ -510,7 +529,7 @@ for _n, _word in ((1, "free"), (2, "segment"), (3, "triangle"), (4, "quadrangle"
 
 def _point(t: _Translator, ag: str, expr: str) -> str:
     x = t.define(ag)
-    t.out.append(f"point {x} = {expr}")
+    t.emit(f"point {x} = {expr}")
     return x
 
 
@@ -594,7 +613,7 @@ def _angle_bisector(t: _Translator, a: list[str]) -> _Locus:
     _, p, v, q = a
     _distinct(t, "angle_bisector", p, v, q)
     line = t.new_aux("bis")
-    t.out.append(f"line {line} = anglebisector {t.p(p)} {t.p(v)} {t.p(q)}")
+    t.emit(f"line {line} = anglebisector {t.p(p)} {t.p(v)} {t.p(q)}")
     return t.keyed_locus(("bisect", p, v, q), line, v, "angle_bisector")
 
 
@@ -614,7 +633,7 @@ def _s_angle(t: _Translator, a: list[str]) -> _Locus:
                      "s_angle")
     _distinct(t, "s_angle", p, v)
     r = t.new_aux("rot")
-    t.out.append(f"point {r} = rotate {t.p(p)} {t.p(v)} {int(deg)}")
+    t.emit(f"point {r} = rotate {t.p(p)} {t.p(v)} {int(deg)}")
     return t.keyed_locus(("sangle", p, v, deg), f"join {t.p(v)} {r}", v, "s_angle", ray=True)
 
 
@@ -678,8 +697,8 @@ def _centre_of(t: _Translator, x: str, p: str, q: str, r: str, external: bool) -
     """x: the incentre of pqr, or (external) the excentre opposite p (internal at p, external at q)."""
     _distinct(t, "incenter", p, q, r)
     one, two = t.new_aux("bis"), t.new_aux("bis")
-    t.out.append(f"line {one} = anglebisector {t.p(q)} {t.p(p)} {t.p(r)}")
-    t.out.append(f"line {two} = {'exbisector' if external else 'anglebisector'} {t.p(p)} {t.p(q)} {t.p(r)}")
+    t.emit(f"line {one} = anglebisector {t.p(q)} {t.p(p)} {t.p(r)}")
+    t.emit(f"line {two} = {'exbisector' if external else 'anglebisector'} {t.p(p)} {t.p(q)} {t.p(r)}")
     _point(t, x, f"meet {one} {two}")
 
 
@@ -794,7 +813,7 @@ def _parallelogram(t: _Translator, a: list[str]) -> None:
     x, p, q, r = a  # parallelogram a b c x: x = a + c − b
     _distinct(t, "parallelogram", p, q, r)
     x_ = t.define(x)
-    t.out.append(f"point {x_} = translate {t.p(r)} {t.p(q)} {t.p(p)}")
+    t.emit(f"point {x_} = translate {t.p(r)} {t.p(q)} {t.p(p)}")
     t.key_line(("para", r, frozenset((p, q))), r, x)
     t.key_line(("para", p, frozenset((q, r))), p, x)
 
@@ -836,7 +855,7 @@ def _square(t: _Translator, a: list[str]) -> None:
 @_construction("isquare", 4, 4)
 def _isquare(t: _Translator, a: list[str]) -> None:
     p, q, r, s = a
-    t.out.append(f"points {t.define(p)} {t.define(q)}")
+    t.emit(f"points {t.define(p)} {t.define(q)}")
     _rotate(t, r, p, q, -1)
     _rotate(t, s, q, p, 1)
 
@@ -853,50 +872,50 @@ def _eq_triangle(t: _Translator, a: list[str]) -> None:
 @_construction("ieq_triangle", 3, 3)
 def _ieq_triangle(t: _Translator, a: list[str]) -> None:
     p, q, r = a
-    t.out.append(f"points {t.define(p)} {t.define(q)}")
+    t.emit(f"points {t.define(p)} {t.define(q)}")
     _point(t, r, f"rotate {t.p(q)} {t.p(p)} 60")
 
 
 @_construction("iso_triangle", 3, 3)
 def _iso_triangle(t: _Translator, a: list[str]) -> None:
     p, q, r = a  # |pq| = |pr|
-    t.out.append(f"points {t.define(p)} {t.define(q)}")
+    t.emit(f"points {t.define(p)} {t.define(q)}")
     t.free_on(t.define(r), r, t.circle_locus(t.circle_record(p, {q}), "iso_triangle"))
 
 
 @_construction("r_triangle", 3, 3)
 def _r_triangle(t: _Translator, a: list[str]) -> None:
     p, q, r = a  # the right angle at p
-    t.out.append(f"points {t.define(p)} {t.define(q)}")
+    t.emit(f"points {t.define(p)} {t.define(q)}")
     t.free_on(t.define(r), r, _on_tline(t, [r, p, p, q]))
 
 
 @_construction("risos", 3, 3)
 def _risos(t: _Translator, a: list[str]) -> None:
     p, q, r = a  # the right angle at p, |pq| = |pr|; AG flips the figure at random, so one turn is general
-    t.out.append(f"points {t.define(p)} {t.define(q)}")
+    t.emit(f"points {t.define(p)} {t.define(q)}")
     _rotate(t, r, q, p, 1)
 
 
 @_construction("triangle12", 3, 3)
 def _triangle12(t: _Translator, a: list[str]) -> None:
     p, q, r = a  # |pr| = 2 |pq|
-    t.out.append(f"points {t.define(p)} {t.define(q)}")
+    t.emit(f"points {t.define(p)} {t.define(q)}")
     far = f"(reflect {t.p(p)} {t.p(q)})"
-    t.out.append(f"point {t.define(r)} on circle (circle {t.p(p)} {far}) through {far}")
+    t.emit(f"point {t.define(r)} on circle (circle {t.p(p)} {far}) through {far}")
 
 
 @_construction("trapezoid", 4, 4)
 def _trapezoid(t: _Translator, a: list[str]) -> None:
     p, q, r, s = a  # ab ∥ cd
-    t.out.append(f"points {t.define(p)} {t.define(q)} {t.define(r)}")
+    t.emit(f"points {t.define(p)} {t.define(q)} {t.define(r)}")
     t.free_on(t.define(s), s, _on_pline(t, [s, r, p, q]))
 
 
 @_construction("r_trapezoid", 4, 4)
 def _r_trapezoid(t: _Translator, a: list[str]) -> None:
     p, q, r, s = a  # ab ∥ cd, ab ⟂ ad
-    t.out.append(f"points {t.define(p)} {t.define(q)}")
+    t.emit(f"points {t.define(p)} {t.define(q)}")
     t.free_on(t.define(s), s, _on_tline(t, [s, p, p, q]))
     t.free_on(t.define(r), r, _on_pline(t, [r, s, p, q]))
 
@@ -904,14 +923,14 @@ def _r_trapezoid(t: _Translator, a: list[str]) -> None:
 @_construction("eq_trapezoid", 4, 4)
 def _eq_trapezoid(t: _Translator, a: list[str]) -> None:
     p, q, r, s = a  # dc ∥ ab, |da| = |bc|: d is c mirrored in the perpendicular bisector of ab
-    t.out.append(f"points {t.define(p)} {t.define(q)} {t.define(r)}")
+    t.emit(f"points {t.define(p)} {t.define(q)} {t.define(r)}")
     _point(t, s, f"reflect {t.p(r)} (bisector {t.p(p)} {t.p(q)})")
 
 
 @_construction("rectangle", 4, 4)
 def _rectangle(t: _Translator, a: list[str]) -> None:
     p, q, r, s = a
-    t.out.append(f"points {t.define(p)} {t.define(q)}")
+    t.emit(f"points {t.define(p)} {t.define(q)}")
     t.free_on(t.define(r), r, _on_tline(t, [r, q, q, p]))
     _point(t, s, f"translate {t.p(r)} {t.p(q)} {t.p(p)}")
 
@@ -919,14 +938,14 @@ def _rectangle(t: _Translator, a: list[str]) -> None:
 @_construction("eq_quadrangle", 4, 4)
 def _eq_quadrangle(t: _Translator, a: list[str]) -> None:
     p, q, r, s = a  # |da| = |bc|
-    t.out.append(f"points {t.define(p)} {t.define(q)} {t.define(r)}")
+    t.emit(f"points {t.define(p)} {t.define(q)} {t.define(r)}")
     t.free_on(t.define(s), s, _eqdistance(t, [s, p, q, r]))
 
 
 @_construction("eqdia_quadrangle", 4, 4)
 def _eqdia_quadrangle(t: _Translator, a: list[str]) -> None:
     p, q, r, s = a  # |db| = |ac|
-    t.out.append(f"points {t.define(p)} {t.define(q)} {t.define(r)}")
+    t.emit(f"points {t.define(p)} {t.define(q)} {t.define(r)}")
     t.free_on(t.define(s), s, _eqdistance(t, [s, q, p, r]))
 
 
@@ -945,4 +964,180 @@ _UNSUPPORTED: dict[str, str] = {
     "tangent": "needs a branch condition: the two tangent points from a point, told apart by AG numerically",
     "on_opline": "a ray: no construction of pgsym's statement language",
     "acircle": "no construction of pgsym's statement language",
+}
+
+
+# -- a numeric figure: which earlier point an intersection meets, told as AlphaGeometry tells it ----------------
+# AlphaGeometry takes, of the two common points of a line and a circle (or two circles), the one that is not
+# already in the figure. The incidences tracked above are exact but incomplete; this float figure of the
+# statement written so far finds every earlier point that lies on both loci (at a random instance, as
+# AlphaGeometry's own figure does).
+
+_NUMERIC_TRIES = 8
+_TOKENS = re.compile(r"\(|\)|[^\s()]+")
+
+
+class _NoFigure(Exception):  # a signal to draw another random figure, never shown
+    """The random figure is degenerate here (a line and a circle that do not meet)."""
+
+
+@dataclass(frozen=True)
+class _NLine:
+    p: complex
+    d: complex
+
+
+@dataclass(frozen=True)
+class _NCircle:
+    c: complex
+    r2: float
+
+
+class _Numeric:
+    def __init__(self, seed: int) -> None:
+        self.rng = random.Random(seed)
+        self.values: dict[str, Any] = {}
+
+    def random_point(self) -> complex:
+        return complex(self.rng.uniform(-1, 1), self.rng.uniform(-1, 1))
+
+    # -- statements --------------------------------------------------------------------------------------
+    def run(self, statement: str) -> None:
+        try:
+            self._run(statement)
+        except (ZeroDivisionError, OverflowError):
+            raise _NoFigure from None  # two points fell together in the random figure
+
+    def _run(self, statement: str) -> None:
+        words = statement.split()
+        if words[0] == "points":
+            for w in words[1:]:
+                self.values[w] = self.random_point()
+            return
+        name = words[1]
+        if words[2] == "on":  # point x on line …, point x on circle (…) through T
+            tokens = _TOKENS.findall(statement.split(" on ", 1)[1].split(" through ")[0])
+            what, tokens = tokens[0], tokens[1:]
+            if what == "line":
+                args = self._args(tokens)
+                line = args[0] if len(args) == 1 else self._op("join", args)
+                self.values[name] = line.p + self.rng.uniform(-1.5, 1.5) * line.d / max(abs(line.d), 1e-300)
+            else:
+                circle = self._args(tokens)[0]
+                angle = self.rng.uniform(0, 2 * math.pi)
+                self.values[name] = circle.c + (circle.r2 ** 0.5) * complex(math.cos(angle), math.sin(angle))
+            return
+        tokens = _TOKENS.findall(statement.split("=", 1)[1])
+        if tokens[0] in ("anglebisector", "exbisector"):
+            a, b, c = (self.values[w] for w in tokens[1:4])
+            u, v = (a - b) / abs(a - b), (c - b) / abs(c - b)
+            self.values[name] = _NLine(b, u + v if tokens[0] == "anglebisector" else u - v)
+            return
+        if tokens[0] == "intersection":
+            one, two = self._args(tokens[1:])
+            self.values[name] = self.rng.choice(_meet(one, two))
+            return
+        if tokens[0] == "rotate" and len(tokens) == 4:  # by degrees
+            x, o = self.values[tokens[1]], self.values[tokens[2]]
+            angle = int(tokens[3]) * math.pi / 180
+            self.values[name] = o + (x - o) * complex(math.cos(angle), math.sin(angle))
+            return
+        self.values[name] = self._expr(tokens, 0)[0]
+
+    def _args(self, tokens: list[str]) -> list[Any]:
+        out, i = [], 0
+        while i < len(tokens):
+            value, i = self._arg(tokens, i)
+            out.append(value)
+        return out
+
+    def _arg(self, tokens: list[str], i: int) -> tuple[Any, int]:
+        if tokens[i] == "(":
+            value, i = self._expr(tokens, i + 1)
+            return value, i + 1  # past ")"
+        word = tokens[i]
+        if re.fullmatch(r"-?[0-9]+", word):
+            return float(word), i + 1
+        return self.values[word], i + 1
+
+    def _expr(self, tokens: list[str], i: int) -> tuple[Any, int]:
+        if tokens[i] not in _NUMERIC_OPS:
+            return self._arg(tokens, i)
+        op, args, i = tokens[i], [], i + 1
+        while i < len(tokens) and tokens[i] != ")":
+            value, i = self._arg(tokens, i)
+            args.append(value)
+        return self._op(op, args), i
+
+    def _op(self, op: str, a: list[Any]) -> Any:
+        return _NUMERIC_OPS[op](*a)
+
+    # -- the check ----------------------------------------------------------------------------------------
+    def common(self, one: str, two: str, known: list[str], t: _Translator) -> list[str]:
+        """The earlier points on both loci: those known by construction, then those the figure shows."""
+        first, second = (self._expr(_TOKENS.findall(e), 0)[0] for e in (one, two))
+        points = _meet(first, second)
+        scale = 1 + max(abs(v) for v in self.values.values() if isinstance(v, complex))
+        near = [ag for ag, name in t.defined.items()
+                if isinstance(self.values.get(name), complex)
+                and min(abs(self.values[name] - p) for p in points) < 1e-7 * scale]
+        return [*known, *(ag for ag in near if ag not in known)]
+
+
+def _foot(p: complex, line: _NLine) -> complex:
+    d = line.d
+    t = ((p - line.p) * d.conjugate()).real / abs(d) ** 2
+    return line.p + t * d
+
+
+def _line_meet(l: _NLine, m: _NLine) -> complex:
+    cross = (l.d.conjugate() * m.d).imag
+    if abs(cross) < 1e-12 * abs(l.d) * abs(m.d):
+        raise _NoFigure
+    t = ((m.p - l.p).conjugate() * m.d).imag / cross
+    return l.p + t * l.d
+
+
+def _meet(one: Any, two: Any) -> list[complex]:
+    """The common points of two loci (lines and circles) of the numeric figure."""
+    if isinstance(one, _NLine) and isinstance(two, _NLine):
+        return [_line_meet(one, two)]
+    if isinstance(one, _NCircle) and isinstance(two, _NLine):
+        one, two = two, one
+    if isinstance(one, _NLine):
+        f = _foot(two.c, one)
+        h2 = two.r2 - abs(f - two.c) ** 2
+        if h2 < 1e-12 * two.r2:
+            raise _NoFigure
+        step = h2 ** 0.5 * one.d / abs(one.d)
+        return [f + step, f - step]
+    d = two.c - one.c  # two circles: the radical line, then a line and a circle
+    if abs(d) < 1e-12:
+        raise _NoFigure
+    along = (one.r2 - two.r2 + abs(d) ** 2) / (2 * abs(d))
+    return _meet(_NLine(one.c + along * d / abs(d), d * 1j), one)
+
+
+def _circumcentre(a: complex, b: complex, c: complex) -> complex:
+    return _line_meet(_NLine((a + b) / 2, (b - a) * 1j), _NLine((a + c) / 2, (c - a) * 1j))
+
+
+def _reflect(x: complex, what: Any) -> complex:
+    return 2 * (what if isinstance(what, complex) else _foot(x, what)) - x
+
+
+_NUMERIC_OPS: dict[str, Callable[..., Any]] = {
+    "join": lambda p, q: _NLine(p, q - p),
+    "meet": _line_meet,
+    "perpendicular": lambda line, p: _NLine(p, line.d * 1j),
+    "parallel": lambda line, p: _NLine(p, line.d),
+    "bisector": lambda a, b: _NLine((a + b) / 2, (b - a) * 1j),
+    "foot": _foot,
+    "reflect": _reflect,
+    "midpoint": lambda a, b: (a + b) / 2,
+    "circle": lambda *a: (_NCircle(a[0], abs(a[1] - a[0]) ** 2) if len(a) == 2
+                          else _NCircle(_circumcentre(*a), abs(a[0] - _circumcentre(*a)) ** 2)),
+    "centre": lambda k: k.c,
+    "translate": lambda x, a, b: x + b - a,
+    "rotate": lambda x, o, c, s: o + (x - o) * complex(c, s),
 }
