@@ -2,11 +2,13 @@
 
 Every problem is translated (:mod:`pgsym.proofs.alphageometry`) and proved with the engine's timeout of
 10 s, each in a child process stopped at 30 s (then it counts as unknown). One JSON line per set: the
-counts proved / unknown / wrong / unsupported / errors, the median time of the translated problems
-(``median_s``, seconds, a timeout counting as its time) and of the proved ones (``median_proved_s``), and the refutations among the wrong ones whose translation lets either point of
-a line and a circle (or two circles) be taken (``wrong_either``: AlphaGeometry took one at random, so the
-problem may hold on one branch only). Every problem of the files is a true theorem, so a refutation is
-wrong. ``--verbose`` adds one JSON line per problem. ``--only N`` runs the first N problems of each set.
+counts proved / unknown / wrong / unsupported / errors; the median time of the translated problems
+(``median_s``, seconds, a timeout counting as its time) and of the proved ones (``median_proved_s``);
+``wrong_either``, the wrong ones whose translation lets either common point of a line and a circle (or
+two circles) be taken, as AlphaGeometry takes one at random (such a problem may hold on one branch
+only); and how often each unsupported construction refused a problem. Every problem of the files is a
+true theorem, so a refutation is wrong. ``--verbose`` adds one JSON line per problem; ``--only N`` runs
+the first N problems of each set.
 
     python bench/bench_alphageometry.py [--verbose] [--only N]
 """

@@ -378,7 +378,8 @@ class _Translator:
                     raise self.unsupported(c[0], _UNSUPPORTED[c[0]])
                 raise self.fail(f"unknown construction {c[0][:40]!r}", c[0][:40])
             arity, count, _ = _CONSTRUCTIONS[c[0]]
-            if len(c) - 1 == arity - count and count == len(news):  # the short form: on_line b c for x
+            short = len(c) - 1 == arity - count and count == len(news)
+            if short and sorted(c[1:1 + count]) != sorted(news):  # the short form: on_line b c for x
                 c[1:1] = news
             if len(c) - 1 != arity:
                 raise self.fail(f"{c[0]} takes {arity} arguments, got {len(c) - 1}", c[0])
