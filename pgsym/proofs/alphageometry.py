@@ -34,6 +34,7 @@ pgsym.proofs.errors.UnsupportedConstructionError: unsupported: trisect (no const
 
 from __future__ import annotations
 
+import itertools
 import math
 import os
 import random
@@ -199,14 +200,55 @@ def translate(problem: str, line: int = 0, title: str = "") -> str:
     """
     if len(problem) > MAX_AG_LINE_CHARS:
         raise AlphaGeometryError(f"a problem of {len(problem)} characters; at most {MAX_AG_LINE_CHARS}", line)
+    # Random float figures, on every choice of the points AlphaGeometry takes at random (at most 2³ choices):
+    # a goal that holds on some choices only needs a branch condition, one that holds in some figures only a
+    # condition on the figure; neither can be written in pgsym's language, so such a problem is refused.
+    text, either, truths = None, [], []
     for seed in range(_NUMERIC_TRIES):
         try:
-            return _Translator(line, seed).run(problem, title)
+            first = _Translator(line, seed)
+            out = first.run(problem, title)
+            results = {(False, ()): first.goal_holds()}
+            choices = list(itertools.product((0, 1), repeat=min(len(first.either), 3)))
+            flips = (False, True) if first.flippable else (False,)
+            for flip, bits in list(itertools.product(flips, choices))[1:]:
+                bits = bits if any(bits) else ()
+                t = _Translator(line, seed, bits, flip)
+                try:
+                    other = t.run(problem, title)
+                    holds = t.goal_holds()
+                except _NoFigure:
+                    continue  # a degenerate choice (AlphaGeometry would draw again): the others decide
+                if other != out:
+                    raise first.branch(first.either, "the translation depends on the choice")
+                results[flip, bits] = holds
+                if flip and (False, bits) in results and holds != results[False, bits]:
+                    raise UnsupportedConstructionError(
+                        f"unsupported: {first.flippable} needs a branch condition (AlphaGeometry draws it mirrored at "
+                        "random, and the goal holds in one orientation only)", line, construction=first.flippable)
         except _NoFigure:
             continue  # the random figure had no real intersection: another one, as AlphaGeometry does
-    raise UnsupportedConstructionError(f"unsupported: two loci that never met in two points in {_NUMERIC_TRIES} random "
-                                       "figures (they may touch), so their common points cannot be told apart",
-                                       line, construction="intersection")
+        if text is None:
+            text, either = out, first.either
+        elif out != text:
+            raise first.branch(first.either, "the translation depends on the figure")
+        truths += [(seed, holds) for holds in results.values()]
+        if len({s for s, _ in truths}) >= _FIGURES:
+            break
+    if text is None:
+        raise UnsupportedConstructionError(f"unsupported: two loci that never met in two points in {_NUMERIC_TRIES} "
+                                           "random figures (they may touch), so their common points cannot be told "
+                                           "apart", line, construction="intersection")
+    if len({h for _, h in truths}) == 2:
+        by_seed: dict[int, set[bool]] = {}
+        for seed, holds in truths:
+            by_seed.setdefault(seed, set()).add(holds)
+        if any(len(v) == 2 for v in by_seed.values()):
+            raise _Translator(line).branch(either, "the goal holds for one of the two common points only")
+        raise UnsupportedConstructionError("unsupported: the goal holds in some random figures only (AlphaGeometry's "
+                                           "figure fixes an order or a side that pgsym's language cannot state)",
+                                           line, construction="figure")
+    return text
 
 
 # -- the figure: which points are known on which lines and circles ------------------------------------------
@@ -233,9 +275,12 @@ class _Locus:
 
 
 class _Translator:
-    def __init__(self, line: int, seed: int = 0) -> None:
+    def __init__(self, line: int, seed: int = 0, bits: tuple[int, ...] = (), flip: bool = False) -> None:
         self.line = line
-        self.numeric = _Numeric(seed)
+        self.flip, self.flippable = flip, ""  # the mirrored figure of a shape AG mirrors at random
+        self.numeric = _Numeric(seed, bits)
+        self.either: list[str] = []  # the constructions of the points AG takes at random (either common point)
+        self.goal_words: list[str] = []
         self.out: list[str] = []
         self.defined: dict[str, str] = {}  # AG name -> pgsym name (in definition order)
         self.collinear: list[set[str]] = []
@@ -251,6 +296,19 @@ class _Translator:
     # -- errors and names ---------------------------------------------------------------------------------
     def fail(self, message: str, construction: str = "") -> AlphaGeometryError:
         return AlphaGeometryError(message, self.line, construction=construction)
+
+    def branch(self, either: list[str], why: str) -> UnsupportedConstructionError:
+        name = either[0] if either else "intersection"
+        return UnsupportedConstructionError(f"unsupported: {name} needs a branch condition ({why}; AlphaGeometry "
+                                            "takes either point at random)", self.line, construction=name.split()[0])
+
+    def goal_holds(self) -> bool:
+        """Whether the goal holds in the float figure."""
+        name, *args = self.goal_words
+        try:
+            return _GOALS[name]([self.numeric.values[self.defined[a]] for a in args])
+        except (ZeroDivisionError, OverflowError):
+            raise _NoFigure from None
 
     def unsupported(self, construction: str, why: str) -> UnsupportedConstructionError:
         return UnsupportedConstructionError(f"unsupported: {construction} ({why})", self.line,
@@ -433,12 +491,14 @@ class _Translator:
             self.emit(f"point {x} = reflect {self.p(common[0])} (foot {two.centre} ({one.expr}))")
         elif one.kind == "line":
             x = self.define(ag)
+            self.either.append(f"{one.name}/{two.name} of {ag}")
             self.emit(f"point {x} = intersection ({one.expr}) ({two.expr})")
         elif common:
             x = self.define(ag)
             self.emit(f"point {x} = reflect {self.p(common[0])} (join {one.centre} {two.centre})")
         else:
             x = self.define(ag)
+            self.either.append(f"{one.name}/{two.name} of {ag}")
             self.emit(f"point {x} = intersection ({one.expr}) ({two.expr})")
         one.add(ag)
         two.add(ag)
@@ -456,6 +516,7 @@ class _Translator:
         if (want is not None and len(args) != want) or (want is None and len(args) < (3 if name == "coll" else 4)):
             raise self.fail(f"the goal {name} takes {want or 'at least 3'} points, got {len(args)}", name)
         p = [self.p(a) for a in args]
+        self.goal_words = [name, *args]
 
         def d(i: int, j: int) -> str:
             return f"(dist2 {p[i]} {p[j]})"
@@ -831,6 +892,16 @@ def _rotate(t: _Translator, ag: str, x: str, o: str, sign: int) -> None:
     _point(t, ag, f"rotate {t.p(x)} {t.p(o)} 0 {'-' if sign < 0 else ''}1")
 
 
+def _mirrored(t: _Translator, shape: str, *points: str) -> None:
+    """AlphaGeometry draws this shape mirrored at random: in the mirrored float figure, turn the other way."""
+    t.flippable = t.flippable or shape
+    if t.flip:  # the turned points reflected in the line of the two free ones
+        values = t.numeric.values
+        line = _NLine(values[t.p(points[0])], values[t.p(points[1])] - values[t.p(points[0])])
+        for ag in points[2:]:
+            values[t.p(ag)] = _reflect(values[t.p(ag)], line)
+
+
 @_construction("psquare", 3)
 def _psquare(t: _Translator, a: list[str]) -> None:
     _distinct(t, "psquare", a[1], a[2])
@@ -859,6 +930,7 @@ def _isquare(t: _Translator, a: list[str]) -> None:
     t.emit(f"points {t.define(p)} {t.define(q)}")
     _rotate(t, r, p, q, -1)
     _rotate(t, s, q, p, 1)
+    _mirrored(t, "isquare", p, q, r, s)
 
 
 @_construction("eq_triangle", 3)
@@ -875,6 +947,7 @@ def _ieq_triangle(t: _Translator, a: list[str]) -> None:
     p, q, r = a
     t.emit(f"points {t.define(p)} {t.define(q)}")
     _point(t, r, f"rotate {t.p(q)} {t.p(p)} 60")
+    _mirrored(t, "ieq_triangle", p, q, r)
 
 
 @_construction("iso_triangle", 3, 3)
@@ -896,6 +969,7 @@ def _risos(t: _Translator, a: list[str]) -> None:
     p, q, r = a  # the right angle at p, |pq| = |pr|; AG flips the figure at random, so one turn is general
     t.emit(f"points {t.define(p)} {t.define(q)}")
     _rotate(t, r, q, p, 1)
+    _mirrored(t, "risos", p, q, r)
 
 
 @_construction("triangle12", 3, 3)
@@ -975,6 +1049,7 @@ _UNSUPPORTED: dict[str, str] = {
 # AlphaGeometry's own figure does).
 
 _NUMERIC_TRIES = 8
+_FIGURES = 3  # random figures the goal is evaluated in
 _TOKENS = re.compile(r"\(|\)|[^\s()]+")
 
 
@@ -995,8 +1070,9 @@ class _NCircle:
 
 
 class _Numeric:
-    def __init__(self, seed: int) -> None:
+    def __init__(self, seed: int, bits: tuple[int, ...] = ()) -> None:
         self.rng = random.Random(seed)
+        self.bits, self.choices = bits, 0
         self.values: dict[str, Any] = {}
 
     def random_point(self) -> complex:
@@ -1036,7 +1112,10 @@ class _Numeric:
             return
         if tokens[0] == "intersection":
             one, two = self._args(tokens[1:])
-            self.values[name] = self.rng.choice(_meet(one, two))
+            two_points = _meet(one, two)
+            bit = self.bits[self.choices] if self.choices < len(self.bits) else 0
+            self.choices += 1
+            self.values[name] = two_points[bit]
             return
         if tokens[0] == "rotate" and len(tokens) == 4:  # by degrees
             x, o = self.values[tokens[1]], self.values[tokens[2]]
@@ -1142,3 +1221,47 @@ _NUMERIC_OPS: dict[str, Callable[..., Any]] = {
     "translate": lambda x, a, b: x + b - a,
     "rotate": lambda x, o, c, s: o + (x - o) * complex(c, s),
 }
+
+
+def _close(x: float, y: float) -> bool:
+    return abs(x - y) < 1e-7 * (1 + abs(x) + abs(y))
+
+
+def _cross(u: complex, v: complex) -> float:
+    return (u.conjugate() * v).imag
+
+
+def _line_angle(p: complex, q: complex, r: complex, s: complex) -> float:
+    """The angle from line pq to line rs, modulo π."""
+    return math.atan2(_cross(q - p, s - r), ((q - p).conjugate() * (s - r)).real) % math.pi
+
+
+def _same_angle(x: float, y: float) -> bool:
+    d = (x - y) % math.pi
+    return min(d, math.pi - d) < 1e-7
+
+
+def _concyclic(v: list[complex]) -> bool:
+    o = _circumcentre(v[0], v[1], v[2])
+    return all(_close(abs(z - o), abs(v[0] - o)) for z in v[3:])
+
+
+def _dist(v: list[complex], i: int, j: int) -> float:
+    return abs(v[i] - v[j])
+
+
+_GOALS: dict[str, Callable[[list[complex]], bool]] = {  # AlphaGeometry's goals in the float figure
+    "coll": lambda v: all(abs(_cross(v[1] - v[0], z - v[0])) < 1e-9 * (1 + abs(v[1] - v[0]) * abs(z - v[0]))
+                          for z in v[2:]),
+    "para": lambda v: _same_angle(_line_angle(*v[:4]), 0.0),
+    "perp": lambda v: _same_angle(_line_angle(*v[:4]), math.pi / 2),
+    "cong": lambda v: _close(_dist(v, 0, 1), _dist(v, 2, 3)),
+    "cyclic": _concyclic,
+    "eqangle": lambda v: _same_angle(_line_angle(*v[0:4]), _line_angle(*v[4:8])),
+    "eqratio": lambda v: _close(_dist(v, 0, 1) * _dist(v, 6, 7), _dist(v, 2, 3) * _dist(v, 4, 5)),
+    "midp": lambda v: _close(abs(v[0] - (v[1] + v[2]) / 2), 0.0),
+    "simtri": lambda v: (_close(_dist(v, 0, 1) * _dist(v, 4, 5), _dist(v, 1, 2) * _dist(v, 3, 4))
+                         and _close(_dist(v, 1, 2) * _dist(v, 5, 3), _dist(v, 2, 0) * _dist(v, 4, 5))),
+    "contri": lambda v: all(_close(_dist(v, i, j), _dist(v, i + 3, j + 3)) for i, j in ((0, 1), (1, 2), (2, 0))),
+}
+_GOALS["simtrir"], _GOALS["contrir"] = _GOALS["simtri"], _GOALS["contri"]
