@@ -402,7 +402,7 @@ def test_every_problem_of_both_sets_is_read(name: str) -> None:
             assert str(p.error).startswith(str(DATA / name) + f":{p.line}: unsupported: ")
         else:
             parse_statement(p.statement, name=p.name)  # the language reads every translation
-    assert sum(p.error is None for p in problems) >= 0.7 * len(problems)
+    assert sum(p.error is None for p in problems) >= 0.6 * len(problems)  # 19 of 30, 207 of 231 now
 
 
 def test_the_readme_names_the_source_and_licence():
@@ -518,3 +518,22 @@ def test_cli_unknown_problem_and_bad_file(problems: Path, tmp_path: Path) -> Non
 def test_cli_help_has_an_example():
     result = run("--help")
     assert "--from alphageometry" in result.stdout and "imo_ag_30.txt" in result.stdout
+
+
+def test_a_goal_true_for_one_random_choice_only_needs_a_branch_condition():
+    # e on line bc with |ce| = |cd|: |ae| = |bd| for the mirror image of d in the bisector of ab only
+    problem = ("a b = segment a b; c = on_bline c a b; d = on_line d a c; e = on_circle e c d, on_line e b c"
+               " ? cong a e b d")
+    goal = problem.split("?")[1]
+    one, other = (goal_holds(goal, figure(problem, Branches((bit,)), random.Random(3))) for bit in (0, 1))
+    assert one != other  # this file's figure: the goal holds on one branch only
+    with pytest.raises(UnsupportedConstructionError, match="on_circle of e needs a branch condition"):
+        translate(problem)
+
+
+def test_a_shape_drawn_mirrored_at_random_needs_a_branch_condition():
+    # risos turns b about a by ±90° (AlphaGeometry mirrors it at random), psquare always by +90°: a is the
+    # midpoint of c and d in one orientation only
+    with pytest.raises(UnsupportedConstructionError, match="risos needs a branch condition") as err:
+        translate("a b c = risos a b c; d = psquare d a b ? midp a c d")
+    assert err.value.construction == "risos"

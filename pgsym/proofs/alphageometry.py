@@ -18,6 +18,14 @@ numerically: a point already in the figure is avoided, otherwise either is taken
 * a choice pgsym cannot name (a ray meeting a circle picks the point on the ray) is refused with
   :class:`~pgsym.proofs.errors.UnsupportedConstructionError` ("needs a branch condition"), never guessed.
 
+The tracked incidences are exact but incomplete, so the translator also draws the figure in floats (at
+random, as AlphaGeometry does) while it writes the statement: an earlier point found on both loci gives the
+other common point too. The goal is then evaluated in a few random figures, on every choice of the random
+common points and with the shapes AlphaGeometry mirrors at random (``isquare``, ``risos``,
+``ieq_triangle``) mirrored: a goal that holds on some choices only needs a branch condition, one that holds
+in some figures only a condition on the figure; both are refused rather than translated into a statement
+pgsym would refute.
+
 Goals: ``coll para perp cong cyclic eqangle eqratio midp simtri contri``. Constructions pgsym cannot
 express are refused with the same error, naming the construction.
 
