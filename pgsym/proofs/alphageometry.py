@@ -1235,13 +1235,13 @@ def _close(x: float, y: float) -> bool:
     return abs(x - y) < 1e-7 * (1 + abs(x) + abs(y))
 
 
-def _cross(u: complex, v: complex) -> float:
+def _perp_dot(u: complex, v: complex) -> float:  # of two plane vectors as complex numbers (floats)
     return (u.conjugate() * v).imag
 
 
 def _line_angle(p: complex, q: complex, r: complex, s: complex) -> float:
     """The angle from line pq to line rs, modulo π."""
-    return math.atan2(_cross(q - p, s - r), ((q - p).conjugate() * (s - r)).real) % math.pi
+    return math.atan2(_perp_dot(q - p, s - r), ((q - p).conjugate() * (s - r)).real) % math.pi
 
 
 def _same_angle(x: float, y: float) -> bool:
@@ -1259,7 +1259,7 @@ def _dist(v: list[complex], i: int, j: int) -> float:
 
 
 _GOALS: dict[str, Callable[[list[complex]], bool]] = {  # AlphaGeometry's goals in the float figure
-    "coll": lambda v: all(abs(_cross(v[1] - v[0], z - v[0])) < 1e-9 * (1 + abs(v[1] - v[0]) * abs(z - v[0]))
+    "coll": lambda v: all(abs(_perp_dot(v[1] - v[0], z - v[0])) < 1e-9 * (1 + abs(v[1] - v[0]) * abs(z - v[0]))
                           for z in v[2:]),
     "para": lambda v: _same_angle(_line_angle(*v[:4]), 0.0),
     "perp": lambda v: _same_angle(_line_angle(*v[:4]), math.pi / 2),
