@@ -1056,8 +1056,8 @@ _UNSUPPORTED: dict[str, str] = {
 # statement written so far finds every earlier point that lies on both loci (at a random instance, as
 # AlphaGeometry's own figure does).
 
-_NUMERIC_TRIES = 8
-_FIGURES = 3  # random figures the goal is evaluated in
+_NUMERIC_TRIES = 16
+_FIGURES = 8  # random figures the goal is evaluated in
 _TOKENS = re.compile(r"\(|\)|[^\s()]+")
 
 
