@@ -5,9 +5,10 @@
     $ pgsym prove tests/theorems/pappus.thm
 
 An argument ending in ``.thm``, or naming an existing file, is read as a theorem of the
-statement language (:mod:`pgsym.proofs.language`). The exit status is 1 when a claim stated
-as true is not proved, or a claim stated as false is "proved"; 2 for a file that cannot be read
-(``Error: FILE:LINE:COL: message``); 0 otherwise.
+statement language (:mod:`pgsym.proofs.language`). ``--from alphageometry FILE [NAME…]`` reads a problem
+file of AlphaGeometry instead (:mod:`pgsym.proofs.alphageometry`; exit status 1 when a problem is refuted).
+The exit status is 1 when a claim stated as true is not proved, or a claim stated as false is "proved";
+2 for a file that cannot be read (``Error: FILE:LINE:COL: message``); 0 otherwise.
 """
 
 from __future__ import annotations
@@ -75,8 +76,14 @@ each verdict covers):
     prove collinear (foot P (join B C)) (foot P (join C A)) (foot P (join A B))
 """
 
+_AG_EXAMPLE = """\b
+AlphaGeometry's problems (a name line, then the problem line):
+    pgsym prove --from alphageometry imo_ag_30.txt translated_imo_2000_p6
+    pgsym prove --from alphageometry problems.txt --show    # the translations
+"""
 
-@click.command("prove", epilog=_EXAMPLE)
+
+@click.command("prove", epilog=_EXAMPLE + "\n" + _AG_EXAMPLE)
 @click.argument("names", nargs=-1)
 @click.option("--list", "list_", is_flag=True, help="List the catalogue's claims and exit.")
 @click.option("--all", "all_", is_flag=True, help="Prove every claim of the catalogue.")
@@ -85,13 +92,24 @@ each verdict covers):
               "certificate, non-degeneracy conditions, counterexample).")
 @click.option("--timeout", type=DecimalRange(min=0, max=86400, min_open=True), default=10.0, show_default=True,
               help="Seconds per claim (at most a day); a claim that takes longer is reported as unknown.")
+@click.option("--from", "source", type=click.Choice(["alphageometry"]), default=None,
+              help="Read FILE as problems of another prover's language (AlphaGeometry: NAMES are FILE and the "
+              "problems to prove, all when none is given).")
+@click.option("--show", is_flag=True, help="With --from: print each problem's translation into the statement "
+              "language instead of proving it.")
 def prove_command(names: tuple[str, ...], list_: bool, all_: bool, as_json: bool, certificate: bool,
-                  timeout: float) -> None:
+                  timeout: float, source: str | None, show: bool) -> None:
     """Prove claims of the catalogue, or theorem files (FILE.thm), by exact polynomial arithmetic.
 
     Examples: pgsym prove --list; pgsym prove pappus desargues; pgsym prove --all --json;
-    pgsym prove tests/theorems/pappus.thm --certificate
+    pgsym prove tests/theorems/pappus.thm --certificate;
+    pgsym prove --from alphageometry imo_ag_30.txt translated_imo_2000_p6
     """
+    if source is not None:
+        _prove_foreign(names, timeout, show, as_json)
+        return
+    if show:
+        raise click.UsageError("--show goes with --from")
     from ..proofs.catalogue import CATALOGUE, catalogue_names, prove  # SymPy loads only when a command runs
 
     if list_:
@@ -145,6 +163,59 @@ def prove_command(names: tuple[str, ...], list_: bool, all_: bool, as_json: bool
     bad = [v.name for v in verdicts if not v.as_expected and (v.expected or v.status is Status.PROVED)]
     if bad:
         click.echo(f"not as expected: {', '.join(bad)}", err=True)
+        sys.exit(1)
+
+
+def _prove_foreign(names: tuple[str, ...], timeout: float, show: bool, as_json: bool) -> None:
+    """``--from alphageometry FILE [NAME…]``: one verdict line a problem, then the summary."""
+    if not names:
+        raise click.UsageError("give the problem file: pgsym prove --from alphageometry FILE [NAME…]")
+    long = [n for n in names if len(n) > MAX_ARGUMENT_CHARS]
+    if long:
+        raise click.BadParameter(f"an argument of {len(long[0])} characters; at most {MAX_ARGUMENT_CHARS}",
+                                 param_hint="NAMES")
+    from ..proofs.alphageometry import OUTCOMES, read_alphageometry_file, solve
+
+    try:
+        problems = read_alphageometry_file(names[0])
+    except StatementError as err:
+        raise _BadFile(str(err)) from None
+    wanted = list(dict.fromkeys(names[1:]))
+    known = {p.name for p in problems}
+    missing = [n for n in wanted if n not in known]
+    if missing:
+        raise click.BadParameter(f"no problem named {missing[0]!r} in {names[0]} (it has {len(problems)})",
+                                 param_hint="NAMES")
+    chosen = [p for p in problems if not wanted or p.name in wanted]
+    if show:
+        for p in chosen:
+            click.echo(p.statement if p.statement is not None else f"# {p.name}\n# {p.error}")
+            click.echo()
+        return
+    counts = dict.fromkeys(OUTCOMES, 0)
+    rows = []
+    with click.progressbar(chosen, label="proving", file=sys.stderr, show_pos=True) as bar:
+        for p in bar:
+            outcome = solve(p, timeout=timeout)
+            counts[outcome.status] += 1
+            rows.append(outcome)
+    for o in rows:
+        if as_json:
+            continue
+        if o.verdict is not None:
+            note = ("  [either common point, as AlphaGeometry takes one at random: the problem may need a branch "
+                    "condition]" if o.status == "refuted" and o.either else "")
+            click.echo(_line(o.verdict).replace(f"{o.verdict.status:10s}", f"{o.status:11s}", 1) + note)
+        else:
+            click.echo(f"{o.status:11s}  {o.problem.name:40s}  ({o.message})")
+    if as_json:
+        click.echo(json.dumps([{"name": o.problem.name, "line": o.problem.line, "status": o.status,
+                                "message": o.message or str(getattr(o.verdict, "reason", "") or ""),
+                                "elapsed_ms": round(1000 * o.elapsed, 2)} for o in rows], ensure_ascii=False,
+                              indent=1))
+    summary = ", ".join(f"{counts[k]} {k if k != 'error' else 'errors'}" for k in OUTCOMES)
+    click.echo(f"{len(rows)} problems: {summary}", err=as_json)
+    if counts["refuted"]:
         sys.exit(1)
 
 

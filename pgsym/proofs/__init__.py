@@ -15,6 +15,7 @@ from __future__ import annotations
 from .._lazy import lazy_names
 from . import errors as _errors
 from .errors import (  # noqa: F401 (re-exported)
+    AlphaGeometryError,
     NonPolynomialClaimError,
     PolynomialBackendError,
     StatementError,
@@ -24,6 +25,7 @@ from .errors import (  # noqa: F401 (re-exported)
     StatementSyntaxError,
     UndefinedConstructionError,
     UnknownClaimError,
+    UnsupportedConstructionError,
 )
 
 _LAZY = {

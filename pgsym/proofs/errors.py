@@ -10,6 +10,7 @@ from __future__ import annotations
 from ..errors import InputLimitError, InvalidCoordinatesError, ObjectTypeError, PgsymError
 
 __all__ = [
+    "AlphaGeometryError",
     "NonPolynomialClaimError",
     "PolynomialBackendError",
     "StatementError",
@@ -19,6 +20,7 @@ __all__ = [
     "StatementSyntaxError",
     "UndefinedConstructionError",
     "UnknownClaimError",
+    "UnsupportedConstructionError",
 ]
 
 
@@ -73,3 +75,30 @@ class StatementKindError(StatementError, ObjectTypeError):
 
 class StatementLimitError(StatementError, InputLimitError):
     """The statement exceeds a limit of :mod:`pgsym.limits` (size, line length, nesting, names)."""
+
+
+class AlphaGeometryError(StatementError):
+    """A problem of AlphaGeometry's construction language cannot be read (its syntax, an unknown or undefined
+    point, a construction with the wrong number of arguments); ``construction`` names the construction, if any.
+
+    >>> str(AlphaGeometryError("on_line takes 3 points, got 2", 4, construction="on_line"))
+    '4: on_line takes 3 points, got 2'
+    """
+
+    def __init__(self, message: str, line: int = 0, column: int = 0, source: str = "",
+                 construction: str = "") -> None:
+        super().__init__(message, line, column, source)
+        self.construction = construction
+
+    def __str__(self) -> str:  # a line of the problem file, no column: "FILE:LINE: message"
+        where = f"{self.line}{':' + str(self.column) if self.column else ''}: " if self.line else ""
+        return f"{self.source + ':' if self.source else ''}{where}{self.message}"
+
+
+class UnsupportedConstructionError(AlphaGeometryError):
+    """A construction or goal of AlphaGeometry's language that pgsym's statement language cannot express
+    faithfully (for instance one whose meaning depends on a branch that pgsym cannot name).
+
+    >>> str(UnsupportedConstructionError("unsupported: trisect", 2, construction="trisect"))
+    '2: unsupported: trisect'
+    """
