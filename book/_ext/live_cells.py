@@ -260,8 +260,9 @@ def _mutated(node: ast.AST) -> set[str]:
     out: set[str] = set()
     for sub in ast.walk(node):
         target = None
-        if isinstance(sub, ast.Expr) and isinstance(sub.value, ast.Call) and isinstance(sub.value.func, ast.Attribute):
-            target = sub.value.func.value
+        call = sub.value if isinstance(sub, ast.Expr) else None
+        if isinstance(call, ast.Call) and isinstance(call.func, ast.Attribute):
+            target = call.func.value
         elif isinstance(sub, ast.Subscript | ast.Attribute) and isinstance(sub.ctx, ast.Store | ast.Del):
             target = sub.value
         while isinstance(target, ast.Attribute | ast.Subscript):
@@ -292,10 +293,13 @@ def classify_cells(cells: list[tuple[str, list[str]]]) -> list[dict[str, Any]]:
     True
     >>> classify_cells([("1 + 1", ["no-live"])])[0]["reason"]
     'Marked to run only locally'
-    >>> cells = classify_cells([("import matplotlib.pyplot as plt\\nimport sympy as sp\\nplt.rcParams['a'] = 1", []),
-    ...                         ("sp.Integer(2)", [])])
-    >>> [c["live"] for c in cells], cells[0]["reason"], cells[0]["quiet"]
-    ([False, True], 'Draws with Matplotlib, which the page cannot load', 'import matplotlib.pyplot as plt\\nimport sympy as sp')
+    >>> cells = classify_cells([
+    ...     ("import matplotlib.pyplot as plt\\nimport sympy as sp\\nplt.rcParams['a'] = 1", []),
+    ...     ("sp.Integer(2)", [])])
+    >>> [c["live"] for c in cells], cells[0]["reason"]
+    ([False, True], 'Draws with Matplotlib, which the page cannot load')
+    >>> cells[0]["quiet"]
+    'import matplotlib.pyplot as plt\\nimport sympy as sp'
     """
     tainted: dict[str, _Taint] = {}
     modules: set[str] = set()  # names an import bound to a module the page loads (sp, pgsym)
