@@ -251,8 +251,11 @@ for (const [index, info] of data.cells.entries()) {
   if (node) cells.push(new LiveCell(index, info, node));
 }
 
-// Python takes seconds to start: begin once the page is idle, unless the reader asked to save data.
+// Python takes seconds to start: begin once the page has loaded and is idle (at most half a second
+// later; the worker runs beside the page), unless the reader asked to save data.
 if (cells.some((c) => c.live) && !navigator.connection?.saveData) {
-  const idle = window.requestIdleCallback ?? ((callback) => setTimeout(callback, 1000));
-  idle(() => warmUp(), { timeout: 3000 });
+  const idle = window.requestIdleCallback ?? ((callback) => setTimeout(callback, 100));
+  const start = () => idle(() => warmUp(), { timeout: 500 });
+  if (document.readyState === "complete") start();
+  else window.addEventListener("load", start, { once: true });
 }
