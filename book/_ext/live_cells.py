@@ -33,8 +33,15 @@ logger = logging.getLogger(__name__)
 BROWSER_PACKAGES = frozenset({"sympy", "mpmath", "pgsym"})
 BROWSER_SHIMS = frozenset({"IPython", "IPython.display"})
 FORCE_ON, FORCE_OFF = "live", "no-live"
+HIDDEN = frozenset({"hide-input", "hide-cell", "remove-input"})
 ASSETS = "_live/_static/live"  # built by `make live`, relative to the book's root
+# The chapters' own modules (book/_show.py, book/_plot.py): those whose imports the page can load are
+# copied to the page's Python with the wheels (`from _show import report` works in a live cell).
+BOOK = Path(__file__).resolve().parents[1]
+LOCAL = "modules"  # their folder below _static/live
 # How the reason names a package a reader knows by another name.
+# What a statement does with a package, for the reason a cell gives ("Draws with Matplotlib, ...").
+VERBS = {"matplotlib": "Draws with", "mpl_toolkits": "Draws with", "numpy": "Computes with"}
 PACKAGE_NAMES = {"numpy": "NumPy", "matplotlib": "Matplotlib", "mpl_toolkits": "Matplotlib", "cv2": "OpenCV",
                  "skimage": "scikit-image", "scipy": "SciPy", "PIL": "Pillow", "flint": "python-flint"}
 
@@ -109,22 +116,44 @@ def _direct_imports(module: str) -> tuple[str, ...]:
     return tuple(_module_level_imports(ast.parse(path.read_text(encoding="utf-8")), package))
 
 
+def _local(module: str) -> Path | None:
+    """The file of one of the book's own modules (``_show``), or None."""
+    path = BOOK / f"{module}.py"
+    return path if "." not in module and path.is_file() else None
+
+
+@cache
+def _local_imports(module: str) -> tuple[str, ...]:
+    path = _local(module)
+    return tuple(_module_level_imports(ast.parse(path.read_text(encoding="utf-8")), None)) if path else ()
+
+
+def local_modules() -> list[Path]:
+    """The book's own modules that the page can load (they are copied next to the wheels)."""
+    return [path for path in sorted(BOOK.glob("*.py")) if missing_package(path.stem) is None]
+
+
 @cache
 def missing_package(module: str) -> str | None:
     """The first package ``module`` needs at import time that the page cannot load, or None.
 
     >>> missing_package("pgsym.projective_plane"), missing_package("pgsym.numeric"), missing_package("cv2")
     (None, 'numpy', 'cv2')
+    >>> missing_package("_show"), missing_package("_plot")
+    (None, 'matplotlib')
     """
     seen: set[str] = set()
     todo = [module]
     while todo:
-        name = todo.pop()
+        name = todo.pop(0)  # in import order, so that the first package the module needs is named
         if name in seen:
             continue
         seen.add(name)
         top = name.split(".")[0]
         if top in sys.stdlib_module_names or name in BROWSER_SHIMS:
+            continue
+        if _local(top):  # the book's own module: it loads when what it imports does
+            todo.extend(_local_imports(top))
             continue
         if top not in BROWSER_PACKAGES:
             return top
@@ -193,103 +222,151 @@ def _import_bindings(stmt: ast.Import | ast.ImportFrom) -> list[tuple[str, str |
     return out
 
 
-def _needs(package: str) -> str:
-    return f"needs {PACKAGE_NAMES.get(package, package)}, which does not run in the page"
+def _name(package: str) -> str:
+    return PACKAGE_NAMES.get(package, package)
 
 
-def _capital(text: str) -> str:
-    return text[0].upper() + text[1:]
+def _cannot(package: str) -> str:
+    return f"{_name(package)}, which the page cannot load"
+
+
+class _Taint:
+    """Why a name cannot be used in the page: the package it needs and how it came to need it.
+
+    ``module`` is set when an import bound the name: to the module itself (``np``, ``plt``, ``_plot``;
+    ``attribute`` False) or to a name taken from it (``harris`` from ``pgsym.vision.harris``). A package
+    of None means the name comes from a cell marked to run only locally.
+    """
+
+    def __init__(self, package: str | None, module: str | None = None, attribute: bool = False) -> None:
+        self.package, self.module, self.attribute = package, module, attribute
+
+    def reason(self, name: str) -> str:
+        if self.package is None:
+            return f"Uses {name}, which comes from a cell marked to run only locally"
+        if self.module is None:
+            return f"Uses {name}, which depends on {_cannot(self.package)}"
+        if self.attribute:
+            return f"Uses {name} from {self.module}, which needs {_cannot(self.package)}"
+        verb = VERBS.get(self.package, "Uses")
+        if self.module.split(".")[0] == self.package:
+            return f"{verb} {_cannot(self.package)}"
+        return f"{verb} {_name(self.package)} (through {self.module}), which the page cannot load"
+
+
+def _mutated(node: ast.AST) -> set[str]:
+    """Names a statement may change in place: receivers of method calls made for their effect
+    (``pts.append(p)``, not ``H.det()`` inside an expression), targets of item and attribute stores."""
+    out: set[str] = set()
+    for sub in ast.walk(node):
+        target = None
+        call = sub.value if isinstance(sub, ast.Expr) else None
+        if isinstance(call, ast.Call) and isinstance(call.func, ast.Attribute):
+            target = call.func.value
+        elif isinstance(sub, ast.Subscript | ast.Attribute) and isinstance(sub.ctx, ast.Store | ast.Del):
+            target = sub.value
+        while isinstance(target, ast.Attribute | ast.Subscript):
+            target = target.value
+        if isinstance(target, ast.Name):
+            out.add(target.id)
+    return out
 
 
 def classify_cells(cells: list[tuple[str, list[str]]]) -> list[dict[str, Any]]:
     """Decide for each ``(source, tags)`` of a page, in order, whether it runs in the browser.
 
-    An import does not stop a cell: the page binds ``np`` in ``import numpy as np`` (or ``nullspace_svd``
-    in ``from pgsym.linalg import nullspace_svd``) to a placeholder module listed in ``stubs``, and only
-    the statements that use such a name cannot run. A function that uses one can be defined but not
-    called, so the cells that call it cannot run.
+    The decision is made statement by statement. An import does not stop a cell: the page binds
+    ``np`` in ``import numpy as np`` to a placeholder module listed in ``stubs``, and only the statements
+    that use such a name (or a name computed from one) cannot run. A cell runs in the page when all its
+    statements can; otherwise its ``quiet`` code, the statements that can, runs silently in its place,
+    so that the names it computes with SymPy and pgsym exist for the cells after it.
 
     >>> cells = classify_cells([("import numpy as np\\nfrom pgsym import Point", []), ("x = np.ones(3)", []),
     ...                         ("def f():\\n    return np.zeros(2)", []), ("f()", []), ("Point(1, 2)", [])])
     >>> [c["live"] for c in cells], cells[0]["stubs"]
     ([True, False, True, False, True], ['numpy'])
     >>> cells[1]["reason"]
-    'Uses np, which needs NumPy, which does not run in the page'
+    'Computes with NumPy, which the page cannot load'
     >>> cells[3]["reason"]
-    'Uses f, which needs NumPy, which does not run in the page'
+    'Uses f, which depends on NumPy, which the page cannot load'
     >>> classify_cells([("from cv2 import imread", ["live"])])[0]["live"]
     True
     >>> classify_cells([("1 + 1", ["no-live"])])[0]["reason"]
     'Marked to run only locally'
-    >>> cells = classify_cells([("import sympy as sp", []), ("import cv2\\nimport sympy as sp\\ncv2.imread('a')", []),
-    ...                         ("sp.Integer(2)", [])])
-    >>> [c["live"] for c in cells]      # the skipped cell's sympy import binds sp as the page has it
-    [True, False, True]
+    >>> cells = classify_cells([
+    ...     ("import matplotlib.pyplot as plt\\nimport sympy as sp\\nplt.rcParams['a'] = 1", []),
+    ...     ("sp.Integer(2)", [])])
+    >>> [c["live"] for c in cells], cells[0]["reason"]
+    ([False, True], 'Draws with Matplotlib, which the page cannot load')
+    >>> cells[0]["quiet"]
+    'import matplotlib.pyplot as plt\\nimport sympy as sp'
     """
-    tainted: dict[str, str] = {}  # name -> why it cannot be used in the page ("needs NumPy, which ...")
-    # name -> module it is bound to by an import the page has run: a skipped cell that imports the same
-    # module under the same name (``import sympy as sp`` again) leaves that name as the notebook has it
-    page_imports: dict[str, str] = {}
+    tainted: dict[str, _Taint] = {}
+    modules: set[str] = set()  # names an import bound to a module the page loads (sp, pgsym)
     result = []
     for source, tags in cells:
-        why: str | None = None
         reason: str | None = None
         stubs: list[str] = []
-        imports: dict[str, str] = {}  # this cell's names bound by imports of modules that load in the page
+        runnable: list[ast.stmt] = []
         try:
             tree = ast.parse(source)
         except SyntaxError:
             tree = None
-            why = "uses notebook-only syntax, which does not run in the page"
-            reason = _capital(why)
-        for stmt in tree.body if tree is not None else []:
+            reason = "Uses notebook-only syntax, which the page cannot run"
+        statements = tree.body if tree is not None else []
+        force_off = FORCE_OFF in tags
+        for stmt in statements:
             bound, loaded = _names(stmt)
+            if force_off:
+                for name in bound | _mutated(stmt):
+                    tainted[name] = _Taint(None)
+                continue
             if isinstance(stmt, ast.Import | ast.ImportFrom) and not getattr(stmt, "level", 0):
                 for module, name in _import_bindings(stmt):
                     if package := missing_package(module):
                         stubs.append(module)
                         if name:
-                            tainted[name] = _needs(package)
+                            tainted[name] = _Taint(package, module, isinstance(stmt, ast.ImportFrom))
                     elif name:
                         tainted.pop(name, None)
-                        imports[name] = module
+                        modules.add(name)
+                runnable.append(stmt)
                 continue
             package = next((p for p in map(missing_package, _imported(stmt)) if p), None)
             used = sorted(loaded & tainted.keys())
             if isinstance(stmt, ast.FunctionDef | ast.AsyncFunctionDef | ast.ClassDef):
+                # defining runs; calling it needs what its body needs
                 if package:
-                    tainted[stmt.name] = _needs(package)
+                    tainted[stmt.name] = _Taint(package)
                 elif used:
-                    tainted[stmt.name] = tainted[used[0]]
+                    tainted[stmt.name] = _Taint(tainted[used[0]].package)
                 else:
                     tainted.pop(stmt.name, None)
+                runnable.append(stmt)
                 continue
-            if package:
-                why = _needs(package)
-                reason = _capital(why)
-                break
-            if used:
-                why = tainted[used[0]]
-                reason = f"Uses {used[0]}, which {why}"
-                break
+            if package or used:
+                why = f"Imports {_cannot(package)}" if package else tainted[used[0]].reason(used[0])
+                reason = reason or why
+                cause = package or tainted[used[0]].package
+                # a module is not changed by calling its functions
+                for name in bound | (_mutated(stmt) - modules):
+                    if name in bound or name not in tainted:
+                        tainted[name] = _Taint(cause)
+                modules -= bound
+                continue
+            runnable.append(stmt)
             for name in bound:
                 tainted.pop(name, None)
-        if FORCE_OFF in tags:
-            why, reason = "comes from a cell that runs only locally", "Marked to run only locally"
+            modules -= bound
+        if force_off:
+            reason, runnable = "Marked to run only locally", []
         elif FORCE_ON in tags:
-            why = reason = None
-        if why is not None and tree is not None:
-            assigned = {n for stmt in tree.body if not isinstance(stmt, ast.Import | ast.ImportFrom)
-                        for n in _names(stmt)[0]}
-            for name in _names(tree)[0]:
-                if name in assigned or page_imports.get(name) != imports.get(name):
-                    tainted[name] = why
-        elif tree is not None:
-            for name in _names(tree)[0]:
-                page_imports.pop(name, None)
-            page_imports.update(imports)
+            reason = None
+        quiet = ""
+        if reason is not None:
+            quiet = "\n".join(ast.get_source_segment(source, stmt) or "" for stmt in runnable)
         result.append({"source": source, "live": reason is None, "reason": reason or "",
-                       "stubs": list(dict.fromkeys(stubs))})
+                       "stubs": list(dict.fromkeys(stubs)), "quiet": quiet})
     return result
 
 
@@ -311,6 +388,9 @@ def _annotate(app: Any, doctree: nodes.document) -> None:
     decided = classify_cells([(_cell_source(cell), t) for cell, t in zip(cells, tags, strict=True)])
     for index, cell in enumerate(cells):
         cell["classes"].append(f"live-cell-{index}")
+        # a cell whose code the reader does not see (the chapter's imports) runs with the others but
+        # shows no controls
+        decided[index]["hidden"] = bool(HIDDEN & set(tags[index]))
     env = app.env
     if not hasattr(env, "live_cells"):
         env.live_cells = {}
@@ -318,8 +398,10 @@ def _annotate(app: Any, doctree: nodes.document) -> None:
 
 
 def _fingerprint() -> str:
-    """The rule's inputs besides the pages: this file and pgsym's sources (their imports may change)."""
+    """The rule's inputs besides the pages: this file, the book's modules and pgsym's sources."""
     digest = hashlib.sha256(Path(__file__).read_bytes())
+    for path in sorted(BOOK.glob("*.py")):
+        digest.update(path.read_bytes())
     found = _source("pgsym")
     if found is not None:
         for path in sorted(found[0].parent.rglob("*.py")):
@@ -376,6 +458,11 @@ def _copy_assets(app: Any, exception: Exception | None) -> None:
     target = Path(app.outdir) / "_static" / "live"
     shutil.rmtree(target, ignore_errors=True)
     shutil.copytree(source, target, ignore=shutil.ignore_patterns(".*"))
+    (target / LOCAL).mkdir()
+    shipped = local_modules()
+    for path in shipped:
+        shutil.copyfile(path, target / LOCAL / path.name)
+    (target / LOCAL / "manifest.json").write_text(json.dumps({"modules": [p.name for p in shipped]}))
 
 
 def setup(app: Any) -> dict[str, Any]:

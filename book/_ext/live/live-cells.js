@@ -1,6 +1,8 @@
 // Live cells: Edit / Run / Reset controls on the book's code cells. Python runs in a Web Worker
-// (worker.js, Pyodide), started by the first Run; the editor (editor.js, CodeMirror) loads on the
-// first Edit. Which cells can run was decided when the book was built (book/_ext/live_cells.py).
+// (worker.js, Pyodide). It starts loading when the reader points at or focuses a live cell, or when
+// the page is idle after loading (not when the browser asks to save data), so that the first Run
+// rarely waits for it; the editor (editor.js, CodeMirror) loads on the first Edit. Which cells can run
+// was decided when the book was built (book/_ext/live_cells.py).
 const here = new URL(".", import.meta.url);
 const data = JSON.parse(document.getElementById("live-cells-data").textContent);
 
@@ -13,6 +15,11 @@ let lastProgress = null; // what the worker is doing while Python starts; null o
 function startWorker() {
   worker = new Worker(new URL("worker.js", here), { type: "module" });
   worker.onmessage = ({ data: message }) => {
+    if (message.type === "ready") {
+      document.documentElement.dataset.livePython = "ready";
+      lastProgress = null;
+      return;
+    }
     if (message.type === "progress") {
       if (message.text === "Running …") return;
       lastProgress = message.text;
@@ -42,10 +49,11 @@ function startWorker() {
   };
 }
 
-// Edit announces a Run: Python starts loading then, so that the Run waits less.
+// Pointing at a cell, Edit or an idle page announce a Run: Python starts loading then.
 function warmUp() {
   if (worker) return;
   startWorker();
+  document.documentElement.dataset.livePython = "loading";
   lastProgress = "Loading Python …";
   worker.postMessage({ boot: true });
 }
@@ -107,13 +115,23 @@ function renderOutput(output) {
 class LiveCell {
   constructor(index, info, node) {
     Object.assign(this, { index, node, source: info.source, live: info.live, reason: info.reason, stubs: info.stubs });
+    // a cell that cannot run still runs its statements that can (its imports, its SymPy), silently
+    this.quiet = info.quiet ?? "";
     this.ran = false;
     this.editor = null;
     this.input = node.querySelector(".cell_input");
     this.stored = node.querySelector(".cell_output");
+    node.classList.add("live-cell");
+    this.output = element("div", { class: "live-output", "aria-live": "polite", hidden: "" });
+    node.append(this.output);
+    if (info.hidden) {
+      // code the reader does not see (the chapter's imports) runs before the cells below, without controls
+      node.dataset.liveState = this.live ? "idle" : "disabled";
+      node.dataset.liveHidden = "";
+      return;
+    }
     this.toolbar = element("div", { class: "live-toolbar", role: "toolbar", "aria-label": `Live cell ${index + 1}` });
     node.prepend(this.toolbar);
-    node.classList.add("live-cell");
     if (!this.live) {
       this.disable(data.local);
       return;
@@ -123,8 +141,8 @@ class LiveCell {
       run: this.button("Run", "Run this cell (Shift+Enter)", () => this.run()),
       reset: this.button("Reset", "Reset this cell to the book's code and output", () => this.reset()),
     };
-    this.output = element("div", { class: "live-output", "aria-live": "polite", hidden: "" });
-    node.append(this.output);
+    node.addEventListener("pointerenter", warmUp, { once: true });
+    node.addEventListener("focusin", warmUp, { once: true });
     if (this.input) {
       this.input.setAttribute("tabindex", "0");
       this.input.setAttribute("aria-label", `Code of cell ${index + 1}; Shift+Enter runs it`);
@@ -185,7 +203,7 @@ class LiveCell {
   async run() {
     if (this.node.dataset.liveState === "running") return;
     // The first time, the earlier cells run in order, so that their imports and names exist.
-    const batch = cells.filter((c) => c.live && c.index < this.index && !c.ran);
+    const batch = cells.filter((c) => (c.live || c.quiet) && c.index < this.index && !c.ran);
     batch.push(this);
     for (const cell of batch) {
       cell.ran = true;
@@ -194,7 +212,7 @@ class LiveCell {
     statusCell = this;
     this.status(worker ? lastProgress ?? "Running …" : "Loading Python …");
     const results = batch.map((cell, k) =>
-      execute(cell.code(), cell.stubs, () => {
+      execute(cell.live ? cell.code() : cell.quiet, cell.stubs, () => {
         if (cell !== this) this.status(`Running the cells above (${k + 1} of ${batch.length - 1}) …`);
         else this.status("Running …");
       }),
@@ -202,7 +220,8 @@ class LiveCell {
     for (const [k, cell] of batch.entries()) {
       const outputs = await results[k];
       // Earlier cells stay quiet unless they fail: the reader asked for this cell's result.
-      if (cell === this || outputs.some((o) => o.type === "error")) await cell.show(outputs);
+      if (!cell.live) cell.node.dataset.liveState = "disabled";
+      else if (cell === this || outputs.some((o) => o.type === "error")) await cell.show(outputs);
       else cell.node.dataset.liveState = "idle";
     }
   }
@@ -230,4 +249,13 @@ const cells = [];
 for (const [index, info] of data.cells.entries()) {
   const node = document.querySelector(`.live-cell-${index}`);
   if (node) cells.push(new LiveCell(index, info, node));
+}
+
+// Python takes seconds to start: begin once the page has loaded and is idle (at most half a second
+// later; the worker runs beside the page), unless the reader asked to save data.
+if (cells.some((c) => c.live) && !navigator.connection?.saveData) {
+  const idle = window.requestIdleCallback ?? ((callback) => setTimeout(callback, 100));
+  const start = () => idle(() => warmUp(), { timeout: 500 });
+  if (document.readyState === "complete") start();
+  else window.addEventListener("load", start, { once: true });
 }

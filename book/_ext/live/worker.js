@@ -22,17 +22,24 @@ async function boot() {
     .then((response) => response.json())
     .then(({ wheels }) => Promise.all(wheels.map(async (name) => (await fetchOk(`wheels/${name}`)).arrayBuffer())));
   const kernelSource = fetchOk("live_kernel.py").then((response) => response.text());
+  // the book's own pure modules (_show.py), importable from every cell
+  const modules = fetchOk("modules/manifest.json")
+    .then((response) => response.json())
+    .then(({ modules: names }) => Promise.all(names.map(async (name) => [name, await (await fetchOk(`modules/${name}`)).text()])));
   // awaited below; observed now so that a failed download is reported once, by the Run that waits
   downloads.catch(() => {});
   kernelSource.catch(() => {});
+  modules.catch(() => {});
   const pyodide = await loadPyodide({ indexURL: new URL("pyodide/", here).href });
   progress("Loading SymPy …");
   for (const bytes of await downloads) pyodide.unpackArchive(new Uint8Array(bytes), "wheel");
   const site = pyodide.runPython("import site; site.getsitepackages()[0]");
   pyodide.FS.writeFile(`${site}/live_kernel.py`, await kernelSource);
+  for (const [name, text] of await modules) pyodide.FS.writeFile(`${site}/${name}`, text);
   // SymPy is imported here, once, so that the reader sees what the wait is for.
   pyodide.runPython("import live_kernel, sympy\nlive_kernel.install_ipython_shim()");
   kernel = pyodide.runPython("live_kernel.Kernel()");
+  postMessage({ type: "ready" });
 }
 
 let booting = null;
