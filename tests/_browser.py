@@ -89,7 +89,11 @@ def open_page(browser: Browser, url: str) -> tuple[Page, PageProblems]:
     page = browser.new_page()
     problems = PageProblems(page)
     page.goto(url, wait_until="load")
-    # MathJax typesets asynchronously; wait until its startup promise has settled.
+    # MathJax typesets asynchronously; wait until its startup promise has settled. Sphinx loads MathJax only
+    # on pages with mathematics (the bibliography has none).
+    if not page.evaluate("() => !!document.querySelector('script[src*=\"mathjax\"]')"):
+        page.wait_for_load_state("networkidle")
+        return page, problems
     try:
         page.wait_for_function(
             "() => window.MathJax && window.MathJax.startup && window.MathJax.startup.promise", timeout=15000
