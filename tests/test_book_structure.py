@@ -88,3 +88,32 @@ def test_chapter_has_four_exercises_with_dropdown_solutions(browser, server, pag
             assert all(s["dropdown"] and s["hidden"] for s in ex["solutions"]), f"{ex['id']}: solution not collapsed"
     finally:
         page.close()
+
+
+# Code and printed output a reader sees that does not fit the page's width: at the default 1280 px viewport
+# a code cell shows 75 characters. A <pre> wider than its box scrolls horizontally.
+WIDE_BLOCKS = """() => Array.from(document.querySelectorAll("div.cell pre"))
+    .filter(pre => pre.checkVisibility() && pre.scrollWidth > pre.clientWidth + 1)
+    .map(pre => pre.innerText.split("\\n").reduce((a, b) => (b.length > a.length ? b : a), "").slice(0, 90))"""
+
+
+@pytest.mark.parametrize("page_path", toc_pages())
+def test_no_visible_code_or_output_is_wider_than_the_page(browser, server, page_path):
+    page, _ = open_page(browser, f"{server}/{page_path}.html")
+    try:
+        assert page.viewport_size["width"] == 1280
+        wide = page.evaluate(WIDE_BLOCKS)
+        assert wide == [], f"{len(wide)} code or output blocks scroll sideways; their longest lines: {wide}"
+    finally:
+        page.close()
+
+
+def test_the_width_check_sees_a_line_that_is_too_long(browser, server):
+    # a line of 120 characters written into a visible cell must be found, so that the check can fail at all
+    page, _ = open_page(browser, f"{server}/book/points-and-lines.html")
+    try:
+        page.evaluate("""() => { const pre = Array.from(document.querySelectorAll("div.cell_input pre"))
+            .find(p => p.checkVisibility()); pre.textContent += "\\n" + "x".repeat(120); }""")
+        assert len(page.evaluate(WIDE_BLOCKS)) >= 1
+    finally:
+        page.close()
