@@ -17,9 +17,10 @@ import inspect
 import sys
 import types
 from collections import defaultdict
-from typing import Any
+from typing import Any, ClassVar
 
 from docutils import nodes
+from docutils.parsers.rst import directives
 from docutils.statemachine import StringList
 from sphinx.domains import Index
 from sphinx.util import logging
@@ -66,8 +67,14 @@ class PublicNames(SphinxDirective):
 
     required_arguments = 1  # the package, e.g. pgsym
     has_content = True
+    # ``Class.member ...``: members left out of a class's entry (a docstring that is not valid reST)
+    option_spec: ClassVar[dict[str, Any]] = {"exclude-members": directives.unchanged}
 
     def run(self) -> list[nodes.Node]:
+        excluded: dict[str, list[str]] = defaultdict(list)
+        for item in self.options.get("exclude-members", "").split():
+            cls, _, member = item.partition(".")
+            excluded[cls].append(member)
         package = importlib.import_module(self.arguments[0])
         groups: dict[str, list[str]] = defaultdict(list)
         for name in package.__all__:
@@ -94,7 +101,7 @@ class PublicNames(SphinxDirective):
                 continue
             lines += [f"## `{modname}`: {_summary(importlib.import_module(modname))}", ""]
             for name in groups[modname]:
-                lines += [*self._entry(package, name), ""]
+                lines += [*self._entry(package, name, excluded.get(name, [])), ""]
         if elsewhere:
             lines += ["## Names documented with their subpackage", "", *sorted(elsewhere), ""]
         content = StringList(lines, source=self.get_source_info()[0])
@@ -104,12 +111,14 @@ class PublicNames(SphinxDirective):
         return section.children
 
     @staticmethod
-    def _entry(package: types.ModuleType, name: str) -> list[str]:
+    def _entry(package: types.ModuleType, name: str, excluded: list[str]) -> list[str]:
         full = f"{package.__name__}.{name}"
         value = getattr(package, name)
         # autodoc writes reStructuredText: MyST reads it inside eval-rst
         if isinstance(value, type):
-            return ["```{eval-rst}", f".. autoclass:: {full}", "   :members:", "   :show-inheritance:", "```"]
+            exclude = [f"   :exclude-members: {', '.join(excluded)}"] if excluded else []
+            return ["```{eval-rst}", f".. autoclass:: {full}", "   :members:", "   :show-inheritance:", *exclude,
+                    "```"]
         if callable(value):
             return ["```{eval-rst}", f".. autofunction:: {full}", "```"]
         return ["```{eval-rst}", f".. autodata:: {full}", "   :no-value:", "```"]
@@ -265,7 +274,7 @@ class TitledProofIndex(Index):
         for label, values in proofs.items():
             if values.get("nonumber") and label not in titles:
                 continue
-            title = titles.get(label, (None, label))[1]
+            title = titles.get(label, (None, label))[1].replace("$", "")  # index entries are plain text
             chapter = env.titles[values["docname"]].astext() if values["docname"] in env.titles else ""
             entry = (title, 0, values["docname"], label, values["realtype"], "", chapter)
             content[title[:1].upper()].append(entry)
