@@ -17,6 +17,7 @@ import inspect
 import sys
 import types
 from collections import defaultdict
+from pathlib import Path
 from typing import Any, ClassVar
 
 from docutils import nodes
@@ -282,16 +283,83 @@ class TitledProofIndex(Index):
         return result, True
 
 
+# LuaLaTeX's font cache (luaotfload's *.luc files) is rewritten by its runs, and by other documents typeset
+# at the same time; it is no input of the book, but latexmk saw it change and ran LuaLaTeX the maximum five
+# times instead of the three the cross-references need.
+LATEXMKRC_EXTRA = """
+# added by book/_ext/apparatus.py: a changed luaotfload cache is no reason to run LuaLaTeX again
+$hash_calc_ignore_pattern{'luc'} = '^';
+"""
+
+
+def _latexmkrc(app: Any, exception: Exception | None) -> None:
+    """Append LATEXMKRC_EXTRA to the latexmkrc that Sphinx's LaTeX builder writes (latexmk reads it)."""
+    path = Path(app.outdir) / "latexmkrc"
+    if exception is None and app.builder.name == "latex" and path.is_file():
+        text = path.read_text()
+        if LATEXMKRC_EXTRA not in text:
+            path.write_text(text + LATEXMKRC_EXTRA)
+
+
+def _exercise_labels_for_latex(app: Any) -> None:
+    """sphinx-exercise labels an exercise in LaTeX only as ``exercise:LABEL``, the form its own references
+    use; a {ref} from another chapter asks for Sphinx's ``DOCNAME:LABEL`` and stayed undefined in the PDF.
+    Its LaTeX visitors are wrapped to write both labels."""
+    from sphinx.writers.latex import LaTeXTranslator
+    from sphinx_exercise import nodes as exercise_nodes
+
+    def wrap(visit: Any) -> Any:
+        def visit_with_label(self: Any, node: Any) -> None:
+            # before the box: inside it, the label would become part of the box's title argument
+            if isinstance(self, LaTeXTranslator) and node.get("label"):
+                self.body.append(self.hypertarget(node["label"]) + "\n")
+            visit(self, node)
+        return visit_with_label
+
+    for node_class, visit, depart in (
+        (exercise_nodes.exercise_node, exercise_nodes.visit_exercise_node, exercise_nodes.depart_exercise_node),
+        (exercise_nodes.exercise_enumerable_node, exercise_nodes.visit_exercise_enumerable_node,
+         exercise_nodes.depart_exercise_enumerable_node),
+    ):
+        app.add_node(node_class, override=True, latex=(wrap(visit), depart))
+
+
+def _proof_labels_for_latex() -> None:
+    """sphinx-proof finds the chapter of a box, for its LaTeX label and number, by matching the chapter's
+    title against the names of a section; a title with an apostrophe ("Appendix: pgsym's errors") is
+    typeset with a curly one and never matches, so the boxes of that chapter were labelled ``None:LABEL``,
+    unnumbered, and every reference to them was undefined in the PDF. The chapter of a node is the nearest
+    enclosing node that names its document (in LaTeX, the start of each included file)."""
+    from sphinx_proof import nodes as proof_nodes
+
+    def find_parent(env: Any, node: Any, parent_tag: str) -> str | None:
+        node = node.parent
+        while node is not None:
+            if node.get("docname") in env.titles:
+                return node["docname"]
+            node = node.parent
+        return None
+
+    proof_nodes.find_parent = find_parent
+
+
 def setup(app: Any) -> dict[str, Any]:
     app.setup_extension("sphinx.ext.autodoc")
     app.setup_extension("sphinx_proof")
+    app.setup_extension("sphinx_exercise")
+    _exercise_labels_for_latex(app)
     from sphinx_proof.domain import ProofDomain
 
     ProofDomain.indices = [TitledProofIndex]
+    _proof_labels_for_latex()
+    # MathJax on every page, also on those without a formula (the API reference, the indexes): the pages
+    # behave alike, and the browser tests wait for MathJax on each page they open
+    app.set_html_assets_policy("always")
     app.add_directive("pgsym-public-names", PublicNames)
     app.add_directive("statement-keywords", StatementKeywords)
     app.connect("missing-reference", _resolve)
     app.connect("autodoc-process-docstring", _drop_inherited_data_docstring)
+    app.connect("build-finished", _latexmkrc)
     app.connect("doctree-read", _titles)
     app.connect("env-purge-doc", _purge)
     app.connect("env-merge-info", _merge)
