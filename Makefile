@@ -60,22 +60,23 @@ $(LIVE_BUILT): $(NODE_MODULES) $(INSTALLED) $(LIVE_SOURCES) $(PGSYM_SOURCES) pyp
 
 live: $(LIVE_BUILT)  ## build the live cells' assets (Pyodide, wheels, editor bundle)
 
-# Debian packages: chromium for the browser test, TeX for the PDF exercise sheets and the PDF of the book,
-# pdftotext to read them back. Both are typeset by LuaLaTeX with the Noto fonts, so every script prints (Latin,
-# Greek, Cyrillic, CJK, Arabic, Hebrew, Devanagari, Thai, ...): texlive-luatex, fonts-noto-core and
-# fonts-noto-cjk; the book's code is set in DejaVu Sans Mono (fonts-dejavu-core) and its formulas with
-# unicode-math in Latin Modern Math (lmodern, texlive-latex-extra).
+# Debian packages: chromium for the browser test, TeX for the PDF exercise sheets, pdftotext to read them back.
+# The sheets are typeset by LuaLaTeX with the Noto fonts, so every script prints (Latin, Greek, Cyrillic,
+# CJK, Arabic, Hebrew, Devanagari, Thai, ...): texlive-luatex, fonts-noto-core and fonts-noto-cjk.
 APT_PACKAGES := chromium texlive-latex-extra texlive-fonts-recommended tex-gyre latexmk lmodern poppler-utils \
-                texlive-luatex fonts-noto-core fonts-noto-cjk fonts-dejavu-core
+                texlive-luatex fonts-noto-core fonts-noto-cjk
+# The PDF of the book is typeset by LuaLaTeX as well: its code in DejaVu Sans Mono (fonts-dejavu-core), its
+# formulas with unicode-math in Latin Modern Math (lmodern, texlive-latex-extra).
+APT_PACKAGES += fonts-dejavu-core
 system-deps:  ## install Debian's chromium and TeX (when root), or say how
 	@missing=""; \
 	command -v chromium >/dev/null || missing="$$missing chromium"; \
 	command -v pdflatex >/dev/null && command -v latexmk >/dev/null || missing="$$missing tex"; \
+	kpsewhich unicode-math.sty latinmodern-math.otf >/dev/null || missing="$$missing unicode-math"; \
+	fc-list | grep -q 'DejaVu Sans Mono' || missing="$$missing fonts-dejavu-core"; \
 	command -v lualatex >/dev/null && kpsewhich luaotfload.sty >/dev/null || missing="$$missing texlive-luatex"; \
 	fc-list | grep -q 'Noto Serif CJK SC' || missing="$$missing fonts-noto-cjk"; \
 	fc-list | grep -q 'Noto Naskh Arabic' || missing="$$missing fonts-noto-core"; \
-	fc-list | grep -q 'DejaVu Sans Mono' || missing="$$missing fonts-dejavu-core"; \
-	kpsewhich unicode-math.sty latinmodern-math.otf >/dev/null || missing="$$missing unicode-math"; \
 	command -v pdftotext >/dev/null || missing="$$missing poppler-utils"; \
 	if [ -n "$$missing" ]; then \
 	  if [ "$$(id -u)" = 0 ] && command -v apt-get >/dev/null; then \

@@ -18,10 +18,10 @@ CHAPTERS = [page for page in toc_pages() if (ROOT / f"{page}.ipynb").is_file()]
 def test_page_renders_math_and_images_without_errors(browser, server, page_path):
     page, problems = open_page(browser, f"{server}/{page_path}.html")
     try:
-        # pages whose source writes math (the chapters, the glossary; not the API reference or the bibliography)
-        source = next(ROOT.glob(f"{page_path}.*")).read_text()
-        if "$" in source:
+        source = next(ROOT.glob(f"{page_path}.*")).read_text(encoding="utf-8")
+        if "$" in source:  # a page with mathematics (the bibliography has none, so Sphinx loads no MathJax)
             assert page.locator("mjx-container").count() > 0, "no typeset math (MathJax output) on the page"
+        text = page.locator("main").inner_text()
         # the text outside code: a docstring may show a delimiter as code (``$$...$$`` in the API reference)
         text = page.evaluate("""() => { const main = document.querySelector('main').cloneNode(true);
             main.querySelectorAll('code, pre').forEach(c => c.remove()); return main.innerText; }""")
