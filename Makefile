@@ -65,9 +65,6 @@ live: $(LIVE_BUILT)  ## build the live cells' assets (Pyodide, wheels, editor bu
 # CJK, Arabic, Hebrew, Devanagari, Thai, ...): texlive-luatex, fonts-noto-core and fonts-noto-cjk.
 APT_PACKAGES := chromium texlive-latex-extra texlive-fonts-recommended tex-gyre latexmk lmodern poppler-utils \
                 texlive-luatex fonts-noto-core fonts-noto-cjk
-# The PDF of the book is typeset by LuaLaTeX as well: its code in DejaVu Sans Mono (fonts-dejavu-core), its
-# formulas with unicode-math in Latin Modern Math (lmodern, texlive-latex-extra).
-APT_PACKAGES += fonts-dejavu-core
 system-deps:  ## install Debian's chromium and TeX (when root), or say how
 	@missing=""; \
 	command -v chromium >/dev/null || missing="$$missing chromium"; \
@@ -90,6 +87,10 @@ system-deps:  ## install Debian's chromium and TeX (when root), or say how
 book: $(INSTALLED) $(MATHJAX) $(LIVE_BUILT)  ## build the book with -W (warnings are errors) and print the path of index.html
 	$(BIN)/jupyter-book build . -W -n --keep-going
 	@echo "Book: $(CURDIR)/$(BOOK_INDEX)"
+
+# The PDF of the book is typeset by LuaLaTeX as well: its code in DejaVu Sans Mono (fonts-dejavu-core), its
+# formulas with unicode-math in Latin Modern Math (lmodern, texlive-latex-extra); system-deps checks them.
+APT_PACKAGES += fonts-dejavu-core
 
 # The PDF of the whole book: Sphinx's LaTeX builder, then LuaLaTeX through latexmk (the latex: section of
 # _config.yml). An existing venv is used as it is (never reinstalled); `make venv` runs only when there is none.
