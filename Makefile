@@ -10,8 +10,9 @@ NODE_MODULES := node_modules/.installed
 LIVE := _live/_static/live
 LIVE_BUILT := $(LIVE)/.built
 BOOK_INDEX := _build/html/index.html
+BOOK_PDF := _build/latex/book.pdf
 
-.PHONY: help venv mathjax live system-deps book test lint lab bench clean
+.PHONY: help venv mathjax live system-deps book pdf test lint lab bench clean
 
 help:  ## list the targets
 	@grep -E '^[a-z-]+:.*## ' $(MAKEFILE_LIST) | sed -E 's/:.*## /\t/' | expand -t 14
@@ -71,6 +72,8 @@ system-deps:  ## install Debian's chromium, TeX, fonts and Maxima (when root), o
 	@missing=""; \
 	command -v chromium >/dev/null || missing="$$missing chromium"; \
 	command -v pdflatex >/dev/null && command -v latexmk >/dev/null || missing="$$missing tex"; \
+	kpsewhich unicode-math.sty latinmodern-math.otf >/dev/null || missing="$$missing unicode-math"; \
+	fc-list | grep -q 'DejaVu Sans Mono' || missing="$$missing fonts-dejavu-core"; \
 	command -v lualatex >/dev/null && kpsewhich luaotfload.sty >/dev/null || missing="$$missing texlive-luatex"; \
 	fc-list | grep -q 'Noto Serif CJK SC' || missing="$$missing fonts-noto-cjk"; \
 	fc-list | grep -q 'Noto Naskh Arabic' || missing="$$missing fonts-noto-core"; \
@@ -92,10 +95,21 @@ book: $(INSTALLED) $(MATHJAX) $(LIVE_BUILT)  ## build the book with -W (warnings
 	$(BIN)/jupyter-book build . -W -n --keep-going
 	@echo "Book: $(CURDIR)/$(BOOK_INDEX)"
 
+# The PDF of the book is typeset by LuaLaTeX as well: its code in DejaVu Sans Mono (fonts-dejavu-core), its
+# formulas with unicode-math in Latin Modern Math (lmodern, texlive-latex-extra); system-deps checks them.
+APT_PACKAGES += fonts-dejavu-core
+
+# The PDF of the whole book: Sphinx's LaTeX builder, then LuaLaTeX through latexmk (the latex: section of
+# _config.yml). An existing venv is used as it is (never reinstalled); `make venv` runs only when there is none.
+pdf: system-deps  ## build the PDF of the whole book with LuaLaTeX and print its path
+	@test -x $(BIN)/jupyter-book || $(MAKE) venv
+	$(BIN)/jupyter-book build . --builder pdflatex -W -n --keep-going
+	@test -s $(BOOK_PDF) && echo "PDF: $(CURDIR)/$(BOOK_PDF)"
+
 lint: $(INSTALLED)  ## ruff
 	$(BIN)/ruff check .
 
-test: book system-deps lint  ## everything: lint, unit/property/doctests, strict nbval, CLI, the built book in a real browser
+test: book pdf system-deps lint  ## everything: lint, unit/property/doctests, strict nbval, CLI, the built book in a real browser and as PDF
 	$(BIN)/python -m pytest
 
 lab: $(INSTALLED)  ## open the chapters in JupyterLab from the same venv (one chapter: make lab NB=harris)

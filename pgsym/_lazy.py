@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import importlib
 import sys
+import types
 from collections.abc import Callable, Mapping
 from typing import Any
 
@@ -39,4 +40,30 @@ def lazy_names(package: str, table: Mapping[str, str]) -> tuple[Callable[[str], 
     def __dir__() -> list[str]:
         return sorted(set(vars(sys.modules[package])) | set(table))
 
+    _keep_names_over_submodules(package, table)
     return __getattr__, __dir__
+
+
+# package name -> its public names that are attributes, not modules (see _LazyPackage)
+_ATTRIBUTE_NAMES: dict[str, set[str]] = {}
+
+
+class _LazyPackage(types.ModuleType):
+    """A package whose public names win over its submodules of the same name.
+
+    Importing a submodule binds it as an attribute of its package. Where a public name is also the name of a
+    submodule (the function ``fixed_points`` lives in the module ``pgsym.fixed_points``), that binding would
+    hide the name as soon as anything imports the module; this class refuses it, so the name keeps resolving
+    to the table's value (the module itself stays in ``sys.modules``).
+    """
+
+    def __setattr__(self, name: str, value: Any) -> None:
+        if isinstance(value, types.ModuleType) and name in _ATTRIBUTE_NAMES.get(self.__name__, ()):
+            return
+        super().__setattr__(name, value)
+
+
+def _keep_names_over_submodules(package: str, table: Mapping[str, str]) -> None:
+    _ATTRIBUTE_NAMES.setdefault(package, set()).update(name for name, target in table.items()
+                                                       if not target.endswith(":"))
+    sys.modules[package].__class__ = _LazyPackage
