@@ -23,7 +23,6 @@ True
 from __future__ import annotations
 
 import itertools
-from typing import Any
 
 import sympy
 from sympy import Expr, I, Integer, Matrix
@@ -35,6 +34,7 @@ from .errors import (
     DegenerateConicError,
     DimensionError,
     NotOnConicError,
+    ObjectTypeError,
     UndecidableError,
 )
 from .exact import all_zero, latex
@@ -145,56 +145,6 @@ class Conic(SymmetricForm, kind="conic"):
         require(m, Line, "Conic.from_lines")
         u, v = l.coords, m.coords
         return cls._from_exact(Matrix(3, 3, lambda i, j: sympy.expand(u[i] * v[j] + v[i] * u[j])))
-
-    @classmethod
-    def ellipse(cls, center: Any, a: Scalar, b: Scalar, direction: tuple[Scalar, Scalar] = (1, 0)) -> Conic:
-        """The ellipse with centre, semi-axes a, b and the a-axis along ``direction = (cos θ, sin θ)``.
-
-        See :func:`pgsym.conic_metric.ellipse`.
-
-        >>> Conic.ellipse((0, 0), 2, 1)
-        Conic.from_coefficients(1, 0, 4, 0, 0, -4)
-        """
-        from .conic_metric import ellipse
-
-        return ellipse(center, a, b, direction)
-
-    @classmethod
-    def hyperbola(cls, center: Any, a: Scalar, b: Scalar, direction: tuple[Scalar, Scalar] = (1, 0)) -> Conic:
-        """The hyperbola ``x²/a² − y²/b² = 1`` in the frame at ``center`` along ``direction``.
-
-        See :func:`pgsym.conic_metric.hyperbola`.
-
-        >>> Conic.hyperbola((0, 0), 2, 1)
-        Conic.from_coefficients(1, 0, -4, 0, 0, -4)
-        """
-        from .conic_metric import hyperbola
-
-        return hyperbola(center, a, b, direction)
-
-    @classmethod
-    def parabola(cls, vertex: Any, p: Scalar, direction: tuple[Scalar, Scalar] = (1, 0)) -> Conic:
-        """The parabola ``y² = 4px`` in the frame at ``vertex`` along ``direction`` (focus at distance p).
-
-        See :func:`pgsym.conic_metric.parabola`.
-
-        >>> Conic.parabola((0, 0), 1)
-        Conic.from_coefficients(0, 0, 1, -4, 0, 0)
-        """
-        from .conic_metric import parabola
-
-        return parabola(vertex, p, direction)
-
-    @classmethod
-    def from_foci(cls, f1: Point, f2: Point, a: Scalar) -> Conic:
-        """The ellipse or hyperbola ``|PF₁| ± |PF₂| = 2a``. See :func:`pgsym.conic_metric.conic_from_foci`.
-
-        >>> Conic.from_foci(Point(-3, 0), Point(3, 0), 5)
-        Conic.from_coefficients(16, 0, 25, 0, 0, -400)
-        """
-        from .conic_metric import conic_from_foci
-
-        return conic_from_foci(f1, f2, a)
 
     @property
     def coefficients(self) -> tuple[Expr, Expr, Expr, Expr, Expr, Expr]:
@@ -408,24 +358,20 @@ class Conic(SymmetricForm, kind="conic"):
         """
         return is_zero(self.discriminant(line))
 
-    def intersections(self, line: Line | Conic) -> tuple[Point, ...]:
+    def intersections(self, line: Line) -> tuple[Point, ...]:
         """The two points (exact, possibly irrational or complex) where a line meets the conic.
 
         A tangent line gives the same point twice. Raises :class:`DegenerateConicError`
-        when the line is contained in a degenerate conic (every point is common). Given a
-        conic instead of a line, the four common points with multiplicity
-        (:func:`pgsym.conic_pencil.intersect_conics`).
+        when the line is contained in a degenerate conic (every point is common). Two conics
+        meet through their pencil: :func:`pgsym.conic_pencil.intersect_conics` (a module above this one).
 
         >>> C = Conic.circle(0, 0, 1)
         >>> sorted(p.dehomogenize() for p in C.intersections(Line(0, 1, 0)))
         [(-1, 0), (1, 0)]
-        >>> [p.dehomogenize() for p in C.intersections(Conic.from_coefficients(1, 0, 0, 0, 0, -1))]  # x² = 1
-        [(1, 0), (-1, 0), (1, 0), (-1, 0)]
         """
         if isinstance(line, Conic):
-            from .conic_pencil import intersect_conics
-
-            return intersect_conics(self, line)
+            raise ObjectTypeError("Conic.intersections takes a Line; two conics meet through their pencil: "
+                                  "use pgsym.intersect_conics(C, D) (pgsym.conic_pencil)")
         require(line, Line, "Conic.intersections")
         p, q = _two_points_on(line)
         a, b, c = self.restricted_form(line)

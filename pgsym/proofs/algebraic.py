@@ -304,11 +304,12 @@ def _meet_points(claim: Claim, names: Sequence[str], l: Node | None, k: Node, m:
     root.text += "; " + (f"{names[0]} takes +e, {names[1]} −e" if len(names) > 1 else f"{names[0]} takes +e")
 
     def core(*objs: Any) -> tuple[Any, ...]:
+        from ..conic_pencil import intersect_conics
         from ..conics import Conic
 
         if m is None:
             return Conic(objs[1]).intersections(objs[0])
-        return Conic(objs[0]).intersections(Conic(objs[1]))
+        return intersect_conics(Conic(objs[0]), Conic(objs[1]))
 
     for node in out:
         _data(claim).core.append((node, tuple(base), core))

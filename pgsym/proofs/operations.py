@@ -29,7 +29,18 @@ from typing import Any
 import sympy
 from sympy import Matrix
 
-from .. import affine, conic_metric, conics, invariants, metric, plucker, projective_line, projective_plane, space
+from .. import (
+    affine,
+    conic_metric,
+    conic_pencil,
+    conics,
+    invariants,
+    metric,
+    plucker,
+    projective_line,
+    projective_plane,
+    space,
+)
 from .. import ring as alg
 from ..exact import is_zero
 from ..homogeneous import HomogeneousVector
@@ -724,7 +735,8 @@ def _segratio_core(node: Any, a: list[Any], exact: Scalar) -> Any:
 
 def _circles_second_core(node: Any, a: list[Any], exact: Scalar) -> Any:
     k, l, p = (_conic_core(a[0]), _conic_core(a[1]), a[2])
-    points = [x for x in k.intersections(l) if x != p and all(is_zero(e.as_real_imag()[1]) for e in x.coords)]
+    common = conic_pencil.intersect_conics(k, l)
+    points = [x for x in common if x != p and all(is_zero(e.as_real_imag()[1]) for e in x.coords)]
     if len(points) != 1:
         raise CoreDegenerate("the circles do not meet in one second real point at this point")
     return points[0]
