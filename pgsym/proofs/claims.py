@@ -29,6 +29,7 @@ from .. import ring as alg
 from ..errors import InvalidCoordinatesError, ObjectTypeError
 from .errors import NonPolynomialClaimError, UndefinedConstructionError
 from .operations import KINDS, OPERATIONS, Operation, constructions, operation
+from .square_roots import RootData, SquareRootConstructions
 
 __all__ = [
     "KINDS",
@@ -55,7 +56,7 @@ class Node:
     conditions: list[str] = field(default_factory=list)
     #: the group a formula commutes with when its builder knows it (a square-root construction), else None
     group: str | None = None
-    #: a root adjoined by its defining equation (pgsym.proofs.algebraic): no free object, so no frame moves it
+    #: a root adjoined by its defining equation (pgsym.proofs.square_roots): no free object, so no frame moves it
     root: bool = False
 
     @property
@@ -116,7 +117,7 @@ def _count(n: int) -> str:
     return _NUMBER_WORDS[n] if n < len(_NUMBER_WORDS) else str(n)
 
 
-class Claim:
+class Claim(SquareRootConstructions):
     """A statement of projective geometry to be proved for generic values of its parameters.
 
     Build it with the ``free_*`` methods (free objects), the construction methods
@@ -154,6 +155,8 @@ class Claim:
         self.nodes: dict[str, Node] = {}
         self.hypotheses: list[tuple[sympy.Expr, str]] = []
         self.conclusions: list[Conclusion] = []
+        #: the roots of the square-root constructions (:mod:`pgsym.proofs.square_roots`), None without any
+        self.square_roots: RootData | None = None
 
     def __repr__(self) -> str:
         return f"Claim({self.name!r}, {self.title!r})"
@@ -940,18 +943,3 @@ def is_vector(node: Node) -> bool:
 
 
 _ = alg  # the formulas module is part of the claim vocabulary (see Claim.formula)
-
-
-# -- constructions with square roots: defined in pgsym.proofs.algebraic, methods of every claim ------------------
-from . import algebraic as _algebraic  # noqa: E402  (it needs Claim and Node, defined above)
-
-Claim.angle_bisector = _algebraic.angle_bisector  # type: ignore[attr-defined]
-Claim.external_bisector = _algebraic.external_bisector  # type: ignore[attr-defined]
-Claim.line_conic_intersection = _algebraic.line_conic_intersection  # type: ignore[attr-defined]
-Claim.line_conic_intersections = _algebraic.line_conic_intersections  # type: ignore[attr-defined]
-Claim.circle_intersection = _algebraic.circle_intersection  # type: ignore[attr-defined]
-Claim.circle_intersections = _algebraic.circle_intersections  # type: ignore[attr-defined]
-Claim.tangent_from = _algebraic.tangent_from  # type: ignore[attr-defined]
-Claim.tangents_from = _algebraic.tangents_from  # type: ignore[attr-defined]
-Claim.rotate_degrees = _algebraic.rotate_degrees  # type: ignore[attr-defined]
-Claim.polygon_vertex = _algebraic.polygon_vertex  # type: ignore[attr-defined]

@@ -47,7 +47,8 @@ from ..homogeneous import HomogeneousVector
 from ..kinds import object_classes
 
 __all__ = [
-    "EUCLIDEAN_OPERATIONS", "KINDS", "OPERATIONS", "CoreDegenerate", "Operation", "constructions", "flat", "operation",
+    "EUCLIDEAN_OPERATIONS", "KINDS", "OPERATIONS", "CoreDegenerate", "Operation", "constructions", "flat", "map_nested",
+    "operation",
 ]
 
 # Proofs carry a line of P³ as its 4×4 Plücker matrix (the wedge of two points), not as the six
@@ -69,6 +70,17 @@ _VECTOR_KINDS = tuple(k for k, size in KINDS.items() if size is not None)
 
 class CoreDegenerate(Exception):
     """The core cannot build an object at this point (e.g. a singular matrix): try another point."""
+
+
+def map_nested(value: Any, f: Callable[[Any], Any]) -> Any:
+    """``f`` applied to every entry of a nested tuple value, keeping its shape.
+
+    >>> map_nested(((1, 2), 3), lambda x: 10 * x)
+    ((10, 20), 30)
+    """
+    if isinstance(value, tuple):
+        return tuple(map_nested(v, f) for v in value)
+    return f(value)
 
 
 def flat(value: Any) -> list[Any]:
