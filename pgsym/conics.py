@@ -25,7 +25,7 @@ from __future__ import annotations
 import itertools
 
 import sympy
-from sympy import Expr, I, Integer, Matrix
+from sympy import Expr, I, Matrix
 
 from .errors import (
     CoincidentPointsError,
@@ -41,7 +41,7 @@ from .exact import all_zero, latex
 from .homogeneous import Scalar, _format_entry, is_zero, require, to_exact
 from .matrices import adjugate
 from .projective_plane import Line, Point, collinear, cross
-from .symmetric_form import SymmetricForm
+from .symmetric_form import SymmetricForm, roots_on_line
 
 __all__ = [
     "Conic",
@@ -63,21 +63,6 @@ def _two_points_on(line: Line) -> tuple[Point, Point]:
     p = candidates[0]
     q = next(c for c in candidates[1:] if not c == p)
     return p, q
-
-
-def _conjugate_normalised(u: list[Expr], v: list[Expr], disc: Expr) -> tuple[Expr, ...]:
-    """The point with coordinates ``u_i + v_i √disc`` (rational u, v, disc not a rational square),
-    scaled so that its last nonzero coordinate is 1.
-
-    Dividing by ``u_k + v_k √disc`` is done by multiplying with the conjugate: the
-    denominator ``u_k² - v_k² disc`` is a nonzero rational because √disc is irrational.
-    """
-    root = sympy.sqrt(disc)
-    k = max(i for i in range(3) if u[i] != 0 or v[i] != 0)
-    norm = u[k] ** 2 - v[k] ** 2 * disc
-    return tuple(
-        sympy.expand((u[i] * u[k] - v[i] * v[k] * disc + (v[i] * u[k] - u[i] * v[k]) * root) / norm) for i in range(3)
-    )
 
 
 def _exact_sqrt(value: Expr) -> Expr:
@@ -377,20 +362,9 @@ class Conic(SymmetricForm, kind="conic"):
         a, b, c = self.restricted_form(line)
         if is_zero(a) and is_zero(b) and is_zero(c):
             raise DegenerateConicError(f"the line {line!r} lies entirely on the degenerate conic {self!r}")
-        if is_zero(a):
-            pairs = [(Integer(1), Integer(0)), (c, -2 * b)]
-            coords = [[sympy.expand(s * pi + t * qi) for pi, qi in zip(p, q, strict=True)] for s, t in pairs]
-            return Point._from_exact(tuple(coords[0])), Point._from_exact(tuple(coords[1]))
-        # the points (-B ± √disc) p + A q, i.e. coordinates u_i ± v_i √disc
-        disc = sympy.expand(b**2 - a * c)
-        u = [sympy.expand(-b * pi + a * qi) for pi, qi in zip(p, q, strict=True)]
-        v = list(p.coords)
-        root = sympy.sqrt(disc)
-        if not root.is_Rational and all(e.is_Rational for e in (*u, *v, disc)):
-            both = [_conjugate_normalised(u, [sign * vi for vi in v], disc) for sign in (1, -1)]
-        else:
-            both = [tuple(sympy.expand(ui + sign * root * vi) for ui, vi in zip(u, v, strict=True)) for sign in (1, -1)]
-        return Point._from_exact(both[0]), Point._from_exact(both[1])
+        # the zeros of the binary form a s² + 2b st + c t² on the line, by the kernel quadrics share
+        zeros = [Point._from_exact(z) for z in roots_on_line(a, b, c, p.coords, q.coords)]
+        return (zeros[0], zeros[-1])  # a tangent: its one (double) point twice
 
 
 class DualConic(SymmetricForm, kind="dual_conic"):

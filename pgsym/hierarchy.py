@@ -59,7 +59,7 @@ from .errors import (
 )
 from .exact import sign
 from .homogeneous import is_zero, to_exact
-from .transformations import Transformation, as_exact_matrix
+from .transformations import Transformation
 
 __all__ = [
     "AFFINE_2D",
@@ -613,11 +613,8 @@ def _classify_numeric(H: Any, tol: float | None) -> TransformationClass:
 
     NumPy is loaded here, on the first float input, not with this module.
     """
-    from .numeric.classify import classify_matrix
+    from .numeric.classify import classify_matrix  # noqa: PLC0415 — core → numeric by design: classify hands floats to the numeric classifier
 
     return class_by_key(classify_matrix(H.matrix if isinstance(H, Transformation) else H, tol))
 
 
-def as_matrix(H: Any) -> ImmutableMatrix:
-    """The exact matrix of a Transformation or nested sequence (alias of ``as_exact_matrix``)."""
-    return as_exact_matrix(H)

@@ -81,7 +81,7 @@ EXIT_UNREADABLE = 3
 
 
 def _load_folders(folders: tuple[str, ...]) -> None:
-    from ..exercises.template import load_template_folder
+    from ..exercises.template import load_template_folder  # noqa: PLC0415 — CLI start-up: loaded by the command that needs it
 
     for folder in folders:
         try:
@@ -133,9 +133,9 @@ def sheet_command(topics: str, count: int, seed: int, roster: str | None, format
                   solutions_in_sheets: bool, old_solutions: bool, key: bool, out: str, template_dirs: tuple[str, ...],
                   mathjax: str | None, progress: bool | None) -> None:
     """Generate per-student exercise sheets, their answer key and key table, in every requested format."""
-    from ..atomic import Terminated, write_new_folder
-    from ..exercises.output import parse_formats, render_all
-    from ..exercises.sheets import anonymous_students, build_sheets, parse_topics, read_roster
+    from ..atomic import Terminated, write_new_folder  # noqa: PLC0415 — CLI start-up: loaded by the command that needs it
+    from ..exercises.output import parse_formats, render_all  # noqa: PLC0415 — CLI start-up: loaded by the command that needs it
+    from ..exercises.sheets import anonymous_students, build_sheets, parse_topics, read_roster  # noqa: PLC0415 — CLI start-up: loaded by the command that needs it
 
     if old_solutions:
         click.echo("warning: --solutions is deprecated; use --solutions-in-sheets (the answer key is written "
@@ -185,11 +185,11 @@ def sheet_command(topics: str, count: int, seed: int, roster: str | None, format
 def check_command(ctx: click.Context, manifest: str, answers: str, out: str | None, report_dir: str | None,
                   canvas: str | None, canvas_title: str, canvas_id: int | None, details: bool) -> None:
     """Grade the answers of every student against the manifest, naming the common mistakes."""
-    from ..atomic import Terminated, write_new_folder
-    from ..csv_cells import csv_text
-    from ..escaping import clean
-    from ..exercises.grading import grade_rows, read_answer_file, results_csv, summary
-    from ..exercises.sheets import load_manifest_data
+    from ..atomic import Terminated, write_new_folder  # noqa: PLC0415 — CLI start-up: loaded by the command that needs it
+    from ..csv_cells import csv_text  # noqa: PLC0415 — CLI start-up: loaded by the command that needs it
+    from ..escaping import clean  # noqa: PLC0415 — CLI start-up: loaded by the command that needs it
+    from ..exercises.grading import grade_rows, read_answer_file, results_csv, summary  # noqa: PLC0415 — CLI start-up: loaded by the command that needs it
+    from ..exercises.sheets import load_manifest_data  # noqa: PLC0415 — CLI start-up: loaded by the command that needs it
 
     try:
         data = load_manifest_data(manifest)
@@ -211,13 +211,13 @@ def check_command(ctx: click.Context, manifest: str, answers: str, out: str | No
                    "of the answers file were skipped (see above); every other answer was graded.", err=True)
     try:
         if report_dir:
-            from ..exercises.report import report_data, write_report
+            from ..exercises.report import report_data, write_report  # noqa: PLC0415 — CLI start-up: loaded by the command that needs it
 
             numbers = report_data(report, data.names, data.topics, problems)
             title = f"Grade report: {Path(manifest).resolve().parent.name or 'exercises'}"
             write_new_folder(report_dir, lambda tmp: write_report(tmp, numbers, title))
         if canvas:
-            from ..exercises.canvas import canvas_csv
+            from ..exercises.canvas import canvas_csv  # noqa: PLC0415 — CLI start-up: loaded by the command that needs it
 
             _write_text(Path(canvas), canvas_csv(report, data.names, canvas_title, canvas_id))
         if out:
@@ -233,9 +233,9 @@ def check_command(ctx: click.Context, manifest: str, answers: str, out: str | No
 
 def _write_text(path: Path, text: str) -> None:
     """Write ``path`` complete or not at all (:func:`pgsym.atomic.replace_file`), readable as the umask allows."""
-    import os
+    import os  # noqa: PLC0415 — CLI start-up: loaded by the command that needs it
 
-    from ..atomic import replace_file
+    from ..atomic import replace_file  # noqa: PLC0415 — CLI start-up: loaded by the command that needs it
 
     def fill(tmp: Path) -> None:
         tmp.write_text(text, encoding="utf-8", newline="")
@@ -255,7 +255,7 @@ def templates_group() -> None:
 @click.option("--templates", "template_dirs", multiple=True, type=click.Path(file_okay=False))
 def templates_list(template_dirs: tuple[str, ...]) -> None:
     """List the known topics with their levels."""
-    from ..exercises.template import all_templates
+    from ..exercises.template import all_templates  # noqa: PLC0415 — CLI start-up: loaded by the command that needs it
 
     _load_folders(template_dirs)
     for name, t in sorted(all_templates().items()):
@@ -346,8 +346,8 @@ def templates_check(name: str | None, seeds: int, template_dirs: tuple[str, ...]
 
     Example: pgsym templates check join --seeds 10000
     """
-    from ..exercises.stress import stress
-    from ..exercises.template import all_templates, get_template
+    from ..exercises.stress import stress  # noqa: PLC0415 — CLI start-up: loaded by the command that needs it
+    from ..exercises.template import all_templates, get_template  # noqa: PLC0415 — CLI start-up: loaded by the command that needs it
 
     _load_folders(template_dirs)
     try:

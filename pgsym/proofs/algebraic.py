@@ -143,7 +143,7 @@ def _evaluate(claim: Claim, scalar: Callable[[Any], Any], tower: _Tower, deadlin
 
 def _requirements(claim: Claim, values: dict[Node, Any]) -> list[tuple[str, list[Any]]]:
     out = list(nonzero_requirements(claim, values))
-    out += [(f"{n.name} is not the zero vector", flat(values[n])) for n in objects_to_check(claim)]
+    out += [(f"{n.label} is not the zero vector", flat(values[n])) for n in objects_to_check(claim)]
     return out
 
 
@@ -307,7 +307,7 @@ def _core_check(claim: Claim, rng: random.Random, deadline: Any) -> str:
                 mine = [_sympy_value(tower.R, x, branch.values) for x in flat(values[node])]
                 candidates = build(*(_core_object(a, values[a], tower, branch) for a in args))
                 if not any(_proportional(mine, list(c.coords)) for c in candidates):
-                    return f"MISMATCH at {node.name}"
+                    return f"MISMATCH at {node.label}"
         except PgsymError as err:  # a degenerate instance or an undecidable cos(2π/7): try another
             last = str(err)
             continue

@@ -70,6 +70,23 @@ class Node:
                 f"(known: {', '.join(OPERATIONS)})"
             ) from None
 
+    @property
+    def label(self) -> str:
+        """How a verdict names the object: the statement's own name, or for an object the prover added (its name
+        starts with ``_``) what it is, e.g. ``|AB|²`` for a squared distance a conclusion needed.
+
+        >>> c = Claim("x", "x")
+        >>> A, B = c.free_point("A"), c.free_point("B")
+        >>> c.conclude_equal_length(A, B, B, A)
+        >>> A.label, [n.label for n in c.nodes.values() if n.name.startswith("_")]
+        ('A', ['|AB|²', '|BA|²'])
+        """
+        if not self.name.startswith("_"):
+            return self.name
+        if self.root or not self.description:
+            return self.name[1:]
+        return self.description
+
     def __repr__(self) -> str:
         return f"<{self.kind} {self.name} = {self.description}>"
 
@@ -320,7 +337,7 @@ class Claim(SquareRootConstructions):
             for i, (a, allowed) in enumerate(zip(args, kinds, strict=True)):
                 nodes.append(self._get(a, (nodes[0].kind,) if entry.same_kind and i else allowed, op))
             nodes = tuple(nodes)
-        names = [n.name for n in nodes]
+        names = [n.label for n in nodes]
         return self._node(name, kind or entry.result_kind([n.kind for n in nodes]), op, nodes,
                           description or entry.description(names, data), data,
                           entry.conditions(names, name, data) if conditions is None else conditions)
@@ -930,16 +947,6 @@ class Claim(SquareRootConstructions):
     def conditions_text(self) -> list[str]:
         """The non-degeneracy conditions the constructions need, as readable text."""
         return [c for n in self.nodes.values() for c in n.conditions]
-
-
-def node_size(node: Node) -> int | None:
-    """Number of coordinates of a vector node (None for matrices and scalars)."""
-    return KINDS.get(node.kind)
-
-
-def is_vector(node: Node) -> bool:
-    """True for points, lines and planes."""
-    return node.kind in _VECTOR_KINDS
 
 
 _ = alg  # the formulas module is part of the claim vocabulary (see Claim.formula)

@@ -33,6 +33,7 @@ import sympy
 
 from .. import ring as alg
 from .claims import Claim, Node
+from .engine import prove
 from .operations import OPERATIONS, flat
 from .verdicts import Verdict
 
@@ -202,8 +203,6 @@ def discover(claim: Claim, *, timeout: float | None = 2.0, seed: int = 0, prove_
     left out.
     The claim's own conclusions are not needed (and not used).
     """
-    from .engine import prove
-
     rng = random.Random(seed)
     values = None
     for _ in range(8):  # an instance where every construction is defined

@@ -79,10 +79,6 @@ class _Outcome(StrEnum):
 
 # -- evaluation of a claim in one arithmetic -----------------------------------------------
 
-def _is_zero_vector(value: Any) -> bool:
-    return all(x == 0 for x in flat(value))
-
-
 def _rank_mod(rows: list[list[int]], p: int) -> tuple[int, tuple[int, ...], tuple[int, ...]]:
     """Rank of an integer matrix modulo p, with the rows and columns of a nonzero maximal minor."""
     m = [[x % p for x in r] for r in rows]
@@ -190,7 +186,7 @@ def _check_point(claim: Claim, values: dict[Node, Any], modp: bool) -> tuple[str
             return _Outcome.DEGENERATE, _text
     for node in objects_to_check(claim):
         if all(red(p) == 0 for p in flat(values[node])):
-            return _Outcome.DEGENERATE, f"{node.name} is the zero vector"
+            return _Outcome.DEGENERATE, f"{node.label} is the zero vector"
     residuals = [red(val) for _, val in conclusion_polys(claim, values)]
     rank_info = []
     for c in claim.conclusions:
@@ -267,7 +263,7 @@ def _random_pass(claim: Claim, R: Any, rng: random.Random, deadline: Deadline) -
 def _proportional_by_division(c: Any, values: dict[Node, Any], R: PolynomialRing) -> str | None:
     """Prove u = q·v (or v = q·u) with one exact polynomial division; None when that does not work."""
     u, v = (flat(values[a]) for a in c.args)
-    names = [a.name for a in c.args]
+    names = [a.label for a in c.args]
     for (x, y), (nx, ny) in (((u, v), names), ((v, u), names[::-1])):
         k = next((i for i, t in enumerate(y) if t != 0), None)
         if k is None or x[k] == 0:
@@ -364,7 +360,7 @@ def _exact_pass(claim: Claim, deadline: Deadline, rank_witness: list[Any], backe
     for node in objects_to_check(claim):
         deadline.check("checking that no construction vanishes identically")
         if all(p == 0 for p in flat(values[node])):
-            return _Outcome.DEGENERATE, (f"{node.name} = {node.description} is identically the zero vector "
+            return _Outcome.DEGENERATE, (f"{node.label} = {node.description} is identically the zero vector "
                                          "(the construction is undefined for every value of the parameters)")
     if normalisation is not None:  # last, so that the claim's own conditions read first
         conditions += _general_position(claim, normalisation, backend)
@@ -423,13 +419,13 @@ def _exact_pass(claim: Claim, deadline: Deadline, rank_witness: list[Any], backe
             for rs, cs, minor in alg.minors(rows, r + 1):
                 deadline.check("expanding the minors")
                 if minor != 0:
-                    return _Outcome.NONZERO, (f"minor rows {rs} columns {cs} of {node.name}", R.text(minor))
-            steps.append(f"all {r + 1}×{r + 1} minors of {node.name} expand to 0")
+                    return _Outcome.NONZERO, (f"minor rows {rs} columns {cs} of {node.label}", R.text(minor))
+            steps.append(f"all {r + 1}×{r + 1} minors of {node.label} expand to 0")
         witness = next((w for w in rank_witness if w[0] is node), None)
         if witness is None:
-            return _Outcome.NO_WITNESS, node.name
+            return _Outcome.NO_WITNESS, node.label
         _, _, _rank, rs, cs = witness
-        steps.append(f"the {r}×{r} minor of {node.name} on rows {rs}, columns {cs} is nonzero at a random point "
+        steps.append(f"the {r}×{r} minor of {node.label} on rows {rs}, columns {cs} is nonzero at a random point "
                      "modulo p, hence not the zero polynomial")
     _, degree = _size(R, entries)
     certificate = Certificate(method, _describe_ring(R), steps, largest,
@@ -505,12 +501,12 @@ def _agree(claim: Claim, objs: dict[Node, Any], values: dict[Node, Any]) -> str 
         if node.kind == "ratio":
             n, d = mine
             if d == 0 or Fraction(n) / Fraction(d) != _core_value(obj)[0]:
-                return node.name
+                return node.label
             continue
         u, v = flat(mine), _core_value(obj)
         k = next((i for i, x in enumerate(v) if x != 0), None)
         if len(u) != len(v) or k is None or u[k] == 0 or any(u[i] * v[k] != u[k] * v[i] for i in range(len(u))):
-            return node.name
+            return node.label
     return None
 
 

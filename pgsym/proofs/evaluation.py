@@ -82,7 +82,7 @@ def conclusion_polys(claim: Claim, values: dict[Node, Any], skip: Any = (), ring
         if any(c is x for x in skip):
             continue
         vals = [values[a] for a in c.args if isinstance(a, Node)]
-        names = [a.name for a in c.args if isinstance(a, Node)]
+        names = [a.label for a in c.args if isinstance(a, Node)]
         if ring is not None:
             work = estimate(lambda v, kind=c.kind, names=names: conclusion_values(kind, v, names), vals, ring)
             if work is not None and work > budget.MAX_WORK:
@@ -114,7 +114,7 @@ def conclusion_values(kind: str, vals: list[Any], names: list[str]) -> list[tupl
             out.append((f"{names[0]}[{i}]" if len(flat(vals[0])) > 1 else names[0], a))
     elif kind == "equal_ratio":
         (n1, d1), (n2, d2) = vals
-        out.append((f"num({names[0]})·den({names[1]}) − num({names[1]})·den({names[0]})", n1 * d2 - n2 * d1))
+        out.append((f"the numerator of {names[0]} − {names[1]}", n1 * d2 - n2 * d1))
     return out
 
 
@@ -127,11 +127,11 @@ def nonzero_requirements(claim: Claim, values: dict[Node, Any]) -> list[tuple[st
     for c in claim.conclusions:
         if c.kind == "proportional":
             for a in c.args:
-                out.append((f"{a.name} is not zero", flat(values[a])))
+                out.append((f"{a.label} is not zero", flat(values[a])))
         if c.kind == "equal_ratio":
             for a in c.args:
                 if a.op != "const":
-                    out.append((f"the denominator of {a.name} is not zero", [values[a][1]]))
+                    out.append((f"the denominator of {a.label} is not zero", [values[a][1]]))
     return out
 
 

@@ -53,6 +53,7 @@ from typing import Any
 import sympy
 
 from .claims import Claim, Node
+from .operations import flat
 
 __all__ = ["FRAMES", "GROUPS", "Normalisation", "normalise"]
 
@@ -149,8 +150,6 @@ def _fresh_coefficients(node: Node, counts: Counter) -> bool:
 
 
 def _parameter_counts(claim: Claim) -> Counter:
-    from .operations import flat
-
     counts: Counter = Counter()
     for node in claim.nodes.values():
         # every node with coefficient data (a free object, a combination, a constant, the parameter of a point on a
@@ -273,15 +272,15 @@ def _obstacle(claim: Claim, counts: Counter, group: str = "projective") -> str |
                 continue
             if node.kind == "conic" and _generic_symmetric(node, counts):
                 continue
-            return f"{node.name} is a fixed object or has special coordinates {node.description}"
+            return f"{node.label} is a fixed object or has special coordinates {node.description}"
         if node.op == "combine":
             if _fresh_coefficients(node, counts):
                 continue
-            return f"{node.name} = {node.description} depends on the representatives of its points"
+            return f"{node.label} = {node.description} depends on the representatives of its points"
         if _node_group(node, counts) not in allowed:
             what = {"projective": "every homography", "affine": "every affine map",
                     "similarity": "every similarity", "euclidean": "every isometry"}[group]
-            return f"{node.name} = {node.description} ({node.op}) does not commute with {what}"
+            return f"{node.label} = {node.description} ({node.op}) does not commute with {what}"
     return None
 
 

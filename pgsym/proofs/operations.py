@@ -47,14 +47,12 @@ from ..homogeneous import HomogeneousVector
 from ..kinds import object_classes
 
 __all__ = [
-    "EUCLIDEAN_OPERATIONS", "KINDS", "OPERATIONS", "CoreDegenerate", "Operation", "constructions", "flat", "map_nested",
-    "operation",
+    "EUCLIDEAN_OPERATIONS", "KINDS", "OPERATIONS", "CoreDegenerate", "Operation", "affine_vector", "constructions",
+    "flat", "map_nested", "operation",
 ]
 
 # Proofs carry a line of P³ as its 4×4 Plücker matrix (the wedge of two points), not as the six
 # Plücker coordinates of the Line3 class, so its size here is that of a matrix.
-_MATRIX_FORM = ("line3",)
-
 #: kind of object -> number of homogeneous coordinates (None for matrices, scalars and ratios): the kinds of
 #: pgsym's classes, plus the kinds that exist only in proofs (matrix, scalar, ratio)
 KINDS: dict[str, int | None] = {
@@ -540,12 +538,13 @@ _TABLE = (
 # Points are homogeneous (x, y, w): every formula below is right for any representative (any w ≠ 0), lines
 # (a, b, c) for any scale, circles for any scale of their matrix. A ratio is a pair (numerator, denominator).
 
-def _xy(p: Sequence[Any]) -> tuple[Any, Any]:
-    return p[0], p[1]
+def affine_vector(a: Sequence[Any], b: Sequence[Any]) -> tuple[Any, Any]:
+    """w_A w_B (B − A) in affine coordinates: ``w_A B − w_B A`` (first two coordinates); right for any
+    representatives, with no division.
 
-
-def _vec(a: Sequence[Any], b: Sequence[Any]) -> tuple[Any, Any]:
-    """w_A w_B (B − A) in affine coordinates: ``w_A B − w_B A`` (first two coordinates)."""
+    >>> affine_vector((1, 1, 1), (6, 4, 2))       # (3, 2) − (1, 1) = (2, 1), times w_A w_B = 2
+    (4, 2)
+    """
     return b[0] * a[2] - a[0] * b[2], b[1] * a[2] - a[1] * b[2]
 
 
@@ -592,14 +591,14 @@ def _rotate(node: Any, v: list[Any], scalar: Scalar) -> tuple[Any, ...]:
     # O + R(X − O): with (u, v) = w_O w_X (X − O), the point (w_X O + R(u, v), w_O w_X)
     (x, y, w), (ox, oy, ow) = v
     c, s = scalar(node.data[0]), scalar(node.data[1])
-    u, t = _vec((ox, oy, ow), (x, y, w))
+    u, t = affine_vector((ox, oy, ow), (x, y, w))
     return (w * ox + c * u - s * t, w * oy + s * u + c * t, ow * w)
 
 
 def _translate(node: Any, v: list[Any], scalar: Scalar) -> tuple[Any, ...]:
     # X + (B − A) over the common denominator w_X w_A w_B
     (x, y, w), a, b = v
-    u, t = _vec(a, b)
+    u, t = affine_vector(a, b)
     return (x * a[2] * b[2] + w * u, y * a[2] * b[2] + w * t, w * a[2] * b[2])
 
 
@@ -653,8 +652,7 @@ def _invert(node: Any, v: list[Any], scalar: Scalar) -> tuple[Any, ...]:
 
 
 def _dist2(node: Any, v: list[Any], scalar: Scalar) -> tuple[Any, Any]:
-    u, t = _vec(v[0], v[1])
-    return (u * u + t * t, v[0][2] * v[0][2] * v[1][2] * v[1][2])
+    return alg.squared_distance_fraction(v[0], v[1])
 
 
 def _area(node: Any, v: list[Any], scalar: Scalar) -> tuple[Any, Any]:
@@ -666,7 +664,7 @@ def _segratio(node: Any, v: list[Any], scalar: Scalar) -> tuple[Any, Any]:
     # AB / CD for parallel segments: with u = B − A, t = D − C (u = k t), k = u·t / t·t; the vectors are
     # U/(w_A w_B) and T/(w_C w_D), so k = (U·T) w_C w_D / ((T·T) w_A w_B)
     a, b, c, d = v
-    uu, tt = _vec(a, b), _vec(c, d)
+    uu, tt = affine_vector(a, b), affine_vector(c, d)
     return ((uu[0] * tt[0] + uu[1] * tt[1]) * c[2] * d[2], (tt[0] * tt[0] + tt[1] * tt[1]) * a[2] * b[2])
 
 
@@ -694,7 +692,7 @@ def _concyclic_q(node: Any, v: list[Any], scalar: Scalar) -> tuple[Any]:
 def _equalangle_q(node: Any, v: list[Any], scalar: Scalar) -> tuple[Any]:
     # tan ∠ABC = (u × t)/(u · t) with u = A − B, t = C − B; the representatives scale u × t and u · t alike
     def cross_dot(p: Any, vertex: Any, q: Any) -> tuple[Any, Any]:
-        u, t = _vec(vertex, p), _vec(vertex, q)
+        u, t = affine_vector(vertex, p), affine_vector(vertex, q)
         return u[0] * t[1] - u[1] * t[0], u[0] * t[0] + u[1] * t[1]
     (c1, d1), (c2, d2) = cross_dot(*v[:3]), cross_dot(*v[3:])
     return (c1 * d2 - c2 * d1,)
@@ -710,12 +708,8 @@ def _finite(*points: Sequence[Any]) -> list[list[Any]]:
 
 
 def _distinct(p: Sequence[Any], q: Sequence[Any]) -> list[Any]:
-    u, t = _vec(p, q)
+    u, t = affine_vector(p, q)
     return [u * u + t * t]
-
-
-def _circle_a(k: Any) -> Any:
-    return k[0][0]
 
 
 # the core's objects

@@ -31,6 +31,7 @@ from ..conic_pencil import intersect_conics
 from ..conics import Conic
 from ..errors import ObjectTypeError
 from ..projective_plane import Point
+from .operations import affine_vector
 
 if TYPE_CHECKING:
     from .claims import Claim, Node
@@ -116,16 +117,6 @@ def _similar(node: Node) -> Node:
 
 # -- coordinates --------------------------------------------------------------------------------------------
 
-def _vector(p: Sequence[Any], q: Sequence[Any]) -> tuple[Any, Any]:
-    """w_P w_Q (Q/w_Q − P/w_P): the vector from P to Q, scaled by w_P w_Q (right for any representatives)."""
-    return (p[2] * q[0] - q[2] * p[0], p[2] * q[1] - q[2] * p[1])
-
-
-def _length_square(p: Sequence[Any], q: Sequence[Any]) -> Any:
-    v = _vector(p, q)
-    return v[0] * v[0] + v[1] * v[1]
-
-
 def _length_root(claim: Claim, a: Node, b: Node) -> Root:
     """The shared root d with d² = (w_A w_B)²|AB|², principal d = +w_A w_B |AB|."""
     x, y = sorted((a.name, b.name))
@@ -134,7 +125,7 @@ def _length_root(claim: Claim, a: Node, b: Node) -> Root:
         if str(r.symbol) == name:
             return r
     return _new_root(claim, name, "length", f"{name}² = (w_{x} w_{y})²·|{x}{y}|²", True,
-                     square=lambda v: _length_square(v[a], v[b]), orient=lambda v: v[a][2] * v[b][2],
+                     square=lambda v: alg.squared_distance_fraction(v[a], v[b])[0], orient=lambda v: v[a][2] * v[b][2],
                      words=(f"+|{x}{y}|", f"−|{x}{y}|"))
 
 
@@ -144,7 +135,7 @@ def _bisector(claim: Claim, name: str, a: Any, b: Any, c: Any, internal: bool) -
     sgn = 1 if internal else -1
 
     def line(pa: Any, pb: Any, pc: Any, uba: Any, ubc: Any) -> tuple[Any, ...]:
-        va, vc = _vector(pb, pa), _vector(pb, pc)
+        va, vc = affine_vector(pb, pa), affine_vector(pb, pc)
         # the unit vectors are va/d_BA and vc/d_BC (d_BA = w_A w_B |BA| on the named branch): added or
         # subtracted, times d_BA d_BC
         ux = ubc * va[0] + sgn * uba * vc[0]
@@ -202,9 +193,12 @@ def _radical_line(k: Any, m: Any) -> tuple[Any, ...]:
 
 
 def _meet_points(claim: Claim, names: Sequence[str], l: Node | None, k: Node, m: Node | None,
-                 what: str) -> list[Node]:
-    """One or two common points of a line l (or the radical axis of the circles K, M) and the conic K."""
-    key = "_".join(names)
+                 what: str, shown: Sequence[str] | None = None) -> list[Node]:
+    """One or two common points of a line l (or the radical axis of the circles K, M) and the conic K.
+
+    ``shown`` names the points in a verdict's words when ``names`` are the prover's own (default: ``names``)."""
+    shown = list(shown or names)
+    key = "_".join(n.lstrip("_") for n in names)
     line_of = (lambda vl, vk, vm: vl) if m is None else (lambda vl, vk, vm: _radical_line(vk, vm))
     base = [x for x in (l, k, m) if x is not None]
 
@@ -225,7 +219,7 @@ def _meet_points(claim: Claim, names: Sequence[str], l: Node | None, k: Node, m:
         desc = f"{'the other' if sgn < 0 else 'a'} common point of {what}"
         out.append(_similar(claim.formula(name, "point", point, *base, root.node, description=desc,
                                           conditions=[f"{what} meet ({name} is defined)"])))
-    root.text += "; " + (f"{names[0]} takes +e, {names[1]} −e" if len(names) > 1 else f"{names[0]} takes +e")
+    root.text += "; " + (f"{shown[0]} takes +e, {shown[1]} −e" if len(shown) > 1 else f"{shown[0]} takes +e")
 
     def core(*objs: Any) -> tuple[Any, ...]:
         if m is None:
@@ -234,7 +228,7 @@ def _meet_points(claim: Claim, names: Sequence[str], l: Node | None, k: Node, m:
 
     for node in out:
         _data(claim).core.append((node, tuple(base), core))
-    readers = list(zip(names, (1, -1), strict=False))
+    readers = list(zip(shown, (1, -1), strict=False))
     _data(claim).readings.append(
         lambda signs: ", ".join(f"{n} = (−β {'+' if signs[root.symbol] * s > 0 else '−'} √Δ)·P + α·Q, the "
                                 f"{'first' if signs[root.symbol] * s > 0 else 'second'} common point of {what}"
@@ -245,8 +239,8 @@ def _meet_points(claim: Claim, names: Sequence[str], l: Node | None, k: Node, m:
 def _tangents(claim: Claim, names: Sequence[str], p: Any, k: Any) -> list[Node]:
     p, k = claim._get(p, ("point",), "tangentfrom"), claim._get(k, ("conic",), "tangentfrom")
     polar = claim.polar(f"_polar_{k.name}_{p.name}_{'_'.join(names)}", k, p)
-    touch = _meet_points(claim, [f"_touch_{n}" for n in names], polar, k, None,
-                         f"the polar of {p.name} and {k.name}")
+    touch = _meet_points(claim, [f"_touch_{n}" for n in names], polar, k, None, f"the polar of {p.name} and {k.name}",
+                         [f"the point where {n} touches {k.name}" for n in names])
     lines = [claim.join(n, p, t) for n, t in zip(names, touch, strict=True)]
 
     def core(pp: Any, kk: Any) -> tuple[Any, ...]:
@@ -309,7 +303,7 @@ def _turn(claim: Claim, name: str, x: Node, o: Node, turns: Fraction, powers: Se
         one = px[2] ** 0
         cr = _apply_terms(re, z) if not rational else sum(c for _, c in re) * one
         ci = _apply_terms(im, z) if not rational else sum(c for _, c in im) * one
-        u = _vector(po, px)
+        u = affine_vector(po, px)
         two_w = 2 * px[2]
         return (two_w * po[0] + cr * u[0] - ci * u[1], two_w * po[1] + ci * u[0] + cr * u[1], two_w * po[2])
 
