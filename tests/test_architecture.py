@@ -115,6 +115,49 @@ def test_layer_rules_catch_an_upward_import(tmp_path: Path) -> None:
     assert ("core", "exercises") not in LAZY_ALLOWED
 
 
+# -- facts about an operation live in its entry of the table ---------------------------------------------
+
+# Modules that still test an operation's name instead of reading its entry, and why (empty it, never add to it).
+OPERATION_NAME_TESTS = {
+    "pgsym/proofs/normalisation.py": "the group of a node with its own parameter and the scaling of a ratio are "
+                                     "still decided by operation name",
+    "pgsym/proofs/language.py": "the reader picks a circle's known point by the operation that built it",
+}
+
+
+def _operation_name_tests(tree: ast.AST) -> list[int]:
+    """Lines comparing ``x.op`` (or ``op``) with a string or a tuple of strings."""
+    found = []
+    for node in ast.walk(tree):
+        if not isinstance(node, ast.Compare):
+            continue
+        left = node.left
+        named_op = getattr(left, "attr", None) == "op" or getattr(left, "id", None) == "op"
+        if not named_op:
+            continue
+        for c in node.comparators:
+            items = c.elts if isinstance(c, (ast.Tuple, ast.List, ast.Set)) else [c]
+            if items and all(isinstance(e, ast.Constant) and isinstance(e.value, str) for e in items):
+                found.append(node.lineno)
+    return found
+
+
+def test_facts_about_an_operation_are_read_from_the_table() -> None:
+    # ``node.op == "join"`` outside the table is a fact about the operation written elsewhere; give its entry a field
+    wrong = []
+    for path in SOURCES:
+        rel = str(path.relative_to(ROOT.parent))
+        if rel == "pgsym/proofs/operations.py" or rel in OPERATION_NAME_TESTS:
+            continue
+        wrong += [f"{rel}:{n}" for n in _operation_name_tests(ast.parse(path.read_text(encoding="utf-8")))]
+    assert not wrong, f"operation names tested outside pgsym/proofs/operations.py: {wrong}"
+    # the check itself finds both spellings, and the modules listed above still need their entry
+    sample = ast.parse('if node.op == "join" or p.op in ("meet", "polar") or node.kind == "point": pass')
+    assert _operation_name_tests(sample) == [1, 1]
+    for rel in OPERATION_NAME_TESTS:
+        assert _operation_name_tests(ast.parse((ROOT.parent / rel).read_text(encoding="utf-8"))), f"{rel} is done"
+
+
 # -- no cycles ------------------------------------------------------------------------------------------------
 
 # Cycles known and being removed elsewhere, each with its reason; every other cycle fails the test.

@@ -130,7 +130,7 @@ def nonzero_requirements(claim: Claim, values: dict[Node, Any]) -> list[tuple[st
                 out.append((f"{a.label} is not zero", flat(values[a])))
         if c.kind == "equal_ratio":
             for a in c.args:
-                if a.op != "const":
+                if not a.operation.given:
                     out.append((f"the denominator of {a.label} is not zero", [values[a][1]]))
     return out
 
@@ -140,7 +140,7 @@ def objects_to_check(claim: Claim) -> list[Node]:
     conic built by an operation (a matrix or scalar may be zero on purpose, e.g. a residual concluded zero)."""
     protected = {id(a) for c in claim.conclusions if c.kind in ("zero", "equal") for a in c.args}
     return [n for n in claim.nodes.values()
-            if n.op not in ("free", "const") and n.kind not in ("matrix", "scalar", "ratio")
+            if not n.operation.given and n.kind not in ("matrix", "scalar", "ratio")
             and id(n) not in protected]
 
 

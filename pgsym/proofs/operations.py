@@ -129,7 +129,13 @@ class Operation:
       the span of the core's own arguments;
     * ``conclusion``: the value is a quantity of a conclusion (zero exactly when the statement holds, e.g. the
       reciprocal product of two lines that meet), so it vanishes identically on a true claim and is never a
-      degenerate construction.
+      degenerate construction;
+    * ``given``: the value is given (a free object or a constant), not constructed: it is never checked for
+      vanishing identically, and a constant's denominator is not a condition;
+    * ``lies_on``: the indices of the arguments the result lies on by construction (the meet of two lines lies on
+      both, the second point of a conic on the conic), ``through``: those the result passes through (the join of
+      two points, the conic through five), ``polar_of``: ``(conic, point)`` when the result passes through the
+      point exactly when the point lies on the conic (a polar) — what discovery marks as true by construction.
     """
 
     name: str
@@ -147,6 +153,10 @@ class Operation:
     group: str | None = "projective"
     conclusion: bool = False
     on_span: bool = False
+    given: bool = False
+    lies_on: tuple[int, ...] = ()
+    through: tuple[int, ...] = ()
+    polar_of: tuple[int, int] | None = None
 
     def result_kind(self, arg_kinds: Sequence[str]) -> str:
         """The kind of the result for arguments of the given kinds."""
@@ -410,28 +420,28 @@ _POINT, _LINE, _POINT1, _POINT3, _PLANE = ("point",), ("line",), ("point1",), ("
 
 _TABLE = (
     Operation("free", (), "free", _free_value, lambda n, d: "", condition_values=_free_conditions, core=_free_core,
-              coefficients=True, constructible=False),
+              coefficients=True, constructible=False, given=True),
     Operation("const", (), "ratio", lambda node, v, scalar: (scalar(node.data[0]), scalar(node.data[1])),
-              lambda n, d: "", coefficients=True, constructible=False),
+              lambda n, d: "", coefficients=True, constructible=False, given=True),
     Operation("join", (_POINT, _POINT), "line", lambda node, v, scalar: alg.cross(v[0], v[1]),
               lambda n, d: f"{n[0]} × {n[1]}", lambda n, name, d: [f"{n[0]} ≠ {n[1]}"],
-              core=lambda node, a, exact: projective_plane.join(*a)),
+              core=lambda node, a, exact: projective_plane.join(*a), through=(0, 1)),
     Operation("meet", (_LINE, _LINE), "point", lambda node, v, scalar: alg.cross(v[0], v[1]),
               lambda n, d: f"{n[0]} × {n[1]}", lambda n, name, d: [f"{n[0]} ≠ {n[1]}"],
-              core=lambda node, a, exact: projective_plane.meet(*a)),
+              core=lambda node, a, exact: projective_plane.meet(*a), lies_on=(0, 1)),
     Operation("combine", (_VECTOR_KINDS, _VECTOR_KINDS), 0, _combine,
               lambda n, d: f"{d[0]}·{n[0]} + {d[1]}·{n[1]}",
               lambda n, name, d: [f"{name} is not the zero vector ({n[0]} ≠ {n[1]})"],
               core=_combine_core, same_kind=True, coefficients=True, group=None, on_span=True),
     Operation("plane_through", (_POINT3,) * 3, "plane", lambda node, v, scalar: alg.plane_through(*v),
               lambda n, d: f"plane({', '.join(n)})", lambda n, name, d: [f"{', '.join(n)} are not collinear"],
-              core=lambda node, a, exact: space.plane_through(*a)),
+              core=lambda node, a, exact: space.plane_through(*a), through=(0, 1, 2)),
     Operation("point_on_planes", (_PLANE,) * 3, "point3", lambda node, v, scalar: alg.plane_through(*v),
               lambda n, d: f"point({', '.join(n)})", lambda n, name, d: [f"{', '.join(n)} do not share a line"],
-              core=lambda node, a, exact: space.point_on_planes(*a)),
+              core=lambda node, a, exact: space.point_on_planes(*a), lies_on=(0, 1, 2)),
     Operation("line3", (_POINT3, _POINT3), "line3", lambda node, v, scalar: alg.wedge(v[0], v[1]),
               lambda n, d: f"{n[0]} {n[1]}ᵀ − {n[1]} {n[0]}ᵀ", lambda n, name, d: [f"{n[0]} ≠ {n[1]}"],
-              core=lambda node, a, exact: plucker.Line3.join(*a)),
+              core=lambda node, a, exact: plucker.Line3.join(*a), through=(0, 1)),
     Operation("apply", (("matrix",), ("point1", "point", "point3")), 1,
               lambda node, v, scalar: alg.matvec(v[0], v[1]), lambda n, d: f"{n[0]} {n[1]}",
               core=lambda node, a, exact: _vector(node.kind, a[0] * a[1].vector), group=None),
@@ -446,11 +456,11 @@ _TABLE = (
               lambda n, d: f"{n[0]} {n[1]}",
               lambda n, name, d: [f"{n[1]} is not a singular point of {n[0]} ({n[0]} {n[1]} ≠ 0)"],
               core=lambda node, a, exact: conics.Conic(a[0].matrix if hasattr(a[0], "matrix") else a[0]).polar(a[1]),
-              aliases=("tangent",)),
+              aliases=("tangent",), polar_of=(0, 1)),
     Operation("conic_through", (_POINT,) * 5, "conic", lambda node, v, scalar: _conic_from_points(v),
               lambda n, d: f"conic({', '.join(n)})",
               lambda n, name, d: [f"{', '.join(n)} determine a unique conic (no two equal, no four collinear)"],
-              core=lambda node, a, exact: conics.conic_through(*a)),
+              core=lambda node, a, exact: conics.conic_through(*a), through=(0, 1, 2, 3, 4)),
     Operation("dual_conic", (("conic",),), "matrix", lambda node, v, scalar: alg.adjugate(v[0]),
               lambda n, d: f"adj({n[0]})", lambda n, name, d: [f"{n[0]} is non-degenerate (det {n[0]} ≠ 0)"],
               _det_of_first, core=lambda node, a, exact: conics.Conic(a[0]).dual()),
@@ -467,11 +477,11 @@ _TABLE = (
               lambda n, d: f"({n[2]}ᵀ{n[0]}{n[2]}) {n[1]} − 2 ({n[1]}ᵀ{n[0]}{n[2]}) {n[2]}",
               lambda n, name, d: [f"{n[1]} ≠ {n[2]} ({name} is the second point of {n[0]} on the line {n[1]}{n[2]}; "
                                   f"{n[1]} must lie on {n[0]})"],
-              core=_second_core),
+              core=_second_core, lies_on=(0,)),
     Operation("point_on_conic", (("conic",), _POINT), "point", _conic_point,
               lambda n, d: f"second point of {n[0]} on the line through {n[1]} and (1, {d[0]}, {d[0]}²)",
               lambda n, name, d: [f"{name} is defined ({n[1]} lies on {n[0]}, the line through it is no tangent)"],
-              core=_conic_point_core, coefficients=True),
+              core=_conic_point_core, coefficients=True, lies_on=(0,)),
     Operation("point_on_line", (("point", "point3"), ("point", "point3")), 0,
               lambda node, v, scalar: tuple(a + scalar(node.data[0]) * b for a, b in zip(v[0], v[1], strict=True)),
               lambda n, d: f"{n[0]} + {d[0]}·{n[1]}", lambda n, name, d: [f"{n[0]} ≠ {n[1]}"],
@@ -484,7 +494,7 @@ _TABLE = (
               lambda n, d: f"{n[0]} × (1, {d[0]}, {d[0]}²)", lambda n, name, d: [f"{name} is a point of {n[0]}"],
               core=lambda node, a, exact: projective_plane.meet(
                   a[0], projective_plane.Line(*_moment(exact(node.data[0])))),
-              coefficients=True),
+              coefficients=True, lies_on=(0,)),
     Operation("conic_tangent_to", (_LINE,) * 5, "conic", _conic_tangent_to,
               lambda n, d: f"adj(dual conic({', '.join(n)}))",
               lambda n, name, d: [f"{', '.join(n)} are tangent to a unique non-degenerate conic "
@@ -492,10 +502,10 @@ _TABLE = (
               core=_tangent_to_core),
     Operation("line_meets_plane", (("line3",), _PLANE), "point3", lambda node, v, scalar: alg.matvec(v[0], v[1]),
               lambda n, d: f"{n[0]} {n[1]}", lambda n, name, d: [f"{n[0]} does not lie in {n[1]}"],
-              core=lambda node, a, exact: a[0].intersect_plane(a[1])),
+              core=lambda node, a, exact: a[0].intersect_plane(a[1]), lies_on=(0, 1)),
     Operation("line_of_planes", (_PLANE, _PLANE), "line3", _line_of_planes_formula,
               lambda n, d: f"({n[0]} {n[1]}ᵀ − {n[1]} {n[0]}ᵀ)*", lambda n, name, d: [f"{n[0]} ≠ {n[1]}"],
-              core=lambda node, a, exact: plucker.Line3.meet(*a)),
+              core=lambda node, a, exact: plucker.Line3.meet(*a), lies_on=(0, 1)),
     Operation("cross_ratio_collinear", (("point", "line"),) * 4, "ratio", _cross_ratio2,
               lambda n, d: f"({n[0]}, {n[1]}; {n[2]}, {n[3]})",
               lambda n, name, d: [f"{n[0]} ≠ {n[3]}, {n[1]} ≠ {n[2]} and {n[0]} ≠ {n[1]} "
