@@ -119,8 +119,6 @@ def test_layer_rules_catch_an_upward_import(tmp_path: Path) -> None:
 
 # Modules that still test an operation's name instead of reading its entry, and why (empty it, never add to it).
 OPERATION_NAME_TESTS = {
-    "pgsym/proofs/normalisation.py": "the group of a node with its own parameter and the scaling of a ratio are "
-                                     "still decided by operation name",
     "pgsym/proofs/language.py": "the reader picks a circle's known point by the operation that built it",
 }
 

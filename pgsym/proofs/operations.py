@@ -135,7 +135,13 @@ class Operation:
     * ``lies_on``: the indices of the arguments the result lies on by construction (the meet of two lines lies on
       both, the second point of a conic on the conic), ``through``: those the result passes through (the join of
       two points, the conic through five), ``polar_of``: ``(conic, point)`` when the result passes through the
-      point exactly when the point lies on the conic (a polar) — what discovery marks as true by construction.
+      point exactly when the point lies on the conic (a polar) — what discovery marks as true by construction;
+    * for the choice of a frame (:mod:`pgsym.proofs.normalisation`): ``constant`` (a number given as a ratio),
+      ``fresh_coefficients`` (the value depends on the representatives unless its coefficients are parameters of
+      its own: ``combine``), ``node_group(data, own)`` the group when it depends on the node's data (``own(e)``:
+      ``e`` is a parameter used nowhere else), ``ratio_scaling`` ``(a, b)`` when a ratio changes by
+      det(M)^a · k^b under an affine map or a similarity of scale k, ``ratio_arithmetic`` ``"sum"`` or
+      ``"product"`` for the arithmetic of ratios.
     """
 
     name: str
@@ -154,6 +160,11 @@ class Operation:
     conclusion: bool = False
     on_span: bool = False
     given: bool = False
+    constant: bool = False
+    fresh_coefficients: bool = False
+    node_group: Callable[[Any, Callable[[Any], bool]], str | None] | None = None
+    ratio_scaling: tuple[int, int] | None = None
+    ratio_arithmetic: str | None = None
     lies_on: tuple[int, ...] = ()
     through: tuple[int, ...] = ()
     polar_of: tuple[int, int] | None = None
@@ -414,6 +425,27 @@ def _line_of_planes_formula(node: Any, v: list[Any], scalar: Scalar) -> Any:
     return _dual_plucker(alg.wedge(v[0], v[1]))
 
 
+# -- the group of a construction that depends on its data ------------------------------------------------------
+
+def _family(data: Any, own: Callable[[Any], bool]) -> str | None:
+    """A point with a parameter of its own: a homography maps the family of its values onto the family."""
+    return "projective" if own(data[0]) else None
+
+
+def _radius_group(data: Any, own: Callable[[Any], bool]) -> str | None:
+    """A squared radius of its own is rescaled by a similarity (the family again); a fixed nonzero number is kept
+    only by isometries."""
+    r = data[0]
+    if own(r):
+        return "similarity"
+    return "euclidean" if r.is_Rational and r != 0 else None
+
+
+def _rotation_group(data: Any, own: Callable[[Any], bool]) -> str | None:
+    """A rotation by a fixed angle commutes with every orientation-preserving similarity."""
+    return "similarity" if all(sympy.sympify(e).is_Rational for e in data) else None
+
+
 # -- the table -------------------------------------------------------------------------------------------
 
 _POINT, _LINE, _POINT1, _POINT3, _PLANE = ("point",), ("line",), ("point1",), ("point3",), ("plane",)
@@ -422,7 +454,7 @@ _TABLE = (
     Operation("free", (), "free", _free_value, lambda n, d: "", condition_values=_free_conditions, core=_free_core,
               coefficients=True, constructible=False, given=True),
     Operation("const", (), "ratio", lambda node, v, scalar: (scalar(node.data[0]), scalar(node.data[1])),
-              lambda n, d: "", coefficients=True, constructible=False, given=True),
+              lambda n, d: "", coefficients=True, constructible=False, given=True, constant=True),
     Operation("join", (_POINT, _POINT), "line", lambda node, v, scalar: alg.cross(v[0], v[1]),
               lambda n, d: f"{n[0]} × {n[1]}", lambda n, name, d: [f"{n[0]} ≠ {n[1]}"],
               core=lambda node, a, exact: projective_plane.join(*a), through=(0, 1)),
@@ -432,7 +464,8 @@ _TABLE = (
     Operation("combine", (_VECTOR_KINDS, _VECTOR_KINDS), 0, _combine,
               lambda n, d: f"{d[0]}·{n[0]} + {d[1]}·{n[1]}",
               lambda n, name, d: [f"{name} is not the zero vector ({n[0]} ≠ {n[1]})"],
-              core=_combine_core, same_kind=True, coefficients=True, group=None, on_span=True),
+              core=_combine_core, same_kind=True, coefficients=True, group=None, on_span=True,
+              fresh_coefficients=True),
     Operation("plane_through", (_POINT3,) * 3, "plane", lambda node, v, scalar: alg.plane_through(*v),
               lambda n, d: f"plane({', '.join(n)})", lambda n, name, d: [f"{', '.join(n)} are not collinear"],
               core=lambda node, a, exact: space.plane_through(*a), through=(0, 1, 2)),
@@ -467,7 +500,7 @@ _TABLE = (
     Operation("cross_ratio", (_POINT1,) * 4, "ratio", _cross_ratio, lambda n, d: f"({n[0]}, {n[1]}; {n[2]}, {n[3]})",
               lambda n, name, d: [f"[{n[0]} {n[3]}][{n[1]} {n[2]}] ≠ 0 ({n[0]} ≠ {n[3]} and {n[1]} ≠ {n[2]})"],
               lambda node, value, args: [[value[1]]],
-              core=lambda node, a, exact: projective_line.cross_ratio(*a)),
+              core=lambda node, a, exact: projective_line.cross_ratio(*a), ratio_scaling=(0, 0)),
     Operation("harmonic_conjugate", (_POINT1,) * 3, "point1", _harmonic_conjugate,
               lambda n, d: f"[{n[0]} {n[2]}] {n[1]} + [{n[1]} {n[2]}] {n[0]}",
               lambda n, name, d: [f"{', '.join(n)} are distinct"],
@@ -481,20 +514,20 @@ _TABLE = (
     Operation("point_on_conic", (("conic",), _POINT), "point", _conic_point,
               lambda n, d: f"second point of {n[0]} on the line through {n[1]} and (1, {d[0]}, {d[0]}²)",
               lambda n, name, d: [f"{name} is defined ({n[1]} lies on {n[0]}, the line through it is no tangent)"],
-              core=_conic_point_core, coefficients=True, lies_on=(0,)),
+              core=_conic_point_core, coefficients=True, lies_on=(0,), node_group=_family),
     Operation("point_on_line", (("point", "point3"), ("point", "point3")), 0,
               lambda node, v, scalar: tuple(a + scalar(node.data[0]) * b for a, b in zip(v[0], v[1], strict=True)),
               lambda n, d: f"{n[0]} + {d[0]}·{n[1]}", lambda n, name, d: [f"{n[0]} ≠ {n[1]}"],
               lambda node, value, args: [_pairs(args[0], args[1])],
               core=lambda node, a, exact: _vector(node.kind, (x + exact(node.data[0]) * y
                                                               for x, y in zip(a[0].coords, a[1].coords, strict=True))),
-              same_kind=True, coefficients=True, on_span=True),
+              same_kind=True, coefficients=True, on_span=True, node_group=_family),
     Operation("point_of_line", (_LINE,), "point",
               lambda node, v, scalar: alg.cross(v[0], _moment(scalar(node.data[0]))),
               lambda n, d: f"{n[0]} × (1, {d[0]}, {d[0]}²)", lambda n, name, d: [f"{name} is a point of {n[0]}"],
               core=lambda node, a, exact: projective_plane.meet(
                   a[0], projective_plane.Line(*_moment(exact(node.data[0])))),
-              coefficients=True, lies_on=(0,)),
+              coefficients=True, lies_on=(0,), node_group=_family),
     Operation("conic_tangent_to", (_LINE,) * 5, "conic", _conic_tangent_to,
               lambda n, d: f"adj(dual conic({', '.join(n)}))",
               lambda n, name, d: [f"{', '.join(n)} are tangent to a unique non-degenerate conic "
@@ -510,7 +543,7 @@ _TABLE = (
               lambda n, d: f"({n[0]}, {n[1]}; {n[2]}, {n[3]})",
               lambda n, name, d: [f"{n[0]} ≠ {n[3]}, {n[1]} ≠ {n[2]} and {n[0]} ≠ {n[1]} "
                                   f"({', '.join(n)} collinear or concurrent)"],
-              lambda node, value, args: [[value[1]]], core=_cross_ratio2_core, same_kind=True),
+              lambda node, value, args: [[value[1]]], core=_cross_ratio2_core, same_kind=True, ratio_scaling=(0, 0)),
     Operation("harmonic_conjugate_collinear", (("point", "line"),) * 3, 0, _harmonic2,
               lambda n, d: f"harmonic conjugate of {n[2]} with respect to {n[0]}, {n[1]}",
               lambda n, name, d: [f"{', '.join(n)} are distinct ({', '.join(n)} collinear or concurrent)"],
@@ -794,7 +827,7 @@ _EUCLIDEAN = (
          lambda n, name, d: [f"{n[0]} is a finite point", f"{n[1]} is a finite point"],
          lambda node, value, a: _finite(a[0], a[1]),
          lambda node, a, exact: metric.rotation(exact(node.data[0]), exact(node.data[1]), a[1])(a[0]),
-         coefficients=True),
+         coefficients=True, node_group=_rotation_group),
     _sim("translate", (_POINT, _POINT, _POINT), "point", _translate,
          lambda n, d: f"{n[0]} translated by the vector {n[1]}{n[2]}",
          lambda n, name, d: [f"{x} is a finite point" for x in n], lambda node, value, a: _finite(*a),
@@ -812,7 +845,8 @@ _EUCLIDEAN = (
          lambda n, name, d: [f"{name} has nonzero radius ({d[0]} ≠ 0)", f"{n[0]} is a finite point"],
          lambda node, value, a: [[value[2][2] * value[0][0] - value[0][2] * value[0][2] - value[1][2] * value[1][2]],
                                  *_finite(a[0])],
-         lambda node, a, exact: _circle_core(a[0], exact(node.data[0])), coefficients=True),
+         lambda node, a, exact: _circle_core(a[0], exact(node.data[0])), coefficients=True,
+         node_group=_radius_group),
     _sim("circle3", (_POINT,) * 3, "conic", _circle_three, lambda n, d: f"circle through {', '.join(n)}",
          lambda n, name, d: [f"{', '.join(n)} are finite and not collinear"],
          lambda node, value, a: [[value[0][0]]],
@@ -833,17 +867,18 @@ _EUCLIDEAN = (
          lambda node, a, exact: conic_metric.inversion(a[0], _conic_core(a[1]))),
     _sim("dist2", (_POINT, _POINT), "ratio", _dist2, lambda n, d: f"|{n[0]}{n[1]}|²",
          lambda n, name, d: [f"{n[0]} and {n[1]} are finite points"], lambda node, value, a: [[value[1]]],
-         lambda node, a, exact: metric.squared_distance(*a)),
+         lambda node, a, exact: metric.squared_distance(*a), ratio_scaling=(0, 2)),
     _sim("area", (_POINT,) * 3, "ratio", _area, lambda n, d: f"signed area of {''.join(n)}",
          lambda n, name, d: [f"{', '.join(n)} are finite points"], lambda node, value, a: [[value[1]]],
-         lambda node, a, exact: invariants.signed_area(*(p.coords for p in a)), group="affine"),
+         lambda node, a, exact: invariants.signed_area(*(p.coords for p in a)), group="affine",
+         ratio_scaling=(1, 0)),
     _sim("segratio", (_POINT,) * 4, "ratio", _segratio, lambda n, d: f"{n[0]}{n[1]} / {n[2]}{n[3]}",
          lambda n, name, d: [f"{n[2]} ≠ {n[3]} and {n[0]}, {n[1]} are finite points"],
-         lambda node, value, a: [[value[1]]], _segratio_core),
+         lambda node, value, a: [[value[1]]], _segratio_core, ratio_scaling=(0, 0)),
     *(_sim(op, (("ratio",), ("ratio",)), "ratio", _ratio_arith(op), lambda n, d, s=sign: f"{n[0]} {s} {n[1]}",
            lambda n, name, d: [], None, lambda node, a, exact, op=op: (a[0] + a[1] if op == "add" else
                                                                       a[0] - a[1] if op == "sub" else a[0] * a[1]),
-           group="projective")
+           group="projective", ratio_arithmetic="product" if op == "mul" else "sum")
       for op, sign in (("add", "+"), ("sub", "−"), ("mul", "·"))),
     # conclusion quantities
     _sim("perpendicular_to", (_LINE, _LINE), "scalar", _perpendicular_q, lambda n, d: f"{n[0]}ᵀ C*∞ {n[1]}",
