@@ -118,9 +118,7 @@ def test_layer_rules_catch_an_upward_import(tmp_path: Path) -> None:
 # -- facts about an operation live in its entry of the table ---------------------------------------------
 
 # Modules that still test an operation's name instead of reading its entry, and why (empty it, never add to it).
-OPERATION_NAME_TESTS = {
-    "pgsym/proofs/language.py": "the reader picks a circle's known point by the operation that built it",
-}
+OPERATION_NAME_TESTS: dict[str, str] = {}
 
 
 def _operation_name_tests(tree: ast.AST) -> list[int]:

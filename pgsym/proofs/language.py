@@ -169,9 +169,10 @@ class _Token:
 
 @dataclass
 class _Call:
-    """A parsed expression: an operation and its arguments (names, tuples or calls)."""
+    """A parsed expression: the keyword of an operation of the language and its arguments (names, tuples or
+    calls)."""
 
-    op: str
+    word: str
     args: list[Any]
     tok: _Token
 
@@ -313,7 +314,7 @@ def _canonical(e: Any) -> str:
         return e.text
     if isinstance(e, _Tuple):
         return "(" + ", ".join(("-" if s < 0 else "") + t.text for s, t in e.coords) + ")"
-    return e.op + " " + " ".join(_canonical(a) if not isinstance(a, _Call) else f"({_canonical(a)})" for a in e.args)
+    return e.word + " " + " ".join(_canonical(a) if not isinstance(a, _Call) else f"({_canonical(a)})" for a in e.args)
 
 
 # -- building the claim ---------------------------------------------------------------------------------------
@@ -475,11 +476,11 @@ class _Reader:
             if self.count > MAX_STATEMENT_OBJECTS:
                 raise StatementLimitError(f"more than {MAX_STATEMENT_OBJECTS} objects in one theorem",
                                           e.tok.line, e.tok.col)
-        node = _BUILD[e.op](self.claim, key, args, e.tok)
-        if e.op == "conic" and args and args[0].kind == _P:
+        node = _BUILD[e.word](self.claim, key, args, e.tok)
+        if e.word == "conic" and args and args[0].kind == _P:
             self.first_point[key] = args[0]
-        if e.op == "circle" and node.op in ("circle", "circle3"):  # a known point: A of circle O A, circle A B C
-            self.first_point[key] = args[1] if node.op == "circle" else args[0]
+        if e.word == "circle" and node.operation.through:  # a known point: A of circle O A, circle A B C
+            self.first_point[key] = args[node.operation.through[0]]
         return node
 
     def _coordinates(self, name: str, kind: str, e: _Tuple) -> Node:
