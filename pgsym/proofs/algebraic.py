@@ -1,8 +1,10 @@
-"""Constructions that need square roots: algebraic points with defining equations, and which roots a proof covers.
+"""Proofs of claims with square roots: which choices of root a proof covers, and the named branch.
 
 An angle bisector, a line meeting a circle, the tangents from a point, a regular polygon or a rotation by 60°
-cannot be written with ``+``, ``−``, ``×`` of the coordinates alone. Each is written here with a few new
-quantities, the *roots*, each tied to the parameters by one defining equation:
+cannot be written with ``+``, ``−``, ``×`` of the coordinates alone. Each is built (by the methods of
+:class:`~pgsym.proofs.square_roots.SquareRootConstructions`, a base class of every claim) with a few new
+quantities, the *roots*, each tied to the parameters by one defining equation; this module proves claims that
+have them (:func:`pgsym.proofs.engine.prove` hands them here):
 
 * a **length root** ``d_A_B`` with ``d² = (x_A w_B − x_B w_A)² + (y_A w_B − y_B w_A)²``, i.e. ``d = ±w_A w_B |AB|``:
   one per segment, shared by every construction that needs the length |AB|. The internal bisector of ∠ABC at
@@ -11,7 +13,7 @@ quantities, the *roots*, each tied to the parameters by one defining equation:
   length positive): then each ``anglebisector`` is internal and each ``exbisector`` external. Changing the
   sign of ``d_A_B`` swaps internal and external at A and at B together;
 * an **intersection root** ``e_X`` with ``e² = β² − αγ``, the discriminant of a line meeting a conic
-  (:func:`line_conic_intersection`): the two common points are ``(−β ± e) P + α Q``. The statement names no root
+  (``line_conic_intersection``): the two common points are ``(−β ± e) P + α Q``. The statement names no root
   (``intersection`` is either point, ``intersections`` both in either order, ``tangentfrom`` either tangent),
   so a conclusion must hold for both;
 * a **root of unity** ``zeta_M`` with ``Φ_M(zeta_M) = 0`` (the cyclotomic polynomial), for rotations by an
