@@ -51,11 +51,11 @@ def _naive(name: str) -> bool:
     import sympy
 
     from pgsym.proofs import get_claim
-    from pgsym.proofs.engine import _conclusion_polys, _evaluate
+    from pgsym.proofs.evaluation import conclusion_polys, evaluate
 
     claim = get_claim(name)
-    values = _evaluate(claim, sympy.sympify)
-    ok = all(sympy.simplify(expr) == 0 for _, expr in _conclusion_polys(claim, values))
+    values = evaluate(claim, sympy.sympify)
+    ok = all(sympy.simplify(expr) == 0 for _, expr in conclusion_polys(claim, values))
     for c in claim.conclusions:
         if c.kind == "rank":
             node, r = c.args
@@ -82,11 +82,11 @@ def _general(name: str):  # type: ignore[no-untyped-def]
 def _expression_route(name: str) -> bool:
     import sympy
 
-    from pgsym.proofs.engine import _conclusion_polys, _evaluate
+    from pgsym.proofs.evaluation import conclusion_polys, evaluate
 
     claim = _general(name)
-    values = _evaluate(claim, sympy.sympify)
-    return all(sympy.expand(expr) == 0 for _, expr in _conclusion_polys(claim, values))
+    values = evaluate(claim, sympy.sympify)
+    return all(sympy.expand(expr) == 0 for _, expr in conclusion_polys(claim, values))
 
 
 def _previous_engine(name: str) -> bool:

@@ -27,7 +27,7 @@ _LAZY: dict[str, str] = {
     "Transformation": "transformations",
     "adjugate": "transformations",
     "homography_from_points": "transformations",
-    "homography_from_points_and_conics": "transformations",
+    "homography_from_points_and_conics": "conic_pencil",
     "classify": "hierarchy",
     "CLASSES_2D": "hierarchy",
     "CLASSES_3D": "hierarchy",

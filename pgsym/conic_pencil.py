@@ -28,22 +28,35 @@ returned is checked exactly (:func:`pgsym.exact.is_zero`) to lie on both conics.
 
 from __future__ import annotations
 
+from itertools import combinations
+from typing import Any
+
 import sympy
 from sympy import Expr, Matrix, Rational  # noqa: F401 (Rational: doctest)
 
 from .conics import Conic, conic_through  # noqa: F401 (conic_through: doctest)
 from .errors import (
+    CoincidentPointsError,
     CollinearPointsError,
     DegenerateConfigurationError,
     DegenerateConicError,
     DimensionError,
+    NotOnConicError,
+    ObjectTypeError,
     UndecidableError,
 )
 from .exact import Scalar, algebraic_normal_form, is_zero, to_exact
 from .homogeneous import require
 from .projective_plane import Line, Point, collinear, join
+from .transformations import Transformation, homography_from_points
 
-__all__ = ["conic_from_cross_ratio", "conics_through_tangent", "degenerate_members", "intersect_conics"]
+__all__ = [
+    "conic_from_cross_ratio",
+    "conics_through_tangent",
+    "degenerate_members",
+    "homography_from_points_and_conics",
+    "intersect_conics",
+]
 
 _T = sympy.Dummy("t")
 
@@ -272,3 +285,45 @@ def conic_from_cross_ratio(cr: Scalar, a: Point, b: Point, c: Point, d: Point) -
     first = Conic.from_lines(join(a, c), join(b, d)).matrix
     second = Conic.from_lines(join(a, d), join(b, c)).matrix
     return Conic(first - k * second).canonical()
+
+
+def homography_from_points_and_conics(src: list[Point], dst: list[Point], conic: Any, image: Any) -> Transformation:
+    """The homography that maps the conic ``conic`` onto ``image`` and three of its points ``src`` to ``dst``.
+
+    The points must lie on their (non-degenerate) conics. **There is exactly one solution**: a
+    homography that maps C to C' maps the tangents at ``a``, ``b`` to the tangents at ``a'``, ``b'``,
+    so it maps their meet ``P = (C a) × (C b)``, the pole of the chord ``ab``, to ``P'``. The four points
+    ``a, b, c, P`` are in general position (``P`` lies on neither the chord nor, since ``c ≠ a, b``, the
+    lines ``ac``, ``bc``; three points of a conic are never collinear), so the four pairs fix one
+    homography (:func:`~pgsym.transformations.homography_from_points`); it maps C onto C', because C is the
+    only conic through ``a, b, c`` that touches the lines ``Pa`` and ``Pb`` at ``a`` and ``b``.
+
+    Named errors: :class:`~pgsym.errors.NotOnConicError` for a point off its conic,
+    :class:`~pgsym.errors.DegenerateConicError` for a degenerate conic,
+    :class:`~pgsym.errors.CoincidentPointsError` for repeated points.
+
+    >>> C = Conic.circle(0, 0, 1)
+    >>> H = homography_from_points_and_conics([Point(1, 0), Point(0, 1), Point(-1, 0)],
+    ...                                       [Point(0, 1), Point(-1, 0), Point(0, -1)], C, C)
+    >>> H == Transformation([[0, -1, 0], [1, 0, 0], [0, 0, 1]])          # the quarter turn
+    True
+    """
+    quads = []
+    for pts, C, side in ((src, conic, "source"), (dst, image, "image")):
+        if not isinstance(C, Conic):
+            raise ObjectTypeError(f"the {side} conic must be a Conic, got {type(C).__name__} {C!r}")
+        if not isinstance(pts, (list, tuple)) or len(pts) != 3 or not all(isinstance(p, Point) for p in pts):
+            raise DimensionError(f"three Points on the {side} conic are needed, got {pts!r}")
+        if C.is_degenerate:
+            raise DegenerateConicError(f"the {side} conic {C!r} is degenerate: it has no tangents at every point")
+        for i, p in enumerate(pts):
+            if not C.contains(p):
+                raise NotOnConicError(f"{side} point {i + 1}, {p!r}, does not lie on the {side} conic {C!r}")
+        for (i, p), (j, q) in combinations(enumerate(pts), 2):
+            if p == q:
+                raise CoincidentPointsError(f"{side} points {i + 1} and {j + 1} coincide ({p!r})")
+        a, b, _ = pts
+        pole = Point._from_exact(tuple(sympy.expand(e) for e in Matrix(C.polar(a).coords).cross(
+            Matrix(C.polar(b).coords))))
+        quads.append([*pts, pole])
+    return homography_from_points(quads[0], quads[1])

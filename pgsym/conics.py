@@ -23,10 +23,9 @@ True
 from __future__ import annotations
 
 import itertools
-from typing import Any
 
 import sympy
-from sympy import Expr, I, Integer, Matrix
+from sympy import Expr, I, Matrix
 
 from .errors import (
     CoincidentPointsError,
@@ -35,13 +34,14 @@ from .errors import (
     DegenerateConicError,
     DimensionError,
     NotOnConicError,
+    ObjectTypeError,
     UndecidableError,
 )
 from .exact import all_zero, latex
 from .homogeneous import Scalar, _format_entry, is_zero, require, to_exact
 from .matrices import adjugate
 from .projective_plane import Line, Point, collinear, cross
-from .symmetric_form import SymmetricForm
+from .symmetric_form import SymmetricForm, roots_on_line
 
 __all__ = [
     "Conic",
@@ -63,21 +63,6 @@ def _two_points_on(line: Line) -> tuple[Point, Point]:
     p = candidates[0]
     q = next(c for c in candidates[1:] if not c == p)
     return p, q
-
-
-def _conjugate_normalised(u: list[Expr], v: list[Expr], disc: Expr) -> tuple[Expr, ...]:
-    """The point with coordinates ``u_i + v_i √disc`` (rational u, v, disc not a rational square),
-    scaled so that its last nonzero coordinate is 1.
-
-    Dividing by ``u_k + v_k √disc`` is done by multiplying with the conjugate: the
-    denominator ``u_k² - v_k² disc`` is a nonzero rational because √disc is irrational.
-    """
-    root = sympy.sqrt(disc)
-    k = max(i for i in range(3) if u[i] != 0 or v[i] != 0)
-    norm = u[k] ** 2 - v[k] ** 2 * disc
-    return tuple(
-        sympy.expand((u[i] * u[k] - v[i] * v[k] * disc + (v[i] * u[k] - u[i] * v[k]) * root) / norm) for i in range(3)
-    )
 
 
 def _exact_sqrt(value: Expr) -> Expr:
@@ -145,56 +130,6 @@ class Conic(SymmetricForm, kind="conic"):
         require(m, Line, "Conic.from_lines")
         u, v = l.coords, m.coords
         return cls._from_exact(Matrix(3, 3, lambda i, j: sympy.expand(u[i] * v[j] + v[i] * u[j])))
-
-    @classmethod
-    def ellipse(cls, center: Any, a: Scalar, b: Scalar, direction: tuple[Scalar, Scalar] = (1, 0)) -> Conic:
-        """The ellipse with centre, semi-axes a, b and the a-axis along ``direction = (cos θ, sin θ)``.
-
-        See :func:`pgsym.conic_metric.ellipse`.
-
-        >>> Conic.ellipse((0, 0), 2, 1)
-        Conic.from_coefficients(1, 0, 4, 0, 0, -4)
-        """
-        from .conic_metric import ellipse
-
-        return ellipse(center, a, b, direction)
-
-    @classmethod
-    def hyperbola(cls, center: Any, a: Scalar, b: Scalar, direction: tuple[Scalar, Scalar] = (1, 0)) -> Conic:
-        """The hyperbola ``x²/a² − y²/b² = 1`` in the frame at ``center`` along ``direction``.
-
-        See :func:`pgsym.conic_metric.hyperbola`.
-
-        >>> Conic.hyperbola((0, 0), 2, 1)
-        Conic.from_coefficients(1, 0, -4, 0, 0, -4)
-        """
-        from .conic_metric import hyperbola
-
-        return hyperbola(center, a, b, direction)
-
-    @classmethod
-    def parabola(cls, vertex: Any, p: Scalar, direction: tuple[Scalar, Scalar] = (1, 0)) -> Conic:
-        """The parabola ``y² = 4px`` in the frame at ``vertex`` along ``direction`` (focus at distance p).
-
-        See :func:`pgsym.conic_metric.parabola`.
-
-        >>> Conic.parabola((0, 0), 1)
-        Conic.from_coefficients(0, 0, 1, -4, 0, 0)
-        """
-        from .conic_metric import parabola
-
-        return parabola(vertex, p, direction)
-
-    @classmethod
-    def from_foci(cls, f1: Point, f2: Point, a: Scalar) -> Conic:
-        """The ellipse or hyperbola ``|PF₁| ± |PF₂| = 2a``. See :func:`pgsym.conic_metric.conic_from_foci`.
-
-        >>> Conic.from_foci(Point(-3, 0), Point(3, 0), 5)
-        Conic.from_coefficients(16, 0, 25, 0, 0, -400)
-        """
-        from .conic_metric import conic_from_foci
-
-        return conic_from_foci(f1, f2, a)
 
     @property
     def coefficients(self) -> tuple[Expr, Expr, Expr, Expr, Expr, Expr]:
@@ -408,43 +343,28 @@ class Conic(SymmetricForm, kind="conic"):
         """
         return is_zero(self.discriminant(line))
 
-    def intersections(self, line: Line | Conic) -> tuple[Point, ...]:
+    def intersections(self, line: Line) -> tuple[Point, ...]:
         """The two points (exact, possibly irrational or complex) where a line meets the conic.
 
         A tangent line gives the same point twice. Raises :class:`DegenerateConicError`
-        when the line is contained in a degenerate conic (every point is common). Given a
-        conic instead of a line, the four common points with multiplicity
-        (:func:`pgsym.conic_pencil.intersect_conics`).
+        when the line is contained in a degenerate conic (every point is common). Two conics
+        meet through their pencil: :func:`pgsym.conic_pencil.intersect_conics` (a module above this one).
 
         >>> C = Conic.circle(0, 0, 1)
         >>> sorted(p.dehomogenize() for p in C.intersections(Line(0, 1, 0)))
         [(-1, 0), (1, 0)]
-        >>> [p.dehomogenize() for p in C.intersections(Conic.from_coefficients(1, 0, 0, 0, 0, -1))]  # x² = 1
-        [(1, 0), (-1, 0), (1, 0), (-1, 0)]
         """
         if isinstance(line, Conic):
-            from .conic_pencil import intersect_conics
-
-            return intersect_conics(self, line)
+            raise ObjectTypeError("Conic.intersections takes a Line; two conics meet through their pencil: "
+                                  "use pgsym.intersect_conics(C, D) (pgsym.conic_pencil)")
         require(line, Line, "Conic.intersections")
         p, q = _two_points_on(line)
         a, b, c = self.restricted_form(line)
         if is_zero(a) and is_zero(b) and is_zero(c):
             raise DegenerateConicError(f"the line {line!r} lies entirely on the degenerate conic {self!r}")
-        if is_zero(a):
-            pairs = [(Integer(1), Integer(0)), (c, -2 * b)]
-            coords = [[sympy.expand(s * pi + t * qi) for pi, qi in zip(p, q, strict=True)] for s, t in pairs]
-            return Point._from_exact(tuple(coords[0])), Point._from_exact(tuple(coords[1]))
-        # the points (-B ± √disc) p + A q, i.e. coordinates u_i ± v_i √disc
-        disc = sympy.expand(b**2 - a * c)
-        u = [sympy.expand(-b * pi + a * qi) for pi, qi in zip(p, q, strict=True)]
-        v = list(p.coords)
-        root = sympy.sqrt(disc)
-        if not root.is_Rational and all(e.is_Rational for e in (*u, *v, disc)):
-            both = [_conjugate_normalised(u, [sign * vi for vi in v], disc) for sign in (1, -1)]
-        else:
-            both = [tuple(sympy.expand(ui + sign * root * vi) for ui, vi in zip(u, v, strict=True)) for sign in (1, -1)]
-        return Point._from_exact(both[0]), Point._from_exact(both[1])
+        # the zeros of the binary form a s² + 2b st + c t² on the line, by the kernel quadrics share
+        zeros = [Point._from_exact(z) for z in roots_on_line(a, b, c, p.coords, q.coords)]
+        return (zeros[0], zeros[-1])  # a tangent: its one (double) point twice
 
 
 class DualConic(SymmetricForm, kind="dual_conic"):

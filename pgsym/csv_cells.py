@@ -13,6 +13,7 @@ formulas). Every CSV that pgsym writes should go through :func:`write_csv` or :f
 from __future__ import annotations
 
 import csv
+import io
 import re
 from collections.abc import Iterable
 from typing import TextIO
@@ -46,8 +47,6 @@ def csv_text(rows: Iterable[Iterable[object]]) -> str:
     >>> csv_text([["id", "answer"], ["@SUM(1)", "\\tx"]])
     "id,answer\\n'@SUM(1),'\\tx\\n"
     """
-    import io
-
     buf = io.StringIO()
     write_csv(buf, rows)
     return buf.getvalue()

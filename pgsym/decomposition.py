@@ -36,6 +36,7 @@ from sympy import ImmutableMatrix, Matrix
 
 from .errors import DecompositionError, SingularTransformationError, UndecidableError
 from .exact import is_zero, sign
+from .matrices import exact_matrix
 from .transformations import Transformation
 
 __all__ = ["AffineDecomposition", "Decomposition", "affine_decomposition", "decompose"]
@@ -201,8 +202,6 @@ def _linear_part(H: Any) -> tuple[Matrix, Matrix]:
     if isinstance(H, Transformation):
         M = Matrix(H.matrix)
     else:
-        from .matrices import exact_matrix
-
         M = Matrix(exact_matrix(H, square=True, what="an affine map or its 2×2 linear part"))
     if M.shape == (2, 2):
         if is_zero(sympy.expand(M.det())):

@@ -130,7 +130,10 @@ class LineOnQuadricError(DegenerateConfigurationError):
 
 
 class NotASphereError(DegenerateConfigurationError):
-    """A quadric asked for a sphere's centre or radius is no real sphere (not of the form ``|X − c|² = r²``, ``r² > 0``)."""
+    """A quadric asked for a sphere's centre or radius is no real sphere.
+
+    A real sphere has the form ``|X − c|² = r²`` with ``r² > 0``.
+    """
 
 
 class NotSkewSymmetricError(InvalidCoordinatesError):

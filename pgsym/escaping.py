@@ -61,10 +61,9 @@ _MATH_CHARS = re.compile(r"[A-Za-z0-9 \t\n+\-*/=<>()\[\]|,.;:!'^_{}&\\]*")
 _CONTROL = re.compile(r"\\([A-Za-z]+|.)", re.S)
 _ENV = re.compile(r"\\(?:begin|end)\s*\{([A-Za-z*]*)\}")
 
-# bidirectional embeddings, overrides and isolates reorder what a reader sees: never pass them on
-_BIDI = frozenset("\u202a\u202b\u202c\u202d\u202e\u2066\u2067\u2068\u2069")
 REPLACEMENT = "\ufffd"
-# C0 controls but tab and newline, DEL and C1, the bidi controls above, surrogates, U+FFFE and U+FFFF
+# C0 controls but tab and newline, DEL and C1, the bidirectional embeddings, overrides and isolates (they
+# reorder what a reader sees: never pass them on), surrogates, U+FFFE and U+FFFF
 _UNSAFE = re.compile("[\x00-\x08\x0b-\x1f\x7f-\x9f\u202a-\u202e\u2066-\u2069\ud800-\udfff\ufffe\uffff]")
 
 

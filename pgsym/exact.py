@@ -63,7 +63,9 @@ from fractions import Fraction
 from functools import lru_cache
 from typing import Any
 
+import mpmath
 import sympy
+from mpmath import iv
 from sympy import Add, Basic, Expr, Integer, Mul, Rational
 from sympy.printing.latex import LatexPrinter
 from sympy.printing.str import StrPrinter
@@ -351,8 +353,6 @@ def _excludes_zero(x: Any) -> bool:
 
 def _interval(c: Expr, prec: int) -> tuple[Any, Any] | None:
     """Boxes (real part, imaginary part) that certainly contain ``c``, or None where not supported."""
-    from mpmath import iv
-
     old = iv.prec
     iv.prec = prec
     try:
@@ -551,8 +551,6 @@ def _match(c: Expr, candidates: list[Expr]) -> Expr:
     """The one candidate equal to ``c``: the conjugates are distinct roots of one irreducible polynomial,
     so the candidate nearest to a rigorous box around ``c`` is ``c`` once the box is far smaller than
     their separation."""
-    import mpmath
-
     with mpmath.workdps(60):
         values = [mpmath.mpc(*(mpmath.mpf(str(part)) for part in cand.evalf(60).as_real_imag()))
                   for cand in candidates]

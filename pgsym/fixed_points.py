@@ -31,6 +31,9 @@ from sympy import Expr, Matrix
 
 from .errors import DimensionError, UndecidableError
 from .linalg import nullspace_exact
+from .projective_line import Point1
+from .projective_plane import Line, Point
+from .space import Plane, Point3
 from .transformations import Transformation
 
 __all__ = ["FixedSpace", "fixed_lines", "fixed_planes", "fixed_points"]
@@ -189,7 +192,6 @@ def fixed_lines(H: Any) -> tuple[FixedSpace, ...]:
     T = _transformation(H)
     if T.dim != 2:
         raise DimensionError(f"fixed_lines is for transformations of P²; for P³ use fixed_planes (got P^{T.dim})")
-    from .projective_plane import Line
 
     return _spaces(T, True, "line", Line)
 
@@ -203,20 +205,14 @@ def fixed_planes(H: Any) -> tuple[FixedSpace, ...]:
     T = _transformation(H)
     if T.dim != 3:
         raise DimensionError(f"fixed_planes is for transformations of P³; for P² use fixed_lines (got P^{T.dim})")
-    from .space import Plane
 
     return _spaces(T, True, "plane", Plane)
 
 
 def _point_class(dim: int) -> type:
     if dim == 1:
-        from .projective_line import Point1
-
         return Point1
     if dim == 2:
-        from .projective_plane import Point
-
         return Point
-    from .space import Point3
 
     return Point3

@@ -38,6 +38,7 @@ When the two bounds agree, the DoF is proved.
 
 from __future__ import annotations
 
+import math
 import random
 import sys
 from collections.abc import Callable, Sequence
@@ -49,10 +50,16 @@ from typing import Any
 import sympy
 from sympy import ImmutableMatrix, Rational
 
-from .errors import DimensionError, ObjectTypeError
+from .errors import (
+    DegenerateConfigurationError,
+    DimensionError,
+    InvalidCoordinatesError,
+    NonFiniteError,
+    ObjectTypeError,
+)
 from .exact import sign
 from .homogeneous import is_zero, to_exact
-from .transformations import Transformation, as_exact_matrix
+from .transformations import Transformation
 
 __all__ = [
     "AFFINE_2D",
@@ -100,10 +107,6 @@ def rotation_2d(t: Any) -> list[list[Any]]:
 
 
 def _rotation_2d_float(t: float) -> list[list[float]]:
-    import math
-
-    from .errors import NonFiniteError
-
     if not math.isfinite(t):
         raise NonFiniteError(f"rotation_2d: the Cayley parameter must be finite, got {t}; the half turn is t → ∞")
     if abs(t) <= 1:
@@ -126,8 +129,6 @@ def cayley_parameter(c: Any, s: Any) -> Any:
     >>> cayley_parameter(Rational(3, 5), Rational(4, 5))
     1/2
     """
-    from .errors import DegenerateConfigurationError, InvalidCoordinatesError
-
     c, s = to_exact(c), to_exact(s)
     if not is_zero(c * c + s * s - 1):
         raise InvalidCoordinatesError(f"(c, s) = ({c}, {s}) is no rotation: c² + s² = {c * c + s * s}, not 1")
@@ -141,11 +142,18 @@ def cayley_parameter(c: Any, s: Any) -> Any:
 def rotation_3d(a: Any, b: Any, c: Any) -> list[list[Any]]:
     """The 3×3 rotation of the quaternion ``(1, a, b, c)``: the Cayley transform of ``[(a, b, c)]×``.
 
-    Its axis is ``(a, b, c)`` and its angle ``2 arctan |(a, b, c)|``; every entry is rational.
+    Its axis is ``(a, b, c)`` and its angle ``2 arctan |(a, b, c)|``; every entry is rational. For float
+    arguments the result is finite and right to rounding for every finite ``(a, b, c)`` (the quaternion is
+    scaled by its largest entry first, so no square overflows); a NaN or infinite one raises
+    :class:`~pgsym.errors.NonFiniteError`, as :func:`rotation_2d` does.
 
     >>> rotation_3d(0, 0, 1)             # a quarter turn about the z-axis
     [[0, -1, 0], [1, 0, 0], [0, 0, 1]]
+    >>> rotation_3d(0.0, 0.0, 1e200)[0]  # nearly the half turn about z
+    [-1.0, -2e-200, 0.0]
     """
+    if any(isinstance(x, float) or type(x).__module__ == "numpy" for x in (a, b, c)):
+        return _rotation_3d_float(a, b, c)
     n = 1 + a * a + b * b + c * c
     rows = [
         [1 + a * a - b * b - c * c, 2 * (a * b - c), 2 * (a * c + b)],
@@ -154,6 +162,24 @@ def rotation_3d(a: Any, b: Any, c: Any) -> list[list[Any]]:
     ]
     if isinstance(n, int):
         n = Rational(n)
+    return [[e / n for e in row] for row in rows]
+
+
+def _rotation_3d_float(a: Any, b: Any, c: Any) -> list[list[float]]:
+    a, b, c = float(a), float(b), float(c)
+    bad = [(name, x) for name, x in zip("abc", (a, b, c), strict=True) if not math.isfinite(x)]
+    if bad:
+        name, x = bad[0]
+        raise NonFiniteError(f"rotation_3d: the quaternion's entries must be finite, got {name} = {x}; "
+                             "a half turn is the limit of (a, b, c) → ∞ along its axis")
+    m = max(1.0, abs(a), abs(b), abs(c))
+    w, a, b, c = 1 / m, a / m, b / m, c / m  # the same rotation: a quaternion is defined up to scale
+    n = w * w + a * a + b * b + c * c
+    rows = [
+        [w * w + a * a - b * b - c * c, 2 * (a * b - w * c), 2 * (a * c + w * b)],
+        [2 * (a * b + w * c), w * w - a * a + b * b - c * c, 2 * (b * c - w * a)],
+        [2 * (a * c - w * b), 2 * (b * c + w * a), w * w - a * a - b * b + c * c],
+    ]
     return [[e / n for e in row] for row in rows]
 
 
@@ -587,11 +613,8 @@ def _classify_numeric(H: Any, tol: float | None) -> TransformationClass:
 
     NumPy is loaded here, on the first float input, not with this module.
     """
-    from .numeric.classify import classify_matrix
+    from .numeric.classify import classify_matrix  # noqa: PLC0415 — core → numeric by design: classify hands floats to the numeric classifier
 
     return class_by_key(classify_matrix(H.matrix if isinstance(H, Transformation) else H, tol))
 
 
-def as_matrix(H: Any) -> ImmutableMatrix:
-    """The exact matrix of a Transformation or nested sequence (alias of ``as_exact_matrix``)."""
-    return as_exact_matrix(H)

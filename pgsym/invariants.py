@@ -24,23 +24,24 @@ True
 
 from __future__ import annotations
 
+import warnings
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 from functools import cache
 from typing import Any
 
 import sympy
-from sympy import ZZ, Rational
+from sympy import ZZ
 from sympy.polys.rings import PolyElement, ring
 
 from .errors import DegenerateConfigurationError, IdealPointError, ObjectTypeError, UndefinedCrossRatioError
 from .exact import is_zero, primitive_part
 from .hierarchy import CLASSES_2D, CLASSES_3D, TransformationClass, class_by_key, classify
-from .ring import Quotient, adjugate, cross, det, dot, matmul, matvec, transpose
+from .ring import Quotient, adjugate, cross, det, dot, matmul, matvec, squared_distance_fraction, transpose
 
 __all__ = [
     "INVARIANTS",
-    "Counterexample",
+    "InvarianceCounterexample",
     "Invariant",
     "Proof",
     "invariant",
@@ -78,8 +79,10 @@ def distance_squared(p: Sequence[Any], q: Sequence[Any]) -> Any:
     >>> distance_squared([0, 0, 1], [6, 8, 2])
     25
     """
-    a, b = _euclid(_ex(p)), _euclid(_ex(q))
-    return sum(((x - y) * (x - y) for x, y in zip(a, b, strict=True)), 0)
+    p, q = _ex(p), _ex(q)
+    _finite_w(p), _finite_w(q)
+    n, d = squared_distance_fraction(p, q)
+    return n / d
 
 
 def signed_area(p: Sequence[Any], q: Sequence[Any], r: Sequence[Any]) -> Any:
@@ -367,8 +370,11 @@ class Proof:
 
 
 @dataclass(frozen=True)
-class Counterexample:
-    """A member ``matrix`` of the next larger class and a configuration on which the quantity changes."""
+class InvarianceCounterexample:
+    """A member ``matrix`` of the next larger class and a configuration on which the quantity changes.
+
+    (Called ``Counterexample`` before; that name is the proofs' :class:`pgsym.proofs.verdicts.Counterexample`.)
+    """
 
     key: str
     transformation_class: str
@@ -426,13 +432,13 @@ class Invariant:
         """Prove the invariance exactly for the generic element (every component) of the class."""
         return _prove(self.key)
 
-    def counterexample(self) -> Counterexample | None:
+    def counterexample(self) -> InvarianceCounterexample | None:
         """The explicit member of the next larger class that changes the quantity (None at the top)."""
         if self.counter is None:
             return None
         H, values = self.counter
         before, after = self.evaluate(H, values)
-        return Counterexample(self.key, classify(H).name, sympy.ImmutableMatrix(H), before, after)
+        return InvarianceCounterexample(self.key, classify(H).name, sympy.ImmutableMatrix(H), before, after)
 
 
 def _symbol_factory() -> tuple[New, list[sympy.Symbol]]:
@@ -614,5 +620,10 @@ def summary_markdown(dim: int = 2) -> str:
     return "\n".join(lines)
 
 
-def _rational(x: Any) -> Rational:  # pragma: no cover - helper for interactive use
-    return Rational(x)
+def __getattr__(name: str) -> Any:
+    """``Counterexample``, the old name of :class:`InvarianceCounterexample`, with a DeprecationWarning."""
+    if name == "Counterexample":
+        warnings.warn("pgsym.invariants.Counterexample is now InvarianceCounterexample (the proofs' verdicts have "
+                      "their own Counterexample)", DeprecationWarning, stacklevel=2)
+        return InvarianceCounterexample
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")

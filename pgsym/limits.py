@@ -17,6 +17,7 @@ pgsym.errors.InputLimitError: the roster is larger than 10 bytes (the limit); sp
 from __future__ import annotations
 
 import os
+import stat
 from pathlib import Path
 from typing import BinaryIO
 
@@ -127,6 +128,4 @@ def read_text_file(path: str | os.PathLike[str], what: str, limit: int = MAX_FIL
 
 
 def _is_regular(fd: int) -> bool:
-    import stat
-
     return stat.S_ISREG(os.fstat(fd).st_mode)

@@ -27,6 +27,7 @@ names, loaded on first use so that this module does not import NumPy:
 
 from __future__ import annotations
 
+import importlib
 import numbers
 import sys
 from typing import Any
@@ -45,6 +46,7 @@ from .errors import (
 from .exact import canonical_coords
 from .homogeneous import is_zero
 from .matrices import exact_matrix, is_zero_entry
+from .space import Plane, Point3
 
 __all__ = [
     "ZeroCoordinateError",
@@ -113,8 +115,6 @@ def solve_by_fixing_coordinate(M: Any, index: int = 3) -> tuple[Expr, ...]:
     >>> solve_by_fixing_coordinate([[1, 1, 1, -1], [1, -1, 0, 0], [0, 0, 1, 0]], index=0)
     (1, 1, 0, 2)
     """
-    from .space import Plane, Point3
-
     matrix = _exact_matrix(M)
     rows, cols = matrix.shape
     if rows != cols - 1:
@@ -174,8 +174,6 @@ def __getattr__(name: str) -> Any:
     then, not with this module, so the exact functions run where NumPy is absent.
     """
     if name in _NUMERIC:
-        import importlib
-
         value = getattr(importlib.import_module(f".numeric.{_NUMERIC[name]}", __package__), name)
         globals()[name] = value
         return value

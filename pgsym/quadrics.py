@@ -26,6 +26,7 @@ import sympy
 from sympy import Expr
 
 from .errors import (
+    CoincidentPointsError,
     DegenerateConicError,
     DimensionError,
     IdealPointError,
@@ -368,8 +369,6 @@ class Quadric(SymmetricForm, kind="quadric"):
             require(other, Point3, "Quadric.intersections")
             p, q = line, other
             if p == q:
-                from .errors import CoincidentPointsError
-
                 raise CoincidentPointsError(f"the two points {p!r} and {q!r} coincide: they span no line")
         return p.coords, q.coords
 

@@ -34,6 +34,7 @@ __all__ = [
     "plane_through",
     "primitive_integer_matrix",
     "primitive_integers",
+    "squared_distance_fraction",
     "transpose",
     "wedge",
 ]
@@ -161,6 +162,19 @@ def wedge(a: Sequence[Any], b: Sequence[Any]) -> Matrix:
     (0, 1, 0, 0)
     """
     return tuple(tuple(a[i] * b[j] - b[i] * a[j] for j in range(4)) for i in range(4))
+
+
+def squared_distance_fraction(p: Sequence[Any], q: Sequence[Any]) -> tuple[Any, Any]:
+    """The squared distance of two finite points given homogeneously (last coordinate w), as the pair
+    ``(Σ (p_i w_q − q_i w_p)², (w_p w_q)²)`` of numerator and denominator: no division, right for any
+    representatives and any ring, in the plane and in space.
+
+    >>> squared_distance_fraction((0, 0, 1), (6, 8, 2))         # (6/2)² + (8/2)² = 25 = 100 / 4
+    (100, 4)
+    """
+    wp, wq = p[-1], q[-1]
+    diffs = [pi * wq - qi * wp for pi, qi in zip(p[:-1], q[:-1], strict=True)]
+    return _sum([d * d for d in diffs]), wp * wp * wq * wq
 
 
 def minors(m: Sequence[Sequence[Any]], k: int) -> list[tuple[tuple[int, ...], tuple[int, ...], Any]]:

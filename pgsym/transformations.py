@@ -47,7 +47,6 @@ __all__ = [
     "adjugate",
     "as_exact_matrix",
     "homography_from_points",
-    "homography_from_points_and_conics",
 ]
 
 MAX_POWER = 4096
@@ -234,23 +233,6 @@ class Transformation(Kind, kind="transformation"):
                 base = Matrix(expanded(base * base))
         return type(self)(result)
 
-    def fixed_points(self) -> tuple[Any, ...]:
-        """The fixed points, one eigenspace per eigenvalue (:func:`pgsym.fixed_points.fixed_points`).
-
-        >>> G = Transformation([[1, 0, 2], [0, -1, 0], [0, 0, 1]])     # glide reflection: no finite fixed point
-        >>> [(f.eigenvalue, f.basis) for f in G.fixed_points()]
-        [(-1, (Point(0, 1, 0),)), (1, (Point(1, 0, 0),))]
-        """
-        from .fixed_points import fixed_points
-
-        return fixed_points(self)
-
-    def fixed_hyperplanes(self) -> tuple[Any, ...]:
-        """The fixed lines (P²) or planes (P³): :func:`~pgsym.fixed_points.fixed_lines` / ``fixed_planes``."""
-        from .fixed_points import fixed_lines, fixed_planes
-
-        return fixed_lines(self) if self.dim == 2 else fixed_planes(self)
-
     def __matmul__(self, other: Any) -> Any:
         if isinstance(other, Transformation):
             return self.compose(other)
@@ -372,49 +354,3 @@ def homography_from_points(src: list[Point], dst: list[Point]) -> Transformation
             raise DimensionError(f"a homography of P² is fixed by exactly four Point correspondences, got {pts!r}")
     A, B = _basis_map(list(src), "source"), _basis_map(list(dst), "destination")
     return Transformation(expanded(B * adjugate(A)))
-
-
-def homography_from_points_and_conics(src: list[Point], dst: list[Point], conic: Any, image: Any) -> Transformation:
-    """The homography that maps the conic ``conic`` onto ``image`` and three of its points ``src`` to ``dst``.
-
-    The points must lie on their (non-degenerate) conics. **There is exactly one solution**: a
-    homography that maps C to C' maps the tangents at ``a``, ``b`` to the tangents at ``a'``, ``b'``,
-    so it maps their meet ``P = (C a) × (C b)``, the pole of the chord ``ab``, to ``P'``. The four points
-    ``a, b, c, P`` are in general position (``P`` lies on neither the chord nor, since ``c ≠ a, b``, the
-    lines ``ac``, ``bc``; three points of a conic are never collinear), so the four pairs fix one
-    homography (:func:`homography_from_points`); it maps C onto C', because C is the only conic
-    through ``a, b, c`` that touches the lines ``Pa`` and ``Pb`` at ``a`` and ``b``.
-
-    Named errors: :class:`~pgsym.errors.NotOnConicError` for a point off its conic,
-    :class:`~pgsym.errors.DegenerateConicError` for a degenerate conic,
-    :class:`~pgsym.errors.CoincidentPointsError` for repeated points.
-
-    >>> from pgsym.conics import Conic
-    >>> C = Conic.circle(0, 0, 1)
-    >>> H = homography_from_points_and_conics([Point(1, 0), Point(0, 1), Point(-1, 0)],
-    ...                                       [Point(0, 1), Point(-1, 0), Point(0, -1)], C, C)
-    >>> H == Transformation([[0, -1, 0], [1, 0, 0], [0, 0, 1]])          # the quarter turn
-    True
-    """
-    from .conics import Conic
-    from .errors import CoincidentPointsError, DegenerateConicError, NotOnConicError
-
-    quads = []
-    for pts, C, side in ((src, conic, "source"), (dst, image, "image")):
-        if not isinstance(C, Conic):
-            raise ObjectTypeError(f"the {side} conic must be a Conic, got {type(C).__name__} {C!r}")
-        if not isinstance(pts, (list, tuple)) or len(pts) != 3 or not all(isinstance(p, Point) for p in pts):
-            raise DimensionError(f"three Points on the {side} conic are needed, got {pts!r}")
-        if C.is_degenerate:
-            raise DegenerateConicError(f"the {side} conic {C!r} is degenerate: it has no tangents at every point")
-        for i, p in enumerate(pts):
-            if not C.contains(p):
-                raise NotOnConicError(f"{side} point {i + 1}, {p!r}, does not lie on the {side} conic {C!r}")
-        for (i, p), (j, q) in combinations(enumerate(pts), 2):
-            if p == q:
-                raise CoincidentPointsError(f"{side} points {i + 1} and {j + 1} coincide ({p!r})")
-        a, b, _ = pts
-        pole = Point._from_exact(tuple(sympy.expand(e) for e in Matrix(C.polar(a).coords).cross(
-            Matrix(C.polar(b).coords))))
-        quads.append([*pts, pole])
-    return homography_from_points(quads[0], quads[1])

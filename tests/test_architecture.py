@@ -115,6 +115,177 @@ def test_layer_rules_catch_an_upward_import(tmp_path: Path) -> None:
     assert ("core", "exercises") not in LAZY_ALLOWED
 
 
+# -- facts about an operation live in its entry of the table ---------------------------------------------
+
+# Modules that still test an operation's name instead of reading its entry, and why (empty it, never add to it).
+OPERATION_NAME_TESTS: dict[str, str] = {}
+
+
+def _operation_name_tests(tree: ast.AST) -> list[int]:
+    """Lines comparing ``x.op`` (or ``op``) with a string or a tuple of strings."""
+    found = []
+    for node in ast.walk(tree):
+        if not isinstance(node, ast.Compare):
+            continue
+        left = node.left
+        named_op = getattr(left, "attr", None) == "op" or getattr(left, "id", None) == "op"
+        if not named_op:
+            continue
+        for c in node.comparators:
+            items = c.elts if isinstance(c, (ast.Tuple, ast.List, ast.Set)) else [c]
+            if items and all(isinstance(e, ast.Constant) and isinstance(e.value, str) for e in items):
+                found.append(node.lineno)
+    return found
+
+
+def test_facts_about_an_operation_are_read_from_the_table() -> None:
+    # ``node.op == "join"`` outside the table is a fact about the operation written elsewhere; give its entry a field
+    wrong = []
+    for path in SOURCES:
+        rel = str(path.relative_to(ROOT.parent))
+        if rel == "pgsym/proofs/operations.py" or rel in OPERATION_NAME_TESTS:
+            continue
+        wrong += [f"{rel}:{n}" for n in _operation_name_tests(ast.parse(path.read_text(encoding="utf-8")))]
+    assert not wrong, f"operation names tested outside pgsym/proofs/operations.py: {wrong}"
+    # the check itself finds both spellings, and the modules listed above still need their entry
+    sample = ast.parse('if node.op == "join" or p.op in ("meet", "polar") or node.kind == "point": pass')
+    assert _operation_name_tests(sample) == [1, 1]
+    for rel in OPERATION_NAME_TESTS:
+        assert _operation_name_tests(ast.parse((ROOT.parent / rel).read_text(encoding="utf-8"))), f"{rel} is done"
+
+
+# -- no cycles ------------------------------------------------------------------------------------------------
+
+# Cycles known and being removed elsewhere, each with its reason; every other cycle fails the test.
+KNOWN_CYCLES: dict[frozenset[str], str] = {
+    frozenset({"pgsym.exercises.template", "pgsym.exercises.templates", "pgsym.exercises.templates.line1",
+               "pgsym.exercises.templates.metric", "pgsym.exercises.templates.plane",
+               "pgsym.exercises.templates.space", "pgsym.exercises.templates.transform"}):
+        "the template registry imports the templates, which import the base class beside it; "
+        "exercises/template.py is being split into the base class and the registry",
+}
+
+
+def import_graph() -> dict[str, set[str]]:
+    """Module → the package's modules it imports (at load or inside a function), from the source."""
+    names = {_module_name(p): p for p in SOURCES}
+
+    def owner(target: str) -> str:
+        # ``from pgsym.conics import Conic`` names a module attribute: walk up to the module
+        while target and target not in names:
+            target = target.rpartition(".")[0]
+        return target
+
+    return {name: {owner(t) for t, _ in _imports(path)} - {name, ""} for name, path in names.items()}
+
+
+def cycles(graph: dict[str, set[str]]) -> list[set[str]]:
+    """The strongly connected components of more than one module (Tarjan's algorithm, iterative)."""
+    index: dict[str, int] = {}
+    low: dict[str, int] = {}
+    stack: list[str] = []
+    on_stack: set[str] = set()
+    found: list[set[str]] = []
+    for root in sorted(graph):
+        if root in index:
+            continue
+        work = [(root, iter(sorted(graph[root])))]
+        index[root] = low[root] = len(index)
+        stack.append(root)
+        on_stack.add(root)
+        while work:
+            v, edges = work[-1]
+            w = next(edges, None)
+            if w is not None:
+                if w not in index:
+                    index[w] = low[w] = len(index)
+                    stack.append(w)
+                    on_stack.add(w)
+                    work.append((w, iter(sorted(graph.get(w, ())))))
+                elif w in on_stack:
+                    low[v] = min(low[v], index[w])
+                continue
+            work.pop()
+            if work:
+                low[work[-1][0]] = min(low[work[-1][0]], low[v])
+            if low[v] == index[v]:
+                component = set()
+                while True:
+                    w = stack.pop()
+                    on_stack.discard(w)
+                    component.add(w)
+                    if w == v:
+                        break
+                if len(component) > 1:
+                    found.append(component)
+    return found
+
+
+def levels(graph: dict[str, set[str]]) -> dict[str, int]:
+    """The level of each module of an acyclic graph: 0 imports nothing of the package, else 1 + the highest below."""
+    level: dict[str, int] = {}
+
+    def of(name: str) -> int:
+        if name not in level:
+            level[name] = 1 + max((of(t) for t in graph.get(name, ())), default=-1)
+        return level[name]
+
+    for name in graph:
+        of(name)
+    return level
+
+
+def test_the_cycle_check_finds_a_cycle_and_only_cycles() -> None:
+    # a → b → c → a is one component of three; d → a hangs below it; e ↔ f is a second one; g alone is none
+    graph = {"a": {"b"}, "b": {"c"}, "c": {"a"}, "d": {"a"}, "e": {"f"}, "f": {"e", "g"}, "g": set()}
+    assert sorted(map(sorted, cycles(graph))) == [["a", "b", "c"], ["e", "f"]]
+    assert cycles({"a": {"b"}, "b": {"c"}, "c": set(), "d": {"a", "c"}}) == []
+    # levels of an acyclic graph: c imports nothing (0), b imports c (1), a imports b (2), d imports a and c (3)
+    assert levels({"a": {"b"}, "b": {"c"}, "c": set(), "d": {"a", "c"}}) == {"a": 2, "b": 1, "c": 0, "d": 3}
+
+
+def test_the_cycle_check_reads_lazy_imports(tmp_path: Path) -> None:
+    # a lazy import inside a function closes a cycle as much as one at the top of the file
+    (tmp_path / "low.py").write_text("def f():\n    from .high import g\n    return g\n")
+    graph = {"pgsym.low": {t for t, _ in _imports(tmp_path / "low.py", "pgsym.low")}, "pgsym.high": {"pgsym.low"}}
+    assert graph["pgsym.low"] == {"pgsym.high"}
+    assert cycles(graph) == [{"pgsym.high", "pgsym.low"}]
+
+
+def test_the_package_has_no_import_cycle() -> None:
+    found = [c for c in cycles(import_graph()) if frozenset(c) not in KNOWN_CYCLES]
+    assert not found, f"modules that import each other (imports inside functions included): {found}"
+
+
+# the layers whose levels ARCHITECTURE.md lists (the exercises follow once their template registry is split)
+LEVEL_LAYERS = ("base", "core", "numeric", "vision", "proofs", "cli")
+
+
+def level_section() -> str:
+    """The "Module levels" section of ARCHITECTURE.md as the import graph gives it (``python
+    tests/test_architecture.py`` prints it): per layer, the modules of each level."""
+    graph = import_graph()
+    shown = {m: {t for t in ts if layer(t) in LEVEL_LAYERS} for m, ts in graph.items() if layer(m) in LEVEL_LAYERS}
+    level = levels(shown)
+    lines = ["| layer | level | modules |", "|---|---|---|"]
+    for lay in LEVEL_LAYERS:
+        by_level: dict[int, list[str]] = {}
+        for m, n in level.items():
+            if layer(m) == lay:
+                by_level.setdefault(n, []).append(m.removeprefix("pgsym."))
+        for n in sorted(by_level):
+            lines.append(f"| {lay} | {n} | {', '.join(f'`{m}`' for m in sorted(by_level[n]))} |")
+    return "\n".join(lines)
+
+
+def test_architecture_md_shows_the_levels_the_graph_gives() -> None:
+    text = (ROOT.parent / "ARCHITECTURE.md").read_text(encoding="utf-8")
+    start = text.index("<!-- levels: generated by tests/test_architecture.py -->")
+    end = text.index("<!-- end of levels -->")
+    shown = text[start:end].split("\n", 1)[1].strip()
+    assert shown == level_section(), "ARCHITECTURE.md's module levels are stale: python tests/test_architecture.py"
+
+
 @pytest.mark.parametrize("package", ["numeric", "vision"])
 def test_numeric_and_vision_modules_load_without_sympy(package: str) -> None:
     modules = sorted(_module_name(p) for p in (ROOT / package).rglob("*.py"))
@@ -166,7 +337,7 @@ def test_no_helper_of_the_exact_kit_is_written_twice() -> None:
 # its number types (a fraction of polynomials is ``ring.Quotient``, written once).
 RING_LIKE = {
     ("pgsym/hierarchy.py", "_Dual"): "dual numbers a + bε: a Jacobian column by forward differentiation",
-    ("pgsym/proofs/engine.py", "_Cost"): "an estimate of the work of an expansion, not a number",
+    ("pgsym/proofs/budget.py", "Cost"): "an estimate of the work of an expansion, not a number",
 }
 
 
@@ -182,3 +353,7 @@ def test_ring_arithmetic_classes_are_written_once() -> None:
                 if {"__add__", "__mul__"} <= methods:
                     found.add((rel, node.name))
     assert found == set(RING_LIKE), f"ring arithmetic outside pgsym.ring: {sorted(found - set(RING_LIKE))}"
+
+
+if __name__ == "__main__":
+    print(level_section())

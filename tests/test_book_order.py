@@ -82,7 +82,8 @@ def label_pages() -> dict[str, str]:
 def references_outside_forward_sections(text: str) -> list[tuple[str, str]]:
     """The (role, target) references of a Markdown text that are not inside a "What comes next" section.
 
-    >>> references_outside_forward_sections("See {doc}`a`.\\n## What comes next\\n{doc}`b`\\n## Exercises\\n{ref}`c <x>`")
+    >>> text = "See {doc}`a`.\\n## What comes next\\n{doc}`b`\\n## Exercises\\n{ref}`c <x>`"
+    >>> references_outside_forward_sections(text)
     [('doc', 'a'), ('ref', 'x')]
     """
     found: list[tuple[str, str]] = []

@@ -150,17 +150,17 @@ def test_circle_and_degenerate_cases():
 def test_constructors_by_hand():
     # 4(x − 1)² + 9(y − 2)² = 36: 4x² + 9y² − 8x − 36y + 4 = 0
     assert ellipse((1, 2), 3, 2) == Conic.from_coefficients(4, 0, 9, -8, -36, 4)
-    assert Conic.ellipse(Point(1, 2), 3, 2) == ellipse((1, 2), 3, 2)
+    assert ellipse(Point(1, 2), 3, 2) == ellipse((1, 2), 3, 2)  # the centre as a Point or a pair
     # rotated by 90°: the a-axis vertical, x²/b² + y²/a² = 1 → 9x² + 4y² = 36
     assert ellipse((0, 0), 3, 2, direction=(0, 1)) == Conic.from_coefficients(9, 0, 4, 0, 0, -36)
     # rotated by 45°, a = 2, b = 1: the conic 5x² + 6xy + 5y² = 8 above has its major axis along (1, −1)
     assert ellipse((0, 0), 2, 1, direction=(sqrt(2) / 2, -sqrt(2) / 2)) == Conic.from_coefficients(5, 6, 5, 0, 0, -8)
     # x²/9 − y²/4 = 1 moved to (1, −2): 4(x − 1)² − 9(y + 2)² = 36
-    assert Conic.hyperbola((1, -2), 3, 2) == Conic.from_coefficients(4, 0, -9, -8, -36, -68)
+    assert hyperbola((1, -2), 3, 2) == Conic.from_coefficients(4, 0, -9, -8, -36, -68)
     # y² = 8x moved to (−2, 1): (y − 1)² = 8(x + 2)
-    assert Conic.parabola((-2, 1), 2) == Conic.from_coefficients(0, 0, 1, -8, -2, -15)
+    assert parabola((-2, 1), 2) == Conic.from_coefficients(0, 0, 1, -8, -2, -15)
     # foci (±3, 0), a = 5: b² = 16; a = 2 < 3: the hyperbola x²/4 − y²/5 = 1
-    assert Conic.from_foci(Point(-3, 0), Point(3, 0), 5) == Conic.from_coefficients(16, 0, 25, 0, 0, -400)
+    assert conic_from_foci(Point(-3, 0), Point(3, 0), 5) == Conic.from_coefficients(16, 0, 25, 0, 0, -400)
     assert conic_from_foci(Point(-3, 0), Point(3, 0), 2) == Conic.from_coefficients(5, 0, -4, 0, 0, -20)
     assert conic_from_foci(Point(1, 1), Point(1, 1), 3) == Conic.circle(1, 1, 3)
 

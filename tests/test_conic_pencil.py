@@ -153,9 +153,13 @@ def test_same_conic_common_line_and_irreducible_cubic_raise():
         intersect_conics(C1, Line(1, 0, 0))
 
 
-def test_conic_intersections_accepts_a_conic():
-    assert same_multiset(Conic.circle(0, 0, 5).intersections(Conic.circle(4, 0, 3)),
+def test_two_circles_meet_in_two_points_and_the_circular_points():
+    # x² + y² = 25 minus x² − 8x + 16 + y² = 9 is 8x − 16 = 16: x = 4, y² = 9; I and J lie on every circle
+    assert same_multiset(intersect_conics(Conic.circle(0, 0, 5), Conic.circle(4, 0, 3)),
                          [Point(4, 3), Point(4, -3), Point(1, I, 0), Point(1, -I, 0)])
+    # the conic's own method takes lines only (the pencil is a module above the conic) and says where to go
+    with pytest.raises(ObjectTypeError, match="intersect_conics"):
+        Conic.circle(0, 0, 5).intersections(Conic.circle(4, 0, 3))
 
 
 def _general_position(pts) -> bool:

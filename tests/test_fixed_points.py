@@ -150,7 +150,7 @@ def test_glide_reflection_by_hand():
     # Hᵀ − I = [0, [0, −2, 0], [2, 0, 0]]: the line at infinity (0, 0, 1); Hᵀ + I = [[2, 0, 0], 0, [2, 0, 2]]:
     # the line (0, 1, 0), y = 0 — the glide axis
     G = Transformation([[1, 0, 2], [0, -1, 0], [0, 0, 1]])
-    assert {f.eigenvalue: f.basis for f in G.fixed_points()} == {1: (Point(1, 0, 0),), -1: (Point(0, 1, 0),)}
-    assert {f.eigenvalue: f.basis for f in G.fixed_hyperplanes()} == {1: (Line(0, 0, 1),), -1: (Line(0, 1, 0),)}
+    assert {f.eigenvalue: f.basis for f in fixed_points(G)} == {1: (Point(1, 0, 0),), -1: (Point(0, 1, 0),)}
+    assert {f.eigenvalue: f.basis for f in fixed_lines(G)} == {1: (Line(0, 0, 1),), -1: (Line(0, 1, 0),)}
     mirror = Transformation(sympy.diag(1, 1, -1, 1))
-    assert [f.element for f in mirror.fixed_hyperplanes()] == ["plane", "plane"]
+    assert [f.element for f in fixed_planes(mirror)] == ["plane", "plane"]

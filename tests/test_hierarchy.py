@@ -14,6 +14,7 @@ from pgsym.errors import (
     DegenerateConfigurationError,
     DimensionError,
     InvalidCoordinatesError,
+    NonFiniteError,
     ObjectTypeError,
     SingularTransformationError,
 )
@@ -154,6 +155,20 @@ def test_rigid_motion_preserves_length_and_cross_product():
     # the columns of R are the images of the axes
     for i in range(3):
         assert R * sympy.eye(3)[:, i] == R[:, i]
+
+
+def test_float_rotation_3d_is_finite_or_a_named_error():
+    # (a, b, c) = (0, 0, 1): the quarter turn about z, as for exact input
+    assert rotation_3d(0.0, 0.0, 1.0) == [[0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]]
+    # (0, 0, 1e200) is the quaternion (1e-200, 0, 0, 1) up to scale: R00 = w² − c² = −1, R01 = −2wc = −2e-200
+    R = rotation_3d(0.0, 0.0, 1e200)
+    assert R[0][:2] == [-1.0, -2e-200] and R[2][2] == 1.0
+    # (1/2, 0, 0): n = 5/4, R11 = (1 − 1/4)/n = 3/5, R21 = 2a/n = 4/5
+    R = rotation_3d(0.5, 0.0, 0.0)
+    assert abs(R[1][1] - 0.6) < 1e-15 and abs(R[2][1] - 0.8) < 1e-15
+    for bad in ((0.0, float("inf"), 0.0), (float("nan"), 0.0, 0.0), (0, 0, float("-inf"))):
+        with pytest.raises(NonFiniteError, match="rotation_3d"):
+            rotation_3d(*bad)
 
 
 def test_homogeneous_and_inhomogeneous_forms_agree():

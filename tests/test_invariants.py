@@ -213,3 +213,13 @@ def test_counterexample_values_are_lists(inv):
     # the values are printed in the book as lists, whatever sequence type the kit returns
     ce = inv.counterexample()
     assert type(ce.before) is list and type(ce.after) is list
+
+
+def test_the_old_name_of_the_invariance_counterexample_still_works_with_a_warning():
+    import pgsym.invariants as invariants
+
+    with pytest.warns(DeprecationWarning, match="InvarianceCounterexample"):
+        old = invariants.Counterexample
+    assert old is invariants.InvarianceCounterexample
+    with pytest.raises(AttributeError):
+        invariants.NoSuchName  # noqa: B018

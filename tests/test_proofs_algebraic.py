@@ -16,11 +16,12 @@ from strategies import homogeneous_vectors, integers
 
 from pgsym.errors import ObjectTypeError
 from pgsym.proofs import Claim, prove
-from pgsym.proofs.algebraic import _branches, _cyclotomic_combination, _evaluate, _Tower, roots_of
-from pgsym.proofs.engine import _Deadline
+from pgsym.proofs.algebraic import _branches, _evaluate, _Tower
+from pgsym.proofs.budget import Deadline
 from pgsym.proofs.errors import StatementKindError, StatementSyntaxError
 from pgsym.proofs.language import parse_statement
 from pgsym.proofs.polynomials import available_backends
+from pgsym.proofs.square_roots import _cyclotomic_combination, roots_of
 
 x = sympy.Symbol("x")
 
@@ -406,7 +407,7 @@ def test_the_named_branch_is_the_internal_bisector_for_any_representatives(a, b,
     A, B, C = (c.point(n, *v) for n, v in zip("ABC", (a, b, cc), strict=True))
     c.angle_bisector("b", A, B, C)
     tower = _Tower(c, [])
-    values = _evaluate(c, lambda e: tower.R(e), tower, _Deadline(None))
+    values = _evaluate(c, lambda e: tower.R(e), tower, Deadline(None))
     line = values[c.nodes["b"]]
     for branch in _branches(c, tower, values, {}):
         mine = sympy.Matrix([tower.R.to_expr(v).xreplace(branch.values) if not isinstance(v, int) else v
@@ -429,7 +430,7 @@ def test_a_rotation_by_degrees_agrees_with_sympy_cos_and_sin(x_, o_, k):
     c = Claim("rotation", "x")
     c.rotate_degrees("Y", c.point("X", *x_), c.point("O", *o_), degrees)
     tower = _Tower(c, [])
-    values = _evaluate(c, lambda e: tower.R(e), tower, _Deadline(None))
+    values = _evaluate(c, lambda e: tower.R(e), tower, Deadline(None))
     (branch,) = _branches(c, tower, values, {})
     y = [tower.R.to_expr(v).xreplace(branch.values) if not isinstance(v, int) else sympy.Integer(v)
          for v in values[c.nodes["Y"]]]

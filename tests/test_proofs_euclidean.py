@@ -16,7 +16,8 @@ from strategies import euclidean_arguments, euclidean_programs
 from pgsym.conics import Conic
 from pgsym.projective_plane import Line, Point
 from pgsym.proofs import Claim
-from pgsym.proofs.engine import _Deadline, _exact_pass, _Timeout, _TooLarge, prove
+from pgsym.proofs.budget import Deadline, Timeout, TooLarge
+from pgsym.proofs.engine import _exact_pass, prove
 from pgsym.proofs.errors import StatementKindError, StatementSyntaxError
 from pgsym.proofs.language import parse_statement
 from pgsym.proofs.normalisation import Normalisation, normalise
@@ -306,9 +307,9 @@ def test_a_similarity_frame_would_prove_a_false_unit_distance():
     sym = claim.parameters
     wrong = Normalisation("similarity", ["A", "B"], "point", {sym[0]: 0, sym[1]: 0, sym[2]: 1, sym[3]: 0}, "A ≠ B",
                           frame=[(0, 0, 1), (1, 0, 1)])
-    assert _exact_pass(claim, _Deadline(10), [], None, wrong)[0] == "proved"  # the trap
+    assert _exact_pass(claim, Deadline(10), [], None, wrong)[0] == "proved"  # the trap
     right, _ = normalise(claim)
-    assert right.group == "euclidean" and _exact_pass(claim, _Deadline(10), [], None, right)[0] == "nonzero"
+    assert right.group == "euclidean" and _exact_pass(claim, Deadline(10), [], None, right)[0] == "nonzero"
     assert prove(claim).refuted
 
 
@@ -394,8 +395,8 @@ def _build(program) -> Claim:
 
 def _exact(claim, norm):
     try:
-        return _exact_pass(claim, _Deadline(3), [], None, norm)[0]
-    except (_Timeout, _TooLarge):  # the plain expansion of nested circumcentres is large: no verdict to compare
+        return _exact_pass(claim, Deadline(3), [], None, norm)[0]
+    except (Timeout, TooLarge):  # the plain expansion of nested circumcentres is large: no verdict to compare
         return None
 
 
@@ -480,7 +481,7 @@ def test_ratios_equal_up_to_scale_need_the_same_scaling():
     c.conclude_proportional(c.mul("dd", d, d), d)
     n, _ = normalise(c)
     assert n is not None and n.group == "euclidean"  # isometries scale nothing, so that frame is safe
-    assert _exact_pass(c, _Deadline(10), [], None, n)[0] == "nonzero"
+    assert _exact_pass(c, Deadline(10), [], None, n)[0] == "nonzero"
     assert prove(c).refuted
 
 

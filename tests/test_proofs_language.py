@@ -14,6 +14,7 @@ import sympy
 
 from pgsym import conics, plucker, projective_line, projective_plane, space
 from pgsym.errors import InputLimitError, ObjectTypeError, PgsymError
+from pgsym.escaping import md_escape
 from pgsym.limits import MAX_NESTING, MAX_STATEMENT_NAME_CHARS, MAX_STATEMENT_OBJECTS
 from pgsym.proofs.claims import Claim
 from pgsym.proofs.engine import prove
@@ -268,3 +269,29 @@ def test_claim_api_errors_stay_named():
         c.conclude_conconic(*(c.free_point(n) for n in "ABCDE"))
     with pytest.raises(ObjectTypeError):
         c.line_meets_plane("X", c.free_point("P"), c.free_plane("E"))
+
+
+def test_a_verdict_names_only_the_statement_s_objects_in_every_output():
+    # the conclusion |DG| = |GE| needs two squared distances the prover adds itself; the certificate, the
+    # conditions and the Markdown, LaTeX and plain text must call them |DG|² and |GE|², not by internal names
+    claim = parse_statement("""
+points B A C
+point D = foot C (join B A)
+point E = foot B (join A C)
+point F = midpoint C B
+point G = foot F (join D E)
+prove equallength D G G E
+""", name="feet")
+    v = prove(claim)
+    assert v.proved
+    texts = [v.to_markdown(), v.to_latex(), v.summary(), " ".join(v.certificate.steps)]
+    for text in texts:
+        assert "_dist2" not in text and "#" not in text and "flint" not in text
+    assert v.certificate.steps == ["the numerator of |DG|² − |GE|² expands to 0"]
+    assert "the denominator of |DG|² is not zero" in v.condition_texts()
+    # more than three conditions: one per line, in Markdown as a list and in the terminal as an indented list
+    markdown = v.to_markdown().splitlines()
+    first = markdown.index("*Non-degeneracy conditions:*")
+    assert markdown[first + 1:first + 1 + len(v.condition_texts())] == [
+        f"- {md_escape(t)}" for t in v.condition_texts()]
+    assert "  provided that:" in v.summary().splitlines()

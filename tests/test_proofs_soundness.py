@@ -247,8 +247,8 @@ def test_both_backends_multiply_alike(f_terms, g_terms):
 
 
 def test_an_expansion_beyond_the_term_limit_is_unknown(monkeypatch):
-    from pgsym.proofs import engine
+    from pgsym.proofs import budget
 
-    monkeypatch.setattr(engine, "MAX_TERMS", 3)
+    monkeypatch.setattr(budget, "MAX_TERMS", 3)
     v = prove("pappus")  # its meets have more than three terms per coordinate
     assert v.status == "unknown" and "too large" in v.reason

@@ -436,8 +436,8 @@ CIRCLE_25 = [(5, 0), (0, 5), (-5, 0), (0, -5), (3, 4), (4, 3), (-3, 4), (-4, -3)
 
 
 def test_homography_from_points_and_conics_by_hand():
+    from pgsym.conic_pencil import homography_from_points_and_conics as hpc
     from pgsym.conics import Conic
-    from pgsym.transformations import homography_from_points_and_conics as hpc
 
     # the unit circle to itself, (1, 0), (0, 1), (−1, 0) to (0, 1), (−1, 0), (0, −1): the quarter turn
     C = Conic.circle(0, 0, 1)
@@ -455,8 +455,8 @@ def test_homography_from_points_and_conics_by_hand():
 
 
 def test_homography_from_points_and_conics_with_surds():
+    from pgsym.conic_pencil import homography_from_points_and_conics as hpc
     from pgsym.conics import Conic
-    from pgsym.transformations import homography_from_points_and_conics as hpc
 
     r = sympy.sqrt(2)
     C = Conic.circle(0, 0, r)  # x² + y² = 2 through (1, 1), (−1, 1), (√2, 0)
@@ -469,8 +469,8 @@ def test_homography_from_points_and_conics_with_surds():
 @settings(max_examples=15, deadline=None)
 @given(invertible_matrices(3, 3), st.lists(st.sampled_from(CIRCLE_25), min_size=3, max_size=3, unique=True))
 def test_homography_from_points_and_conics_is_the_unique_one(m, pts):
+    from pgsym.conic_pencil import homography_from_points_and_conics as hpc
     from pgsym.conics import Conic
-    from pgsym.transformations import homography_from_points_and_conics as hpc
 
     G, C = Transformation(m), Conic.circle(0, 0, 5)
     src = [Point(*p) for p in pts]
@@ -478,9 +478,9 @@ def test_homography_from_points_and_conics_is_the_unique_one(m, pts):
 
 
 def test_homography_from_points_and_conics_errors():
+    from pgsym.conic_pencil import homography_from_points_and_conics as hpc
     from pgsym.conics import Conic
     from pgsym.errors import CoincidentPointsError, DegenerateConicError, NotOnConicError
-    from pgsym.transformations import homography_from_points_and_conics as hpc
 
     C = Conic.circle(0, 0, 1)
     on = [Point(1, 0), Point(0, 1), Point(-1, 0)]

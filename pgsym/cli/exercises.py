@@ -131,7 +131,7 @@ _REPLACE_HELP = "Let a template of --templates replace a built-in one of the sam
 
 
 def _load_folders(folders: tuple[str, ...], replace: bool = False) -> None:
-    from ..exercises.registry import load_template_folder
+    from ..exercises.registry import load_template_folder  # noqa: PLC0415 — CLI start-up: loaded by the command that needs it
 
     for folder in folders:
         try:
@@ -195,10 +195,10 @@ def sheet_command(topics: str, count: int, seed: int, roster: str | None, roster
                   template_dirs: tuple[str, ...], replace_templates: bool, mathjax: str | None,
                   progress: bool | None) -> None:
     """Generate per-student exercise sheets, their answer key and key table, in every requested format."""
-    from ..atomic import Terminated, write_new_folder
-    from ..exercises.output import parse_formats, render_all
-    from ..exercises.points import parse_points
-    from ..exercises.sheets import anonymous_students, build_sheets, parse_topics, read_roster
+    from ..atomic import Terminated, write_new_folder  # noqa: PLC0415 — CLI start-up: loaded by the command that needs it
+    from ..exercises.output import parse_formats, render_all  # noqa: PLC0415 — CLI start-up: loaded by the command that needs it
+    from ..exercises.points import parse_points  # noqa: PLC0415 — CLI start-up: loaded by the command that needs it
+    from ..exercises.sheets import anonymous_students, build_sheets, parse_topics, read_roster  # noqa: PLC0415 — CLI start-up: loaded by the command that needs it
 
     if old_solutions:
         click.echo("warning: --solutions is deprecated; use --solutions-in-sheets (the answer key is written "
@@ -260,14 +260,14 @@ def check_command(ctx: click.Context, manifest: str, answers: str, out: str | No
                   feedback_dir: str | None, canvas: str | None, canvas_title: str, canvas_id: int | None,
                   moodle_grades: str | None, details: bool) -> None:
     """Grade the answers of every student against the manifest, naming the common mistakes."""
-    from ..atomic import Terminated, write_new_folder
-    from ..csv_cells import csv_text
-    from ..escaping import clean
-    from ..exercises.grading import grade_rows, read_answer_file, results_csv, score_summary
-    from ..exercises.lms import grade_lms, read_lms_report
-    from ..exercises.points import points_text
-    from ..exercises.roundtrip import Graded, own_variants, people_of_manifest
-    from ..exercises.sheets import load_manifest_data
+    from ..atomic import Terminated, write_new_folder  # noqa: PLC0415 — CLI start-up: loaded by the command that needs it
+    from ..csv_cells import csv_text  # noqa: PLC0415 — CLI start-up: loaded by the command that needs it
+    from ..escaping import clean  # noqa: PLC0415 — CLI start-up: loaded by the command that needs it
+    from ..exercises.grading import grade_rows, read_answer_file, results_csv, score_summary  # noqa: PLC0415 — CLI start-up: loaded by the command that needs it
+    from ..exercises.lms import grade_lms, read_lms_report  # noqa: PLC0415 — CLI start-up: loaded by the command that needs it
+    from ..exercises.points import points_text  # noqa: PLC0415 — CLI start-up: loaded by the command that needs it
+    from ..exercises.roundtrip import Graded, own_variants, people_of_manifest  # noqa: PLC0415 — CLI start-up: loaded by the command that needs it
+    from ..exercises.sheets import load_manifest_data  # noqa: PLC0415 — CLI start-up: loaded by the command that needs it
 
     try:
         data = load_manifest_data(manifest)
@@ -300,21 +300,21 @@ def check_command(ctx: click.Context, manifest: str, answers: str, out: str | No
                    "problem(s) with the answers file (see above); every other answer was graded.", err=True)
     try:
         if report_dir:
-            from ..exercises.report import report_data, write_report
+            from ..exercises.report import report_data, write_report  # noqa: PLC0415 — CLI start-up: loaded by the command that needs it
 
             numbers = report_data(report, graded.names, data.topics, problems)
             title = f"Grade report: {Path(manifest).resolve().parent.name or 'exercises'}"
             write_new_folder(report_dir, lambda tmp: write_report(tmp, numbers, title))
         if feedback_dir:
-            from ..exercises.feedback import write_feedback
+            from ..exercises.feedback import write_feedback  # noqa: PLC0415 — CLI start-up: loaded by the command that needs it
 
             write_new_folder(feedback_dir, lambda tmp: write_feedback(tmp, graded, data, canvas_title))
         if canvas:
-            from ..exercises.canvas import canvas_csv
+            from ..exercises.canvas import canvas_csv  # noqa: PLC0415 — CLI start-up: loaded by the command that needs it
 
             _write_text(Path(canvas), canvas_csv(report, graded.names, canvas_title, canvas_id, graded.people))
         if moodle_grades:
-            from ..exercises.moodle_grades import moodle_grades_csv
+            from ..exercises.moodle_grades import moodle_grades_csv  # noqa: PLC0415 — CLI start-up: loaded by the command that needs it
 
             _write_text(Path(moodle_grades), moodle_grades_csv(report, graded.people, canvas_title))
         if out:
@@ -330,9 +330,9 @@ def check_command(ctx: click.Context, manifest: str, answers: str, out: str | No
 
 def _write_text(path: Path, text: str) -> None:
     """Write ``path`` complete or not at all (:func:`pgsym.atomic.replace_file`), readable as the umask allows."""
-    import os
+    import os  # noqa: PLC0415 — CLI start-up: loaded by the command that needs it
 
-    from ..atomic import replace_file
+    from ..atomic import replace_file  # noqa: PLC0415 — CLI start-up: loaded by the command that needs it
 
     def fill(tmp: Path) -> None:
         tmp.write_text(text, encoding="utf-8", newline="")
@@ -353,7 +353,7 @@ def templates_group() -> None:
 @click.option("--replace-templates", "replace_templates", is_flag=True, help=_REPLACE_HELP)
 def templates_list(template_dirs: tuple[str, ...], replace_templates: bool) -> None:
     """List the known topics with their levels."""
-    from ..exercises.registry import all_templates
+    from ..exercises.registry import all_templates  # noqa: PLC0415 — CLI start-up: loaded by the command that needs it
 
     _load_folders(template_dirs, replace_templates)
     for name, t in sorted(all_templates().items()):
@@ -446,8 +446,8 @@ def templates_check(name: str | None, seeds: int, template_dirs: tuple[str, ...]
 
     Example: pgsym templates check join --seeds 10000
     """
-    from ..exercises.registry import all_templates, get_template
-    from ..exercises.stress import stress
+    from ..exercises.registry import all_templates, get_template  # noqa: PLC0415 — CLI start-up: loaded by the command that needs it
+    from ..exercises.stress import stress  # noqa: PLC0415 — CLI start-up: loaded by the command that needs it
 
     _load_folders(template_dirs, replace_templates)
     try:

@@ -21,9 +21,9 @@ __all__ = ["join_command", "meet_command"]
 
 
 def _describe(obj: Point | Line) -> str:
-    import sympy
+    import sympy  # noqa: PLC0415 — CLI start-up: loaded by the command that needs it
 
-    from ..projective_plane import Line
+    from ..projective_plane import Line  # noqa: PLC0415 — CLI start-up: loaded by the command that needs it
 
     raw = ", ".join(str(c) for c in obj.coords)
     canonical = ", ".join(str(c) for c in obj.canonical().coords)
@@ -53,7 +53,7 @@ def join_command(p: tuple[Fraction, ...], q: tuple[Fraction, ...]) -> None:
 
     Example: pgsym join "0,0" "1,1"
     """
-    from ..projective_plane import Point, join  # SymPy loads only when a command runs
+    from ..projective_plane import Point, join  # noqa: PLC0415 — SymPy loads only when a command runs
 
     _run(lambda: join(Point(*p), Point(*q)))
 
@@ -66,6 +66,6 @@ def meet_command(l: tuple[Fraction, ...], m: tuple[Fraction, ...]) -> None:
 
     Example: pgsym meet "1,-1,0" "1,-1,3"   (parallel lines: an ideal point)
     """
-    from ..projective_plane import Line, meet
+    from ..projective_plane import Line, meet  # noqa: PLC0415 — CLI start-up: loaded by the command that needs it
 
     _run(lambda: meet(Line(*l), Line(*m)))

@@ -110,7 +110,7 @@ def prove_command(names: tuple[str, ...], list_: bool, all_: bool, as_json: bool
         return
     if show:
         raise click.UsageError("--show goes with --from")
-    from ..proofs.catalogue import CATALOGUE, catalogue_names, prove  # SymPy loads only when a command runs
+    from ..proofs.catalogue import CATALOGUE, catalogue_names, prove  # noqa: PLC0415 — SymPy loads only when a command runs
 
     if list_:
         if as_json:
@@ -133,7 +133,7 @@ def prove_command(names: tuple[str, ...], list_: bool, all_: bool, as_json: bool
     files = [n for n in names if _is_file(n)]
     claims = {}
     if files:
-        from ..proofs.language import read_statement
+        from ..proofs.language import read_statement  # noqa: PLC0415 — CLI start-up: loaded by the command that needs it
 
         for f in files:
             try:
@@ -174,7 +174,7 @@ def _prove_foreign(names: tuple[str, ...], timeout: float, show: bool, as_json: 
     if long:
         raise click.BadParameter(f"an argument of {len(long[0])} characters; at most {MAX_ARGUMENT_CHARS}",
                                  param_hint="NAMES")
-    from ..proofs.alphageometry import OUTCOMES, read_alphageometry_file, solve
+    from ..proofs.alphageometry import OUTCOMES, read_alphageometry_file, solve  # noqa: PLC0415 — SymPy loads only when a command runs
 
     try:
         problems = read_alphageometry_file(names[0])
@@ -242,8 +242,8 @@ def discover_command(file: str, as_json: bool, timeout: float, all_: bool) -> No
     coplanar points; six points on a conic) are found on a random exact instance; those that do not hold
     by construction are proved by the engine. Exit status 2 for a file that cannot be read.
     """
-    from ..proofs.discovery import MAX_SIX, discover
-    from ..proofs.language import read_statement
+    from ..proofs.discovery import MAX_SIX, discover  # noqa: PLC0415 — CLI start-up: loaded by the command that needs it
+    from ..proofs.language import read_statement  # noqa: PLC0415 — CLI start-up: loaded by the command that needs it
 
     try:
         claim = read_statement(file)

@@ -81,8 +81,8 @@ def harris_command(image: Path, out: Path, k: float, sigma: float, threshold: fl
     if exists(out) and not out.is_dir():
         raise click.BadParameter(f"{str(out)!r} exists and is not a directory", param_hint="'--out'")
     try:
-        from ..vision.harris import harris
-        from ..vision.images import read_image
+        from ..vision.harris import harris  # noqa: PLC0415 — CLI start-up: loaded by the command that needs it
+        from ..vision.images import read_image  # noqa: PLC0415 — CLI start-up: loaded by the command that needs it
 
         result = harris(read_image(image), k=k, sigma=sigma, threshold=threshold, min_distance=min_distance)
         files = _harris_files(result)
@@ -96,9 +96,9 @@ def harris_command(image: Path, out: Path, k: float, sigma: float, threshold: fl
 
 
 def _harris_files(result) -> dict[str, object]:  # type: ignore[no-untyped-def]
-    import numpy as np
+    import numpy as np  # noqa: PLC0415 — CLI start-up: loaded by the command that needs it
 
-    from ..vision.images import display_uint8
+    from ..vision.images import display_uint8  # noqa: PLC0415 — CLI start-up: loaded by the command that needs it
 
     files: dict[str, object] = {}
     signed = ["Ix", "Iy", "Ixy", "Sxy", "det", "response"]
@@ -122,8 +122,8 @@ def corner_overlay(image, corners):  # type: ignore[no-untyped-def]
     >>> corner_overlay(np.zeros((20, 20), np.float32), np.array([[10.0, 10.0]]))[10, 10].tolist()
     [255, 0, 0]
     """
-    import cv2
-    import numpy as np
+    import cv2  # noqa: PLC0415 — CLI start-up: loaded by the command that needs it
+    import numpy as np  # noqa: PLC0415 — CLI start-up: loaded by the command that needs it
 
     grey = np.clip(np.rint(image * 255.0), 0, 255).astype(np.uint8)
     rgb = np.ascontiguousarray(np.repeat(grey[..., None], 3, axis=2))
@@ -135,7 +135,7 @@ def corner_overlay(image, corners):  # type: ignore[no-untyped-def]
 
 
 def _write_harris(folder: Path, files: dict[str, object]) -> None:
-    from ..vision.images import write_image
+    from ..vision.images import write_image  # noqa: PLC0415 — CLI start-up: loaded by the command that needs it
 
     for name, content in files.items():
         if isinstance(content, str):
@@ -194,11 +194,11 @@ def rectify_command(image: Path, out: Path, method: str, points, lines, size) ->
     out = Path(out)
     _check_output_file(out)
     try:
-        from ..vision.images import read_image
+        from ..vision.images import read_image  # noqa: PLC0415 — CLI start-up: loaded by the command that needs it
 
         img = read_image(image)
         H, out_size = _rectifying_homography(img.shape, method, points, lines, size)
-        from ..vision.warp import warp
+        from ..vision.warp import warp  # noqa: PLC0415 — CLI start-up: loaded by the command that needs it
 
         rectified = warp(img, H, out_size)
         _write_file(out, rectified)
@@ -208,15 +208,15 @@ def rectify_command(image: Path, out: Path, method: str, points, lines, size) ->
 
 
 def _write_file(out: Path, image) -> None:  # type: ignore[no-untyped-def]
-    from ..vision.images import write_image
+    from ..vision.images import write_image  # noqa: PLC0415 — CLI start-up: loaded by the command that needs it
 
     replace_file(out, lambda tmp: write_image(tmp, image))
 
 
 def _rectifying_homography(shape, method, points, lines, size):  # type: ignore[no-untyped-def]
-    import numpy as np
+    import numpy as np  # noqa: PLC0415 — CLI start-up: loaded by the command that needs it
 
-    from ..vision.rectify import (
+    from ..vision.rectify import (  # noqa: PLC0415 — CLI start-up: loaded by the command that needs it
         affine_rectification,
         fit_to_size,
         line_through,

@@ -23,7 +23,7 @@ import numpy as np
 
 from ..errors import CoincidentPointsError, DegenerateConfigurationError
 from ._arrays import DEGENERATE, check_option
-from .metric import _PART, _arrays, _check, _either_point_ideal, _flag_unsafe, _resolve, _run, _scaled
+from .euclid import PART, check_options, either_point_ideal, euclid_arrays, flag_unsafe, resolve, run, scaled
 from .tolerances import INCIDENT_RTOL
 
 __all__ = ["is_parallel", "midpoint", "parallel_line"]
@@ -47,11 +47,11 @@ def _parallel_kernel(ins: list[np.ndarray], o: np.ndarray, ws: list[np.ndarray])
     for i in range(1, k):
         np.multiply(o[..., i], o[..., i], out=t)
         np.add(s, t, out=s)
-    _flag_unsafe(s, o)
+    flag_unsafe(s, o)
 
 
 def _parallel_formula(rows: list[np.ndarray]) -> np.ndarray:
-    h, x = (_scaled(r) for r in rows)  # exact: powers of two keep the products' zeros
+    h, x = (scaled(r) for r in rows)  # exact: powers of two keep the products' zeros
     out = np.empty_like(x)
     out[:, :-1] = h[:, :-1] * x[:, -1:]
     out[:, -1] = -np.einsum("ij,ij->i", h[:, :-1], x[:, :-1])
@@ -59,7 +59,7 @@ def _parallel_formula(rows: list[np.ndarray]) -> np.ndarray:
 
 
 def _parallel_robust(rows: list[np.ndarray]) -> np.ndarray:
-    return _scaled(_parallel_formula(rows))
+    return scaled(_parallel_formula(rows))
 
 
 def _target_at_infinity(rows: list[np.ndarray]) -> np.ndarray:
@@ -92,14 +92,14 @@ def parallel_line(
     >>> parallel_line([1.0, 2, 2, 7], [1.0, 0, 0, 1])               # x + 2y + 2z = 1
     array([ 1.,  2.,  2., -1.])
     """
-    _check(ideal, nonfinite, "parallel_line")
+    check_options(ideal, nonfinite, "parallel_line")
     check_option(degenerate, DEGENERATE, "degenerate", "parallel_line")
-    arrays = _arrays([(target, "target"), (point, "point")], axis, "parallel_line", (3, 4))
+    arrays = euclid_arrays([(target, "target"), (point, "point")], axis, "parallel_line", (3, 4))
     k = arrays[0].shape[-1]
-    result = _run(_parallel_kernel, "parallel_line", [(target, k, "target"), (point, k, "point")], k, out, axis, 2)
+    result = run(_parallel_kernel, "parallel_line", [(target, k, "target"), (point, k, "point")], k, out, axis, 2)
     error = CoincidentPointsError if k == 3 else DegenerateConfigurationError
     checks = (degenerate, _parallel_degenerate, error, "are ideal points in the target's own direction")
-    return _resolve(
+    return resolve(
         result, arrays, "parallel_line", ideal, nonfinite, axis, _target_at_infinity, _parallel_robust, None, checks
     )
 
@@ -127,15 +127,15 @@ def _sin2_kernel(part: tuple[int, ...]) -> Any:
         np.multiply(na, nb, out=t)
         with np.errstate(divide="ignore"):  # an object at infinity: reported afterwards
             np.divide(o, t, out=o)
-        _flag_unsafe(na, o)
-        _flag_unsafe(nb, o)
+        flag_unsafe(na, o)
+        flag_unsafe(nb, o)
 
     return kernel
 
 
 def _sin2_robust(part: tuple[int, ...]) -> Any:
     def robust(rows: list[np.ndarray]) -> np.ndarray:
-        a, b = (_scaled(r[:, list(part)]) for r in rows)
+        a, b = (scaled(r[:, list(part)]) for r in rows)
         if len(part) == 2:
             c2 = (a[:, 0] * b[:, 1] - a[:, 1] * b[:, 0]) ** 2
         else:
@@ -159,16 +159,16 @@ def is_parallel(
     >>> is_parallel([1.0, 2, 3, 4], [[-2.0, -4, -6, 0], [0, 1, 0, 0]])
     array([ True, False])
     """
-    _check(ideal, nonfinite, "is_parallel")
-    arrays = _arrays([(a, "a"), (b, "b")], axis, "is_parallel", (3, 4, 6))
+    check_options(ideal, nonfinite, "is_parallel")
+    arrays = euclid_arrays([(a, "a"), (b, "b")], axis, "is_parallel", (3, 4, 6))
     k = arrays[0].shape[-1]
-    part = _PART[k]
-    result = _run(_sin2_kernel(part), "is_parallel", [(a, k, "a"), (b, k, "b")], None, None, axis, 4)
+    part = PART[k]
+    result = run(_sin2_kernel(part), "is_parallel", [(a, k, "a"), (b, k, "b")], None, None, axis, 4)
 
     def at_infinity(rows: list[np.ndarray]) -> np.ndarray:
         return np.logical_or.reduce([np.all(r[:, list(part)] == 0, axis=-1) for r in rows])
 
-    values = _resolve(result, arrays, "is_parallel", ideal, nonfinite, axis, at_infinity, _sin2_robust(part))
+    values = resolve(result, arrays, "is_parallel", ideal, nonfinite, axis, at_infinity, _sin2_robust(part))
     if isinstance(values, tuple):
         s2, ok = values
         return np.asarray(np.nan_to_num(s2, nan=1.0) <= rtol * rtol) & ok, ok
@@ -189,16 +189,16 @@ def _midpoint_kernel(ins: list[np.ndarray], o: np.ndarray, ws: list[np.ndarray])
     np.multiply(v, w, out=last)
     np.add(last, last, out=last)
     np.multiply(last, last, out=t)  # 0 for an ideal point (and an underflow): looked at again
-    _flag_unsafe(t, o)
+    flag_unsafe(t, o)
 
 
 def _midpoint_robust(rows: list[np.ndarray]) -> np.ndarray:
-    x, y = (_scaled(r) for r in rows)
+    x, y = (scaled(r) for r in rows)
     v, w = y[:, -1:], x[:, -1:]
     out = np.empty_like(x)
     out[:, :-1] = v * x[:, :-1] + w * y[:, :-1]
     out[:, -1:] = 2 * v * w
-    return _scaled(out)
+    return scaled(out)
 
 
 def midpoint(
@@ -213,8 +213,8 @@ def midpoint(
     >>> midpoint([0.0, 0, 0, 1], [2.0, 4, 6, 2])                      # (1/2, 1, 3/2)
     array([2., 4., 6., 4.])
     """
-    _check(ideal, nonfinite, "midpoint")
-    arrays = _arrays([(a, "a"), (b, "b")], axis, "midpoint", (3, 4))
+    check_options(ideal, nonfinite, "midpoint")
+    arrays = euclid_arrays([(a, "a"), (b, "b")], axis, "midpoint", (3, 4))
     k = arrays[0].shape[-1]
-    result = _run(_midpoint_kernel, "midpoint", [(a, k, "a"), (b, k, "b")], k, out, axis, 1)
-    return _resolve(result, arrays, "midpoint", ideal, nonfinite, axis, _either_point_ideal, _midpoint_robust)
+    result = run(_midpoint_kernel, "midpoint", [(a, k, "a"), (b, k, "b")], k, out, axis, 1)
+    return resolve(result, arrays, "midpoint", ideal, nonfinite, axis, either_point_ideal, _midpoint_robust)

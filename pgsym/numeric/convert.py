@@ -28,8 +28,8 @@ __all__ = ["from_array", "kinds", "to_array"]
 def _shape(cls: type) -> tuple[int, ...]:
     """The shape of one object's array, read off its class: a vector of ``size`` coordinates, a
     ``size``×``size`` symmetric form, or a square matrix of any size (0, 0) for a transformation."""
-    from ..homogeneous import HomogeneousVector
-    from ..symmetric_form import SymmetricForm
+    from ..homogeneous import HomogeneousVector  # noqa: PLC0415 — numeric → core by design: exact objects on request; numeric loads without SymPy
+    from ..symmetric_form import SymmetricForm  # noqa: PLC0415 — numeric → core by design: exact objects on request; numeric loads without SymPy
 
     if issubclass(cls, HomogeneousVector):
         return (cls.size,)
@@ -45,7 +45,7 @@ def kinds() -> dict[str, tuple[str, str, tuple[int, ...]]]:
     >>> kinds()["conic"]
     ('conics', 'Conic', (3, 3))
     """
-    from ..kinds import object_classes
+    from ..kinds import object_classes  # noqa: PLC0415 — numeric → core by design: exact objects on request; numeric loads without SymPy
 
     return {kind: (cls.__module__.removeprefix("pgsym."), cls.__name__, _shape(cls))
             for kind, cls in object_classes().items()}
@@ -121,7 +121,7 @@ def from_array(array: Any, kind: str | type) -> Any:
     >>> from_array(np.eye(3), "transformation").dim
     2
     """
-    from ..kinds import object_classes
+    from ..kinds import object_classes  # noqa: PLC0415 — numeric → core by design: exact objects on request; numeric loads without SymPy
 
     classes = object_classes()
     name = kind.__name__ if isinstance(kind, type) else kind

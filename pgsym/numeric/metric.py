@@ -30,8 +30,18 @@ from typing import Any
 
 import numpy as np
 
-from ..errors import CoincidentLinesError, CoincidentPointsError, DimensionError, IdealPointError
-from ._arrays import DEGENERATE, NONFINITE, as_float_array, check_option, nonfinite_result, rowwise
+from ..errors import CoincidentLinesError, CoincidentPointsError
+from ._arrays import DEGENERATE, check_option
+from .euclid import (
+    PART,
+    check_options,
+    either_point_ideal,
+    euclid_arrays,
+    flag_unsafe,
+    resolve,
+    run,
+    scaled,
+)
 from .tolerances import INCIDENT_RTOL
 
 __all__ = [
@@ -48,139 +58,6 @@ __all__ = [
     "signed_angle",
     "sin_angle",
 ]
-
-_IDEAL = ("raise", "mask")
-
-# the Euclidean part of each kind: the normal (a, b) of a line of P², (a, b, c) of a plane, and the
-# direction (−l14, l42, −l34) of a line of space; the signs cancel in every product of two of them
-_PART = {3: (0, 1), 4: (0, 1, 2), 6: (2, 4, 5)}
-
-# a squared norm outside [2⁻⁹⁶⁸, 2⁹⁶⁸] has overflowed, underflowed, or is about to lose digits in the
-# division that follows; such rows are recomputed after scaling (well inside float64's 2^±1022)
-_SQUARE_LO, _SQUARE_HI = 2.0**-968, 2.0**968
-
-
-def _flag_unsafe(square: np.ndarray, o: np.ndarray) -> None:
-    """Set to NaN the rows of ``o`` whose squared norm is out of the safe range, for the second look.
-
-    A quotient by an infinite norm would be a wrong but finite 0; two reductions over the block,
-    while it is in cache, decide the common case.
-    """
-    if not (square.min() >= _SQUARE_LO and square.max() <= _SQUARE_HI):
-        o[~((square >= _SQUARE_LO) & (square <= _SQUARE_HI))] = np.nan
-
-
-def _arrays(inputs: list[tuple[Any, str]], axis: int, function: str, sizes: tuple[int, ...]) -> list[np.ndarray]:
-    out = []
-    for x, name in inputs:
-        a = as_float_array(x, name, function)
-        if a.ndim == 0 or not -a.ndim <= axis < a.ndim or a.shape[axis] not in sizes:
-            raise DimensionError(
-                f"{function}: {name} must have {' or '.join(map(str, sizes))} homogeneous coordinates along "
-                f"axis {axis}, got an array of shape {a.shape}"
-            )
-        out.append(np.moveaxis(a, axis, -1))
-    if len({a.shape[-1] for a in out}) != 1:
-        raise DimensionError(
-            f"{function}: the arguments must be of one space, got {[a.shape[-1] for a in out]} coordinates"
-        )
-    return out
-
-
-def _scaled(rows: np.ndarray) -> np.ndarray:
-    """Each row divided by the power of two nearest its largest entry: exact, projectively nothing."""
-    big = np.max(np.abs(rows), axis=-1, keepdims=True)
-    return np.ldexp(rows, -np.frexp(np.where(big > 0, big, 1.0))[1])
-
-
-def _resolve(
-    result: Any,
-    arrays: list[np.ndarray],
-    function: str,
-    ideal: str,
-    nonfinite: str,
-    axis: int,
-    is_ideal: Callable[[list[np.ndarray]], np.ndarray],
-    robust: Callable[[list[np.ndarray]], np.ndarray] | None,
-    extra_bad: np.ndarray | None = None,
-    degenerate: tuple[str, Callable[[list[np.ndarray]], np.ndarray], type[Exception], str] | None = None,
-) -> Any:
-    """Apply the policy to a kernel's ``(values, finite)``: sort the rows that are not finite (or ``extra_bad``)
-    into bad inputs, ideal elements, degenerate input and overflows; recompute overflows with ``robust``; raise
-    or mask. ``degenerate`` is ``(option, test, error, what)`` for a construction that can be undetermined."""
-    values, ok = result
-    shape = ok.shape
-    vals = values if values.ndim == ok.ndim else np.moveaxis(values, axis, -1)
-    if ok.ndim == 0:  # one row: work on views of shape (1, ...)
-        vals, ok = vals[None], ok.reshape(1)
-        extra_bad = None if extra_bad is None else np.reshape(extra_bad, 1)
-    bad = ~ok if extra_bad is None else ~ok | extra_bad
-    masked = ideal == "mask" or nonfinite == "mask" or (degenerate is not None and degenerate[0] == "mask")
-    if not bad.any():
-        return (values, ok.reshape(shape)) if masked else values
-    index = tuple(np.nonzero(bad))
-    batch = ok.shape
-    rows = [np.broadcast_to(a, (*batch, a.shape[-1]))[index] for a in arrays]
-    bad_input = np.zeros(len(index[0]) if index else 1, bool)
-    for r in rows:
-        bad_input |= ~np.isfinite(r).all(axis=-1)
-    ideal_rows = ~bad_input & is_ideal(rows)
-    degenerate_rows = np.zeros_like(ideal_rows)
-    if degenerate is not None:
-        degenerate_rows = ~bad_input & ~ideal_rows & degenerate[1](rows)
-    rest = ~bad_input & ~ideal_rows & ~degenerate_rows
-    if robust is not None and rest.any():
-        with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
-            again = robust([r[rest] for r in rows])
-        good = np.isfinite(again) if again.ndim == 1 else np.isfinite(again).all(axis=-1)
-        sub = tuple(i[rest] for i in index)
-        vals[tuple(i[good] for i in sub)] = again[good]
-        rest_idx = np.nonzero(rest)[0]
-        rest[rest_idx[good]] = False
-    ok = np.ones(batch, bool)
-    ok[index] = ~(bad_input | ideal_rows | degenerate_rows | rest)
-    not_finite = np.ones(batch, bool)
-    not_finite[index] = ~(bad_input | rest)
-    if nonfinite == "raise" and not not_finite.all():
-        nonfinite_result(vals, not_finite, "raise", function, arrays)
-    if ideal == "raise" and ideal_rows.any():
-        first = tuple(int(i[np.argmax(ideal_rows)]) for i in index)
-        n = int(ideal_rows.sum())
-        example = [np.broadcast_to(a, (*batch, a.shape[-1]))[first].tolist() for a in arrays]
-        raise IdealPointError(
-            f"{function}: {n} of the {ok.size} rows hold an ideal element (an ideal point, or a line or plane at "
-            f"infinity), the first at index {first}: {example}; "
-            "they have no finite distance, angle or foot. Pass ideal='mask' to get the other rows with a mask"
-        )
-    if degenerate is not None and degenerate[0] == "raise" and degenerate_rows.any():
-        first = tuple(int(i[np.argmax(degenerate_rows)]) for i in index)
-        raise degenerate[2](
-            f"{function}: {int(degenerate_rows.sum())} of the {ok.size} inputs {degenerate[3]}, the first at index "
-            f"{first}; pass degenerate='mask' to get NaN rows there and a mask of the good ones"
-        )
-    if masked:
-        vals[~ok] = False if vals.dtype == bool else np.nan
-        return values, ok.reshape(shape)
-    return values
-
-
-def _run(
-    kernel: Callable[[list[np.ndarray], np.ndarray, list[np.ndarray]], None],
-    function: str,
-    ins: list[tuple[Any, int, str]],
-    k_out: int | None,
-    out: np.ndarray | None,
-    axis: int,
-    n_scratch: int,
-) -> tuple[np.ndarray, np.ndarray]:
-    """The kernel's ``(values, finite)`` by :func:`~pgsym.numeric._arrays.rowwise` (which also takes empty batches)."""
-    return rowwise(kernel, function, ins, k_out, out, axis, n_scratch, "mask")  # type: ignore[return-value]
-
-
-def _check(ideal: str, nonfinite: str, function: str) -> None:
-    check_option(ideal, _IDEAL, "ideal", function)
-    check_option(nonfinite, NONFINITE, "nonfinite", function)
-
 
 # -- angles -----------------------------------------------------------------------------------------
 def _cos_kernel(part: tuple[int, ...]) -> Callable[[list[np.ndarray], np.ndarray, list[np.ndarray]], None]:
@@ -206,14 +83,14 @@ def _cos_kernel(part: tuple[int, ...]) -> Callable[[list[np.ndarray], np.ndarray
         np.sqrt(na, out=t)
         with np.errstate(divide="ignore"):  # a line at infinity: reported as ideal afterwards
             np.divide(o, t, out=o)
-        _flag_unsafe(na, o)
+        flag_unsafe(na, o)
 
     return kernel
 
 
 def _cos_rows(part: tuple[int, ...]) -> Callable[[list[np.ndarray]], np.ndarray]:
     def robust(rows: list[np.ndarray]) -> np.ndarray:
-        a, b = (_scaled(r[:, list(part)]) for r in rows)
+        a, b = (scaled(r[:, list(part)]) for r in rows)
         return np.einsum("ij,ij->i", a, b) / np.sqrt(np.einsum("ij,ij->i", a, a) * np.einsum("ij,ij->i", b, b))
 
     return robust
@@ -236,12 +113,12 @@ def cos_angle(
     ...
     pgsym.errors.IdealPointError: cos_angle: 1 of the 1 rows hold an ideal element...
     """
-    _check(ideal, nonfinite, "cos_angle")
-    arrays = _arrays([(a, "a"), (b, "b")], axis, "cos_angle", (3, 4, 6))
-    part = _PART[arrays[0].shape[-1]]
+    check_options(ideal, nonfinite, "cos_angle")
+    arrays = euclid_arrays([(a, "a"), (b, "b")], axis, "cos_angle", (3, 4, 6))
+    part = PART[arrays[0].shape[-1]]
     k = arrays[0].shape[-1]
-    result = _run(_cos_kernel(part), "cos_angle", [(a, k, "a"), (b, k, "b")], None, out, axis, 3)
-    values = _resolve(result, arrays, "cos_angle", ideal, nonfinite, axis, _no_part(part), _cos_rows(part))
+    result = run(_cos_kernel(part), "cos_angle", [(a, k, "a"), (b, k, "b")], None, out, axis, 3)
+    values = resolve(result, arrays, "cos_angle", ideal, nonfinite, axis, _no_part(part), _cos_rows(part))
     if not isinstance(values, tuple) and values.ndim == 0:
         return values[()]
     return values
@@ -297,11 +174,11 @@ def _hyper_kernel(ins: list[np.ndarray], o: np.ndarray, ws: list[np.ndarray]) ->
     with np.errstate(divide="ignore"):  # an ideal point or a line at infinity: reported afterwards
         np.divide(o, t, out=o)
     np.abs(o, out=o)
-    _flag_unsafe(nn, o)
+    flag_unsafe(nn, o)
 
 
 def _hyper_rows(rows: list[np.ndarray]) -> np.ndarray:
-    x, h = (_scaled(r) for r in rows)
+    x, h = (scaled(r) for r in rows)
     n = h[:, :-1]
     return np.abs(np.einsum("ij,ij->i", x, h)) / (np.sqrt(np.einsum("ij,ij->i", n, n)) * np.abs(x[:, -1]))
 
@@ -312,10 +189,10 @@ def _hyper_ideal(rows: list[np.ndarray]) -> np.ndarray:
 
 
 def _point_hyperplane(x: Any, h: Any, k: int, function: str, ideal: str, nonfinite: str, axis: int) -> Any:
-    _check(ideal, nonfinite, function)
-    arrays = _arrays([(x, "x"), (h, "h")], axis, function, (k,))
-    result = _run(_hyper_kernel, function, [(x, k, "x"), (h, k, "h")], None, None, axis, 2)
-    values = _resolve(result, arrays, function, ideal, nonfinite, axis, _hyper_ideal, _hyper_rows)
+    check_options(ideal, nonfinite, function)
+    arrays = euclid_arrays([(x, "x"), (h, "h")], axis, function, (k,))
+    result = run(_hyper_kernel, function, [(x, k, "x"), (h, k, "h")], None, None, axis, 2)
+    values = resolve(result, arrays, function, ideal, nonfinite, axis, _hyper_ideal, _hyper_rows)
     return values[()] if not isinstance(values, tuple) and values.ndim == 0 else values
 
 
@@ -356,22 +233,17 @@ def _point_kernel(ins: list[np.ndarray], o: np.ndarray, ws: list[np.ndarray]) ->
     np.sqrt(o, out=o)
 
 
-def _either_point_ideal(rows: list[np.ndarray]) -> np.ndarray:
-    """The rows where either of two points is ideal (last coordinate zero)."""
-    return (rows[0][:, -1] == 0) | (rows[1][:, -1] == 0)
-
-
 def point_distance(x: Any, y: Any, *, ideal: str = "raise", nonfinite: str = "raise", axis: int = -1) -> Any:
     """Euclidean distances between broadcast arrays of points of P² (k = 3) or of space (k = 4).
 
     >>> point_distance([[3.0, 4, 1], [2, 2, 2]], [0.0, 0, 1])
     array([5.        , 1.41421356])
     """
-    _check(ideal, nonfinite, "point_distance")
-    arrays = _arrays([(x, "x"), (y, "y")], axis, "point_distance", (3, 4))
+    check_options(ideal, nonfinite, "point_distance")
+    arrays = euclid_arrays([(x, "x"), (y, "y")], axis, "point_distance", (3, 4))
     k = arrays[0].shape[-1]
-    result = _run(_point_kernel, "point_distance", [(x, k, "x"), (y, k, "y")], None, None, axis, 4)
-    values = _resolve(result, arrays, "point_distance", ideal, nonfinite, axis, _either_point_ideal, _robust_point)
+    result = run(_point_kernel, "point_distance", [(x, k, "x"), (y, k, "y")], None, None, axis, 4)
+    values = resolve(result, arrays, "point_distance", ideal, nonfinite, axis, either_point_ideal, _robust_point)
     return values[()] if not isinstance(values, tuple) and values.ndim == 0 else values
 
 
@@ -403,20 +275,20 @@ def _foot_kernel(factor: float) -> Callable[[list[np.ndarray], np.ndarray, list[
             np.multiply(d, h[..., i], out=t)
             np.subtract(oi, t, out=oi)
         np.multiply(s, x[..., k - 1], out=o[..., k - 1])
-        _flag_unsafe(s, o)
+        flag_unsafe(s, o)
 
     return kernel
 
 
 def _foot_rows(factor: float) -> Callable[[list[np.ndarray]], np.ndarray]:
     def robust(rows: list[np.ndarray]) -> np.ndarray:
-        x, h = (_scaled(r) for r in rows)
+        x, h = (scaled(r) for r in rows)
         n = h[:, :-1]
         s = np.einsum("ij,ij->i", n, n)[:, None]
         d = factor * np.einsum("ij,ij->i", x, h)[:, None]
         out = s * x
         out[:, :-1] -= d * n
-        return _scaled(out)
+        return scaled(out)
 
     return robust
 
@@ -433,13 +305,13 @@ def orthogonal_projection(
     >>> orthogonal_projection([2.0, 0, 1], [1.0, -1, 0])               # onto y = x: (2, 2, 2)
     array([2., 2., 2.])
     """
-    _check(ideal, nonfinite, "orthogonal_projection")
-    arrays = _arrays([(x, "x"), (h, "h")], axis, "orthogonal_projection", (3, 4))
+    check_options(ideal, nonfinite, "orthogonal_projection")
+    arrays = euclid_arrays([(x, "x"), (h, "h")], axis, "orthogonal_projection", (3, 4))
     k = arrays[0].shape[-1]
     ins = [(x, k, "x"), (h, k, "h")]
-    result = _run(_foot_kernel(1.0), "orthogonal_projection", ins, k, out, axis, 3)
+    result = run(_foot_kernel(1.0), "orthogonal_projection", ins, k, out, axis, 3)
     last = np.moveaxis(result[0], axis, -1)[..., -1]
-    return _resolve(
+    return resolve(
         result, arrays, "orthogonal_projection", ideal, nonfinite, axis, _hyper_ideal, _foot_rows(1.0), last == 0
     )
 
@@ -463,18 +335,18 @@ def reflect(
     array([[10.,  4.,  2.],
            [ 0.,  2.,  0.]])
     """
-    _check(ideal, nonfinite, "reflect")
-    arrays = _arrays([(x, "x"), (mirror, "mirror")], axis, "reflect", (3, 4))
+    check_options(ideal, nonfinite, "reflect")
+    arrays = euclid_arrays([(x, "x"), (mirror, "mirror")], axis, "reflect", (3, 4))
     k = arrays[0].shape[-1]
     ins = [(x, k, "x"), (mirror, k, "mirror")]
-    result = _run(_foot_kernel(2.0), "reflect", ins, k, out, axis, 3)
+    result = run(_foot_kernel(2.0), "reflect", ins, k, out, axis, 3)
     at_infinity = np.all(arrays[1][..., :-1] == 0, axis=-1)
     extra = np.broadcast_to(at_infinity, result[1].shape) if at_infinity.any() else None
 
     def mirror_ideal(rows: list[np.ndarray]) -> np.ndarray:
         return np.all(rows[1][:, :-1] == 0, axis=-1)
 
-    return _resolve(result, arrays, "reflect", ideal, nonfinite, axis, mirror_ideal, _foot_rows(2.0), extra)
+    return resolve(result, arrays, "reflect", ideal, nonfinite, axis, mirror_ideal, _foot_rows(2.0), extra)
 
 
 # -- perpendiculars and bisectors of lines of P² ------------------------------------------------------
@@ -493,14 +365,14 @@ def _perpendicular_kernel(ins: list[np.ndarray], o: np.ndarray, ws: list[np.ndar
     np.multiply(o0, o0, out=s)
     np.multiply(o1, o1, out=t)
     np.add(s, t, out=s)
-    _flag_unsafe(s, o)
+    flag_unsafe(s, o)
 
 
 def _perpendicular_rows(rows: list[np.ndarray]) -> np.ndarray:
-    l, x = (_scaled(r) for r in rows)
+    l, x = (scaled(r) for r in rows)
     normal = l.copy()
     normal[:, 2] = 0
-    return _scaled(np.cross(x, normal))
+    return scaled(np.cross(x, normal))
 
 
 def _point_or_line_ideal(rows: list[np.ndarray]) -> np.ndarray:
@@ -522,11 +394,11 @@ def perpendicular_line(
     array([[ 1.,  1., -2.],
            [ 1.,  1., -0.]])
     """
-    _check(ideal, nonfinite, "perpendicular_line")
-    arrays = _arrays([(line, "line"), (point, "point")], axis, "perpendicular_line", (3,))
+    check_options(ideal, nonfinite, "perpendicular_line")
+    arrays = euclid_arrays([(line, "line"), (point, "point")], axis, "perpendicular_line", (3,))
     ins = [(line, 3, "line"), (point, 3, "point")]
-    result = _run(_perpendicular_kernel, "perpendicular_line", ins, 3, out, axis, 2)
-    return _resolve(
+    result = run(_perpendicular_kernel, "perpendicular_line", ins, 3, out, axis, 2)
+    return resolve(
         result, arrays, "perpendicular_line", ideal, nonfinite, axis, _point_or_line_ideal, _perpendicular_rows
     )
 
@@ -554,14 +426,14 @@ def _bisector_kernel(ins: list[np.ndarray], o: np.ndarray, ws: list[np.ndarray])
         np.subtract(o[..., i], o[..., 3 + i], out=o[..., 3 + i])
         np.add(o[..., i], o[..., i], out=o[..., i])
         np.subtract(o[..., i], o[..., 3 + i], out=o[..., i])
-    _flag_unsafe(na, o)
-    _flag_unsafe(nb, o)
+    flag_unsafe(na, o)
+    flag_unsafe(nb, o)
     if not d.all():
         o[d == 0] = np.nan
 
 
 def _bisector_rows(rows: list[np.ndarray]) -> np.ndarray:
-    l, m = (_scaled(r) for r in rows)
+    l, m = (scaled(r) for r in rows)
     u = l / np.hypot(l[:, 0], l[:, 1])[:, None]
     v = m / np.hypot(m[:, 0], m[:, 1])[:, None]
     out = np.concatenate([u + v, u - v], axis=-1)
@@ -580,7 +452,7 @@ def _line_at_infinity(rows: list[np.ndarray]) -> np.ndarray:
 
 def _coincident(rows: list[np.ndarray]) -> np.ndarray:
     with np.errstate(invalid="ignore", over="ignore"):  # rows with NaN are told apart by the caller
-        l, m = (_scaled(r) for r in rows)  # exact: scaling by powers of two keeps the products' zeros
+        l, m = (scaled(r) for r in rows)  # exact: scaling by powers of two keeps the products' zeros
         return np.all(np.cross(l, m) == 0, axis=-1)
 
 
@@ -599,12 +471,12 @@ def angle_bisectors(
     >>> plus, minus
     (array([1.6, 0.8, 0. ]), array([ 0.4, -0.8,  0. ]))
     """
-    _check(ideal, nonfinite, "angle_bisectors")
+    check_options(ideal, nonfinite, "angle_bisectors")
     check_option(degenerate, DEGENERATE, "degenerate", "angle_bisectors")
-    arrays = _arrays([(l, "l"), (m, "m")], axis, "angle_bisectors", (3,))
-    result = _run(_bisector_kernel, "angle_bisectors", [(l, 3, "l"), (m, 3, "m")], 6, None, axis, 5)
+    arrays = euclid_arrays([(l, "l"), (m, "m")], axis, "angle_bisectors", (3,))
+    result = run(_bisector_kernel, "angle_bisectors", [(l, 3, "l"), (m, 3, "m")], 6, None, axis, 5)
     checks = (degenerate, _coincident, CoincidentLinesError, "are the same line, which makes no angle")
-    values = _resolve(
+    values = resolve(
         result, arrays, "angle_bisectors", ideal, nonfinite, axis, _line_at_infinity, _bisector_rows, None, checks
     )
     if isinstance(values, tuple):
@@ -629,12 +501,12 @@ def _sin_kernel(ins: list[np.ndarray], o: np.ndarray, ws: list[np.ndarray]) -> N
     np.sqrt(t, out=t)
     with np.errstate(divide="ignore"):  # the line at infinity: reported afterwards
         np.divide(o, t, out=o)
-    _flag_unsafe(na, o)
-    _flag_unsafe(nb, o)
+    flag_unsafe(na, o)
+    flag_unsafe(nb, o)
 
 
 def _sin_rows(rows: list[np.ndarray]) -> np.ndarray:
-    l, m = (_scaled(r[:, :2]) for r in rows)
+    l, m = (scaled(r[:, :2]) for r in rows)
     return (l[:, 0] * m[:, 1] - l[:, 1] * m[:, 0]) / (np.hypot(l[:, 0], l[:, 1]) * np.hypot(m[:, 0], m[:, 1]))
 
 
@@ -649,10 +521,10 @@ def sin_angle(
     >>> sin_angle([1.0, 0, 0], [[0.0, 1, 0], [3, -4, 1]])            # 1, and (1·(−4) − 0·3) / 5
     array([ 1. , -0.8])
     """
-    _check(ideal, nonfinite, "sin_angle")
-    arrays = _arrays([(l, "l"), (m, "m")], axis, "sin_angle", (3,))
-    result = _run(_sin_kernel, "sin_angle", [(l, 3, "l"), (m, 3, "m")], None, out, axis, 3)
-    values = _resolve(result, arrays, "sin_angle", ideal, nonfinite, axis, _line_at_infinity, _sin_rows)
+    check_options(ideal, nonfinite, "sin_angle")
+    arrays = euclid_arrays([(l, "l"), (m, "m")], axis, "sin_angle", (3,))
+    result = run(_sin_kernel, "sin_angle", [(l, 3, "l"), (m, 3, "m")], None, out, axis, 3)
+    values = resolve(result, arrays, "sin_angle", ideal, nonfinite, axis, _line_at_infinity, _sin_rows)
     return values[()] if not isinstance(values, tuple) and values.ndim == 0 else values
 
 
@@ -687,22 +559,22 @@ def _signed_kernel(ins: list[np.ndarray], o: np.ndarray, ws: list[np.ndarray]) -
     np.copysign(t, w0, out=t)
     np.multiply(c, t, out=c)
     np.multiply(s, t, out=s)
-    _flag_unsafe(na, o)
-    _flag_unsafe(u0, o)
+    flag_unsafe(na, o)
+    flag_unsafe(u0, o)
     for x in (v, p, q):  # an ideal point gives a finite but meaningless ray: looked at again
         if not x[..., 2].all():
             o[x[..., 2] == 0] = np.nan
 
 
 def _rays(rows: list[np.ndarray]) -> tuple[np.ndarray, np.ndarray]:
-    v, p, q = (_scaled(r) for r in rows)  # exact: powers of two keep the zeros
+    v, p, q = (scaled(r) for r in rows)  # exact: powers of two keep the zeros
     u = p[:, :2] * v[:, 2:] - v[:, :2] * p[:, 2:]
     w = q[:, :2] * v[:, 2:] - v[:, :2] * q[:, 2:]
     return u, w
 
 
 def _signed_rows(rows: list[np.ndarray]) -> np.ndarray:
-    u, w = (_scaled(r) for r in _rays(rows))
+    u, w = (scaled(r) for r in _rays(rows))
     sign = np.sign(rows[1][:, 2]) * np.sign(rows[2][:, 2])
     norm = np.hypot(u[:, 0], u[:, 1]) * np.hypot(w[:, 0], w[:, 1])
     c = sign * (u[:, 0] * w[:, 0] + u[:, 1] * w[:, 1]) / norm
@@ -732,17 +604,17 @@ def signed_angle(
     >>> signed_angle([0.0, 0, 1], [1.0, 0, 1], [[0.0, 2, 1], [0, -2, 1]])   # a quarter turn either way
     (array([0., 0.]), array([ 1., -1.]))
     """
-    _check(ideal, nonfinite, "signed_angle")
+    check_options(ideal, nonfinite, "signed_angle")
     check_option(degenerate, DEGENERATE, "degenerate", "signed_angle")
-    arrays = _arrays([(vertex, "vertex"), (p, "p"), (q, "q")], axis, "signed_angle", (3,))
+    arrays = euclid_arrays([(vertex, "vertex"), (p, "p"), (q, "q")], axis, "signed_angle", (3,))
     ins = [(vertex, 3, "vertex"), (p, 3, "p"), (q, 3, "q")]
-    result = _run(_signed_kernel, "signed_angle", ins, 2, None, axis, 6)
+    result = run(_signed_kernel, "signed_angle", ins, 2, None, axis, 6)
 
     def ideal_rows(rows: list[np.ndarray]) -> np.ndarray:
         return np.logical_or.reduce([r[:, 2] == 0 for r in rows])
 
     checks = (degenerate, _at_vertex, CoincidentPointsError, "put p or q at the vertex, which fixes no ray")
-    values = _resolve(result, arrays, "signed_angle", ideal, nonfinite, axis, ideal_rows, _signed_rows, None, checks)
+    values = resolve(result, arrays, "signed_angle", ideal, nonfinite, axis, ideal_rows, _signed_rows, None, checks)
     if isinstance(values, tuple):
         c, s = np.moveaxis(values[0], axis, 0)
         return (c, s), values[1]

@@ -1,8 +1,10 @@
-"""Constructions that need square roots: algebraic points with defining equations, and which roots a proof covers.
+"""Proofs of claims with square roots: which choices of root a proof covers, and the named branch.
 
 An angle bisector, a line meeting a circle, the tangents from a point, a regular polygon or a rotation by 60°
-cannot be written with ``+``, ``−``, ``×`` of the coordinates alone. Each is written here with a few new
-quantities, the *roots*, each tied to the parameters by one defining equation:
+cannot be written with ``+``, ``−``, ``×`` of the coordinates alone. Each is built (by the methods of
+:class:`~pgsym.proofs.square_roots.SquareRootConstructions`, a base class of every claim) with a few new
+quantities, the *roots*, each tied to the parameters by one defining equation; this module proves claims that
+have them (:func:`pgsym.proofs.engine.prove` hands them here):
 
 * a **length root** ``d_A_B`` with ``d² = (x_A w_B − x_B w_A)² + (y_A w_B − y_B w_A)²``, i.e. ``d = ±w_A w_B |AB|``:
   one per segment, shared by every construction that needs the length |AB|. The internal bisector of ∠ABC at
@@ -11,7 +13,7 @@ quantities, the *roots*, each tied to the parameters by one defining equation:
   length positive): then each ``anglebisector`` is internal and each ``exbisector`` external. Changing the
   sign of ``d_A_B`` swaps internal and external at A and at B together;
 * an **intersection root** ``e_X`` with ``e² = β² − αγ``, the discriminant of a line meeting a conic
-  (:func:`line_conic_intersection`): the two common points are ``(−β ± e) P + α Q``. The statement names no root
+  (``line_conic_intersection``): the two common points are ``(−β ± e) P + α Q``. The statement names no root
   (``intersection`` is either point, ``intersections`` both in either order, ``tangentfrom`` either tangent),
   so a conclusion must hold for both;
 * a **root of unity** ``zeta_M`` with ``Φ_M(zeta_M) = 0`` (the cyclotomic polynomial), for rotations by an
@@ -56,17 +58,25 @@ import math
 import random
 import time
 from collections.abc import Callable, Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from fractions import Fraction
+from functools import partial
 from typing import Any
 
 import sympy
 
-from .. import ring as alg
-from ..errors import ObjectTypeError, PgsymError
+from ..errors import PgsymError
 from ..exact import is_zero
 from ..exact import sign as exact_sign
+from ..projective_plane import Line, Point
+from .budget import Deadline, Timeout, TooLarge, alarm
+from .claims import Claim, Node
+from .evaluation import claim_rng, conclusion_polys, evaluate, nonzero_requirements, objects_to_check
+from .normalisation import normalise
+from .operations import flat
 from .polynomials import PolynomialRing, default_backend
+from .square_roots import MAX_POLYGON, MAX_ROOTS, Root, SquareRootConstructions, _data, roots_of
+from .verdicts import Certificate, Condition, Counterexample, Status, Verdict
 
 __all__ = [
     "MAX_POLYGON",
@@ -86,437 +96,6 @@ __all__ = [
     "tangent_from",
     "tangents_from",
 ]
-
-MAX_POLYGON = 24
-"""The largest n of a regular n-gon (and denominator of a rotation angle in turns): Φ_M stays of degree ≤ 48."""
-
-MAX_ROOTS = 8
-"""The most square roots one claim may use: the exact evaluation visits every choice of their signs (2⁸)."""
-
-
-@dataclass(eq=False)
-class Root:
-    """A new quantity of a claim and its defining equation.
-
-    ``kind`` is ``"length"``, ``"intersection"`` or ``"unity"``; ``square(values)`` gives q with ``root² = q``
-    from the values of earlier objects (quadratic roots), ``orient(values)`` the sign the principal root has
-    (lengths: ``w_A w_B``), ``modulus`` M for ``zeta_M``; ``named`` says whether the statement names the
-    principal root (lengths, roots of unity) or means either root (intersections).
-    """
-
-    symbol: sympy.Symbol
-    node: Node
-    kind: str
-    text: str
-    named: bool
-    square: Callable[[dict[Node, Any]], Any] | None = None
-    orient: Callable[[dict[Node, Any]], Any] | None = None
-    modulus: int | None = None
-    words: tuple[str, str] = ("+", "−")
-
-
-@dataclass
-class _Algebraic:
-    roots: list[Root] = field(default_factory=list)
-    readings: list[Callable[[dict[sympy.Symbol, int]], str]] = field(default_factory=list)
-    # (object, its arguments, the candidates pgsym's core builds from their exact values) for the core check
-    core: list[tuple[Node, tuple[Node, ...], Callable[..., Any]]] = field(default_factory=list)
-
-
-def _data(claim: Claim) -> _Algebraic:
-    data = claim.__dict__.get("algebraic")
-    if data is None:
-        data = claim.__dict__["algebraic"] = _Algebraic()
-    return data
-
-
-def roots_of(claim: Claim) -> list[Root]:
-    """The roots a claim uses (empty for a claim without square roots).
-
-    >>> roots_of(Claim("x", "x"))
-    []
-    """
-    data = claim.__dict__.get("algebraic")
-    return [] if data is None else data.roots
-
-
-def _new_root(claim: Claim, name: str, kind: str, text: str, named: bool, **kw: Any) -> Root:
-    data = _data(claim)
-    if len([r for r in data.roots if r.kind != "unity"]) >= MAX_ROOTS and kind != "unity":
-        raise ObjectTypeError(f"claim {claim.name!r} would need more than {MAX_ROOTS} square roots; "
-                              "the exact evaluation visits every choice of their signs")
-    (sym,) = claim.params(name)
-    node = claim._free(f"_{name}", "scalar", (sym,))
-    node.root = True  # normalisation: not a free object, fixed by its equation
-    root = Root(sym, node, kind, text, named, **kw)
-    data.roots.append(root)
-    return root
-
-
-def _similar(node: Node) -> Node:
-    """Mark a construction as commuting with the orientation-preserving similarities (the frame A = (0, 0),
-    B = (1, 0) of :mod:`~pgsym.proofs.normalisation`): a bisector stays the bisector of the same kind (lengths
-    scale by k > 0, so the named roots stay positive), the common points of a line and a circle or two circles
-    and the tangents from a point go to those of the images (either root: the pair is what is mapped), and a
-    rotation by a fixed angle commutes with every direct similarity."""
-    node.group = "similarity"
-    return node
-
-
-# -- coordinates --------------------------------------------------------------------------------------------
-
-def _vector(p: Sequence[Any], q: Sequence[Any]) -> tuple[Any, Any]:
-    """w_P w_Q (Q/w_Q − P/w_P): the vector from P to Q, scaled by w_P w_Q (right for any representatives)."""
-    return (p[2] * q[0] - q[2] * p[0], p[2] * q[1] - q[2] * p[1])
-
-
-def _length_square(p: Sequence[Any], q: Sequence[Any]) -> Any:
-    v = _vector(p, q)
-    return v[0] * v[0] + v[1] * v[1]
-
-
-def _length_root(claim: Claim, a: Node, b: Node) -> Root:
-    """The shared root d with d² = (w_A w_B)²|AB|², principal d = +w_A w_B |AB|."""
-    x, y = sorted((a.name, b.name))
-    name = f"d_{x}_{y}"
-    for r in roots_of(claim):
-        if str(r.symbol) == name:
-            return r
-    return _new_root(claim, name, "length", f"{name}² = (w_{x} w_{y})²·|{x}{y}|²", True,
-                     square=lambda v: _length_square(v[a], v[b]), orient=lambda v: v[a][2] * v[b][2],
-                     words=(f"+|{x}{y}|", f"−|{x}{y}|"))
-
-
-def _bisector(claim: Claim, name: str, a: Any, b: Any, c: Any, internal: bool) -> Node:
-    a, b, c = (claim._get(x, ("point",), "angle bisector") for x in (a, b, c))
-    dba, dbc = _length_root(claim, b, a), _length_root(claim, b, c)
-    sgn = 1 if internal else -1
-
-    def line(pa: Any, pb: Any, pc: Any, uba: Any, ubc: Any) -> tuple[Any, ...]:
-        va, vc = _vector(pb, pa), _vector(pb, pc)
-        # the unit vectors are va/d_BA and vc/d_BC (d_BA = w_A w_B |BA| on the named branch): added or
-        # subtracted, times d_BA d_BC
-        ux = ubc * va[0] + sgn * uba * vc[0]
-        uy = ubc * va[1] + sgn * uba * vc[1]
-        return alg.cross(pb, (ux, uy, ux - ux))
-
-    word = "internal" if internal else "external"
-    node = _similar(claim.formula(name, "line", line, a, b, c, dba.node, dbc.node,
-                         description=f"{word} bisector of ∠{a.name}{b.name}{c.name}",
-                         conditions=[f"{a.name} ≠ {b.name}, {c.name} ≠ {b.name} and {a.name}, {b.name}, {c.name} "
-                                     f"not on one line through {b.name} in opposite directions ({name} is defined)"]))
-
-    def reading(signs: dict[sympy.Symbol, int]) -> str:
-        same = signs[dba.symbol] * signs[dbc.symbol] * sgn > 0
-        return f"{name} is the {'internal' if same else 'external'} bisector of ∠{a.name}{b.name}{c.name}"
-
-    _data(claim).readings.append(reading)
-
-    def core(pa: Any, pb: Any, pc: Any) -> tuple[Any, ...]:
-        from .. import metric, projective_plane
-
-        return metric.angle_bisectors(projective_plane.join(pb, pa), projective_plane.join(pb, pc))
-
-    _data(claim).core.append((node, (a, b, c), core))
-    return node
-
-
-def angle_bisector(self: Claim, name: str, a: Any, b: Any, c: Any) -> Node:
-    """The internal bisector of the angle ABC at B (the line through B with direction BA/|BA| + BC/|BC|).
-
-    Uses the length roots ``d_A_B``, ``d_B_C`` (shared with every other construction that needs those lengths);
-    on the named branch both are positive. Needs A ≠ B ≠ C.
-
-    >>> c = Claim("x", "x")
-    >>> A, B, C = (c.free_point(n) for n in "ABC")
-    >>> c.angle_bisector("b", A, B, C).description, [str(r.symbol) for r in roots_of(c)]
-    ('internal bisector of ∠ABC', ['d_A_B', 'd_B_C'])
-    """
-    return _bisector(self, name, a, b, c, True)
-
-
-def external_bisector(self: Claim, name: str, a: Any, b: Any, c: Any) -> Node:
-    """The external bisector of the angle ABC at B (direction BA/|BA| − BC/|BC|), with the length roots.
-
-    >>> c = Claim("x", "x")
-    >>> A, B, C = (c.free_point(n) for n in "ABC")
-    >>> c.external_bisector("e", A, B, C).conditions[0].startswith("A ≠ B")
-    True
-    """
-    return _bisector(self, name, a, b, c, False)
-
-
-# -- a line meeting a conic -------------------------------------------------------------------------------
-
-def _line_conic(l: Sequence[Any], k: Any, e: Any, sgn: int) -> tuple[Any, ...]:
-    """A common point of the line l and the conic K: ``(−β ± e) P + α Q`` with e² = β² − αγ.
-
-    P = l × (b, −a, 0) is the foot of the origin on l, Q = (b, −a, 0) the point at infinity of l; on
-    X = s P + t Q the conic reads α s² + 2β s t + γ t² (α = PᵀKP, β = PᵀKQ, γ = QᵀKQ), whose roots are
-    (s, t) = (−β ± e, α).
-    """
-    q = (l[1], -l[0], l[0] - l[0])
-    p = alg.cross(l, q)
-    kp, kq = alg.matvec(k, p), alg.matvec(k, q)
-    alpha, beta = alg.dot(p, kp), alg.dot(p, kq)
-    s = sgn * e - beta
-    return tuple(s * pi + alpha * qi for pi, qi in zip(p, q, strict=True))
-
-
-def _discriminant(l: Sequence[Any], k: Any) -> Any:
-    q = (l[1], -l[0], l[0] - l[0])
-    p = alg.cross(l, q)
-    kp, kq = alg.matvec(k, p), alg.matvec(k, q)
-    alpha, beta, gamma = alg.dot(p, kp), alg.dot(p, kq), alg.dot(q, kq)
-    return beta * beta - alpha * gamma
-
-
-def _radical_line(k: Any, m: Any) -> tuple[Any, ...]:
-    """The radical axis of two circles: ``m₀₀ K − k₀₀ M`` has no quadratic terms, w(2 r₁ x + 2 r₂ y + r₃ w)."""
-    r = [[m[0][0] * k[i][j] - k[0][0] * m[i][j] for j in range(3)] for i in range(3)]
-    return (r[0][2] + r[0][2], r[1][2] + r[1][2], r[2][2])
-
-
-def _meet_points(claim: Claim, names: Sequence[str], l: Node | None, k: Node, m: Node | None,
-                 what: str) -> list[Node]:
-    """One or two common points of a line l (or the radical axis of the circles K, M) and the conic K."""
-    key = "_".join(names)
-    line_of = (lambda vl, vk, vm: vl) if m is None else (lambda vl, vk, vm: _radical_line(vk, vm))
-    base = [x for x in (l, k, m) if x is not None]
-
-    def values(v: dict[Node, Any]) -> tuple[Any, Any, Any]:
-        return (v[l] if l is not None else None, v[k], v[m] if m is not None else None)
-
-    root = _new_root(claim, f"e_{key}", "intersection", f"e_{key}² = discriminant of {what}", False,
-                     square=lambda v: _discriminant(line_of(*values(v)), v[k]),
-                     words=("+", "−"))
-    out = []
-    for name, sgn in zip(names, (1, -1), strict=False):
-        def point(*vals: Any, sgn: int = sgn) -> tuple[Any, ...]:
-            *objs, e = vals
-            vl, vk, vm = (objs[0], objs[1], objs[2] if m is not None else None) if l is not None else \
-                (None, objs[0], objs[1])
-            return _line_conic(line_of(vl, vk, vm), vk, e, sgn)
-
-        desc = f"{'the other' if sgn < 0 else 'a'} common point of {what}"
-        out.append(_similar(claim.formula(name, "point", point, *base, root.node, description=desc,
-                                          conditions=[f"{what} meet ({name} is defined)"])))
-    root.text += "; " + (f"{names[0]} takes +e, {names[1]} −e" if len(names) > 1 else f"{names[0]} takes +e")
-
-    def core(*objs: Any) -> tuple[Any, ...]:
-        from ..conics import Conic
-
-        if m is None:
-            return Conic(objs[1]).intersections(objs[0])
-        return Conic(objs[0]).intersections(Conic(objs[1]))
-
-    for node in out:
-        _data(claim).core.append((node, tuple(base), core))
-    readers = list(zip(names, (1, -1), strict=False))
-    _data(claim).readings.append(
-        lambda signs: ", ".join(f"{n} = (−β {'+' if signs[root.symbol] * s > 0 else '−'} √Δ)·P + α·Q, the "
-                                f"{'first' if signs[root.symbol] * s > 0 else 'second'} common point of {what}"
-                                for n, s in readers))
-    return out
-
-
-def line_conic_intersection(self: Claim, name: str, l: Any, k: Any) -> Node:
-    """A common point of the line l and the circle (or conic) K, with no known common point: either root.
-
-    >>> c = Claim("x", "x")
-    >>> K = c.conic("K", [[1, 0, 0], [0, 1, 0], [0, 0, -1]])
-    >>> c.line_conic_intersection("X", c.free_line("l"), K).description
-    'a common point of l and K'
-    """
-    l, k = self._get(l, ("line",), "intersection"), self._get(k, ("conic",), "intersection")
-    return _meet_points(self, [name], l, k, None, f"{l.name} and {k.name}")[0]
-
-
-def line_conic_intersections(self: Claim, names: Sequence[str], l: Any, k: Any) -> list[Node]:
-    """Both common points of the line l and the circle (or conic) K, in either order (the roots ±e).
-
-    >>> c = Claim("x", "x")
-    >>> K = c.conic("K", [[1, 0, 0], [0, 1, 0], [0, 0, -1]])
-    >>> [n.name for n in c.line_conic_intersections(("X", "Y"), c.free_line("l"), K)]
-    ['X', 'Y']
-    """
-    l, k = self._get(l, ("line",), "intersections"), self._get(k, ("conic",), "intersections")
-    return _meet_points(self, list(names)[:2], l, k, None, f"{l.name} and {k.name}")
-
-
-def circle_intersection(self: Claim, name: str, k: Any, m: Any) -> Node:
-    """A common point of two circles K and M (either root): the radical axis meets K.
-
-    >>> c = Claim("x", "x")
-    >>> K = c.conic("K", [[1, 0, 0], [0, 1, 0], [0, 0, -1]])
-    >>> M = c.conic("M", [[1, 0, -1], [0, 1, 0], [-1, 0, -3]])
-    >>> c.circle_intersection("X", K, M).description
-    'a common point of K and M'
-    """
-    k, m = (self._get(x, ("conic",), "intersection") for x in (k, m))
-    return _meet_points(self, [name], None, k, m, f"{k.name} and {m.name}")[0]
-
-
-def circle_intersections(self: Claim, names: Sequence[str], k: Any, m: Any) -> list[Node]:
-    """Both common points of two circles K and M, in either order (the circles must not be concentric).
-
-    >>> c = Claim("x", "x")
-    >>> K = c.conic("K", [[1, 0, 0], [0, 1, 0], [0, 0, -1]])
-    >>> M = c.conic("M", [[1, 0, -1], [0, 1, 0], [-1, 0, -3]])
-    >>> [n.description for n in c.circle_intersections(("X", "Y"), K, M)]
-    ['a common point of K and M', 'the other common point of K and M']
-    """
-    k, m = (self._get(x, ("conic",), "intersections") for x in (k, m))
-    return _meet_points(self, list(names)[:2], None, k, m, f"{k.name} and {m.name}")
-
-
-def _tangents(claim: Claim, names: Sequence[str], p: Any, k: Any) -> list[Node]:
-    p, k = claim._get(p, ("point",), "tangentfrom"), claim._get(k, ("conic",), "tangentfrom")
-    polar = claim.polar(f"_polar_{k.name}_{p.name}_{'_'.join(names)}", k, p)
-    touch = _meet_points(claim, [f"_touch_{n}" for n in names], polar, k, None,
-                         f"the polar of {p.name} and {k.name}")
-    lines = [claim.join(n, p, t) for n, t in zip(names, touch, strict=True)]
-
-    def core(pp: Any, kk: Any) -> tuple[Any, ...]:
-        from ..conics import Conic
-
-        return Conic(kk).tangents_from(pp)
-
-    for line in lines:
-        _data(claim).core.append((line, (p, k), core))
-    return lines
-
-
-def tangent_from(self: Claim, name: str, p: Any, k: Any) -> Node:
-    """A tangent from the point P to the circle (or conic) K: the line from P to a point where the polar of P
-    meets K (either root; P must be outside K for real tangents).
-
-    >>> c = Claim("x", "x")
-    >>> K = c.conic("K", [[1, 0, 0], [0, 1, 0], [0, 0, -1]])
-    >>> c.tangent_from("t", c.free_point("P"), K).kind
-    'line'
-    """
-    return _tangents(self, [name], p, k)[0]
-
-
-def tangents_from(self: Claim, names: Sequence[str], p: Any, k: Any) -> list[Node]:
-    """Both tangents from P to K, in either order (one root: the two points where the polar of P meets K).
-
-    >>> c = Claim("x", "x")
-    >>> K = c.conic("K", [[1, 0, 0], [0, 1, 0], [0, 0, -1]])
-    >>> [n.name for n in c.tangents_from(("s", "t"), c.free_point("P"), K)], len(roots_of(c))
-    (['s', 't'], 1)
-    """
-    return _tangents(self, list(names)[:2], p, k)
-
-
-# -- roots of unity: rotations and regular polygons ---------------------------------------------------------
-
-def _zeta(claim: Claim, modulus: int) -> Root:
-    name = f"zeta_{modulus}"
-    for r in roots_of(claim):
-        if str(r.symbol) == name:
-            return r
-    return _new_root(claim, name, "unity", f"Φ_{modulus}({name}) = 0 (principal: {name} = e^(2πi/{modulus}))",
-                     True, modulus=modulus)
-
-
-def _cyclotomic_combination(modulus: int, exponents: Sequence[int], imaginary: bool) -> list[tuple[int, int]]:
-    """2·Re or 2·Im of Σ ζ^e (ζ = e^{2πi/M}) as a polynomial in ζ with integer coefficients, reduced by Φ_M:
-    2 cos a = ζ^k + ζ^{−k}, 2 sin a = −i (ζ^k − ζ^{−k}) with −i = ζ^{3M/4}."""
-    z = sympy.Symbol("z")
-    m = modulus
-    poly = sum((z ** ((-e) % m) if not imaginary else -z ** ((-e) % m)) + z ** (e % m) for e in exponents)
-    if imaginary:
-        poly = sympy.expand(poly * z ** (3 * m // 4))
-    phi = sympy.Poly(sympy.cyclotomic_poly(m, z), z)
-    rem = sympy.Poly(poly, z).rem(phi)
-    return [(int(mon[0]), int(c)) for mon, c in zip(rem.monoms(), rem.coeffs(), strict=True)]
-
-
-def _apply_terms(terms: list[tuple[int, int]], z: Any) -> Any:
-    out = z - z
-    for e, c in terms:
-        out = out + c * z ** e if e else out + c * (z ** 0)
-    return out
-
-
-def _turn(claim: Claim, name: str, x: Node, o: Node, turns: Fraction, powers: Sequence[int],
-          description: str) -> Node:
-    """O + S (X − O) with S = Σ_j R^j over ``powers``, R the rotation by ``turns`` full turns."""
-    den = turns.denominator
-    if den > MAX_POLYGON:
-        raise ObjectTypeError(f"{description}: the angle is a multiple of 1/{den} turn; at most 1/{MAX_POLYGON} "
-                              "is supported (the cyclotomic polynomial grows with it)")
-    modulus = math.lcm(den, 4)
-    k = turns.numerator * (modulus // den)
-    exps = [j * k for j in powers]
-    re = _cyclotomic_combination(modulus, exps, False)
-    im = _cyclotomic_combination(modulus, exps, True)
-    rational = all(e == 0 for e, _ in re + im)
-    args: list[Node] = [x, o]
-    if not rational:
-        args.append(_zeta(claim, modulus).node)
-
-    def rotated(px: Any, po: Any, z: Any = None) -> tuple[Any, ...]:
-        one = px[2] ** 0
-        cr = _apply_terms(re, z) if not rational else sum(c for _, c in re) * one
-        ci = _apply_terms(im, z) if not rational else sum(c for _, c in im) * one
-        u = _vector(po, px)
-        two_w = 2 * px[2]
-        return (two_w * po[0] + cr * u[0] - ci * u[1], two_w * po[1] + ci * u[0] + cr * u[1], two_w * po[2])
-
-    node = _similar(claim.formula(name, "point", rotated, *args, description=description,
-                                  conditions=[f"{x.name} and {o.name} are finite points"]))
-
-    def core(px: Any, po: Any) -> tuple[Any, ...]:
-        from .. import metric
-        from ..projective_plane import Point
-
-        angle = 2 * sympy.pi * turns
-        step = metric.rotation(sympy.cos(angle), sympy.sin(angle), po)
-        (ox, oy), total, current = po.dehomogenize(), [0, 0], px
-        for j in range(max(powers) + 1):  # O + Σ_j R^j (X − O) over the powers, walking round O
-            if j in powers:
-                cx, cy = current.dehomogenize()
-                total = [total[0] + cx - ox, total[1] + cy - oy]
-            current = step(current)
-        return (Point(ox + total[0], oy + total[1]),)
-
-    _data(claim).core.append((node, (x, o), core))
-    return node
-
-
-def rotate_degrees(self: Claim, name: str, x: Any, o: Any, degrees: int) -> Node:
-    """X rotated about O by an integer number of degrees (counter-clockwise; cos and sin in ℚ(ζ_M)).
-
-    >>> c = Claim("x", "x")
-    >>> c.rotate_degrees("Y", c.free_point("X"), c.free_point("O"), 60).description
-    'X rotated about O by 60°'
-    >>> [str(r.symbol) for r in roots_of(c)]
-    ['zeta_12']
-    """
-    x, o = self._get(x, ("point",), "rotate"), self._get(o, ("point",), "rotate")
-    if not isinstance(degrees, int) or isinstance(degrees, bool):
-        raise ObjectTypeError(f"rotate: the angle is an integer number of degrees, got {degrees!r}")
-    return _turn(self, name, x, o, Fraction(degrees % 360, 360), [1], f"{x.name} rotated about {o.name} by {degrees}°")
-
-
-def polygon_vertex(self: Claim, name: str, a: Any, b: Any, n: int, k: int) -> Node:
-    """The k-th vertex of the regular n-gon with consecutive vertices A (k = 0) and B (k = 1), counter-clockwise:
-    ``A + (1 + ω + … + ω^{k−1})(B − A)`` with ω = e^{2πi/n}.
-
-    >>> c = Claim("x", "x")
-    >>> c.polygon_vertex("C", c.free_point("A"), c.free_point("B"), 5, 2).description
-    'vertex 2 of the regular 5-gon A B …'
-    """
-    a, b = self._get(a, ("point",), "polygon"), self._get(b, ("point",), "polygon")
-    if not all(isinstance(v, int) and not isinstance(v, bool) for v in (n, k)) or not 3 <= n <= MAX_POLYGON:
-        raise ObjectTypeError(f"polygon: n is an integer from 3 to {MAX_POLYGON} and k an integer, got {n!r}, {k!r}")
-    k %= n
-    return _turn(self, name, b, a, Fraction(1, n), range(k), f"vertex {k} of the regular {n}-gon {a.name} {b.name} …") \
-        if k else _similar(self.formula(name, "point", lambda p: p, a, description=f"vertex 0 of the regular {n}-gon"))
-
 
 # -- the proof -------------------------------------------------------------------------------------------
 
@@ -553,32 +132,20 @@ class _Tower:
 
 def _evaluate(claim: Claim, scalar: Callable[[Any], Any], tower: _Tower, deadline: Any,
               estimate: bool = False) -> dict[Node, Any]:
-    """Every object's value, reduced modulo the roots' equations as they appear; with ``estimate`` a construction
-    that would need more than the engine's MAX_WORK term products raises before it starts (a product in C cannot
-    be interrupted by the time limit)."""
-    from .engine import MAX_WORK, _estimate, _map, _TooLarge
-
+    """Every object's value, reduced modulo the roots' equations as they appear (each root's equation joins the
+    tower once its value is known); with ``estimate`` the budget's MAX_WORK bounds each construction."""
     by_node = {r.node: r for r in roots_of(claim)}
-    values: dict[Node, Any] = {}
-    for node in claim.nodes.values():
-        deadline.check(f"constructing {node.name}")
-        args = [values[a] for a in node.args if isinstance(a, Node)]
-        if estimate:
-            work = _estimate(lambda v, node=node: node.operation.formula(node, v, scalar), args, tower.R)
-            if work is not None and work > MAX_WORK:
-                raise _TooLarge(f"{node.name} would need about {work:.1e} term products")
-        values[node] = _map(node.operation.formula(node, args, scalar), tower.reduce)
+
+    def after(node: Node, values: dict[Node, Any]) -> None:
         if node in by_node:
             tower.add(by_node[node], values)
-    return values
+
+    return evaluate(claim, scalar, tower.reduce, deadline, tower.R if estimate else None, after)
 
 
 def _requirements(claim: Claim, values: dict[Node, Any]) -> list[tuple[str, list[Any]]]:
-    from .engine import _nonzero_requirements, _objects_to_check
-    from .operations import flat
-
-    out = list(_nonzero_requirements(claim, values))
-    out += [(f"{n.name} is not the zero vector", flat(values[n])) for n in _objects_to_check(claim)]
+    out = list(nonzero_requirements(claim, values))
+    out += [(f"{n.label} is not the zero vector", flat(values[n])) for n in objects_to_check(claim)]
     return out
 
 
@@ -653,8 +220,6 @@ def _vanishes(R: PolynomialRing, p: Any, sub: dict[sympy.Symbol, Any], tower: _T
 
 def _check_branch(claim: Claim, R: PolynomialRing, values: dict[Node, Any], reqs: list[tuple[str, list[Any]]],
                   branch: _Branch, deadline: Any, tower: _Tower | None = None) -> tuple[str, list[Any]]:
-    from .engine import _conclusion_polys
-
     roots = roots_of(claim)
     if tower is not None and not (len(roots) == 1 and roots[0].kind == "unity"):
         tower = None
@@ -667,7 +232,7 @@ def _check_branch(claim: Claim, R: PolynomialRing, values: dict[Node, Any], reqs
         if all(vanishes(p, branch.values) for p in polys):
             return "degenerate", [text]
     residuals = []
-    for _label, poly in _conclusion_polys(claim, values):
+    for _label, poly in conclusion_polys(claim, values):
         deadline.check("evaluating the conclusion on a branch")
         if not vanishes(poly, branch.values):
             residuals.append(_sympy_value(R, poly, branch.values))
@@ -693,13 +258,11 @@ def recheck_branch(claim: Claim, values: dict[str, Any], branch: dict[str, str])
     >>> recheck_branch(c, {}, {"d_A_B": "4", "d_A_C": "3"}), recheck_branch(c, {}, {"d_A_B": "4", "d_A_C": "-3"})
     (False, True)
     """
-    from .engine import _Deadline
-
     roots = {str(r.symbol): r for r in roots_of(claim)}
     point = {p: sympy.Rational(values[str(p)]) for p in claim.parameters if str(p) not in roots}
     tower = _Tower(claim, [])
     R = tower.R
-    vals = _evaluate(claim, lambda e: R(sympy.sympify(e).xreplace(point)), tower, _Deadline(None))
+    vals = _evaluate(claim, lambda e: R(sympy.sympify(e).xreplace(point)), tower, Deadline(None))
     sub = {roots[k].symbol: sympy.sympify(v) for k, v in branch.items()}
     for r in roots.values():
         if r.kind == "unity":
@@ -708,7 +271,7 @@ def recheck_branch(claim: Claim, values: dict[str, Any], branch: dict[str, str])
         elif not is_zero(sub[r.symbol] ** 2 - _sympy_value(R, tower.reduce(r.square(vals)), sub)):
             return False
     b = _Branch({}, sub, True, "")
-    kind, _ = _check_branch(claim, R, vals, _requirements(claim, vals), b, _Deadline(None))
+    kind, _ = _check_branch(claim, R, vals, _requirements(claim, vals), b, Deadline(None))
     return kind == "fails"
 
 
@@ -718,9 +281,6 @@ def _proportional(u: Sequence[Any], v: Sequence[Any]) -> bool:
 
 def _core_object(node: Node, value: Any, tower: _Tower, branch: _Branch) -> Any:
     """A point, line or conic matrix of pgsym's core with the exact coordinates of ``value`` on the branch."""
-    from ..projective_plane import Line, Point
-    from .operations import flat
-
     if node.kind == "conic":
         return sympy.Matrix([[_sympy_value(tower.R, x, branch.values) for x in row] for row in value])
     coords = [_sympy_value(tower.R, x, branch.values) for x in flat(value)]
@@ -731,8 +291,6 @@ def _core_check(claim: Claim, rng: random.Random, deadline: Any) -> str:
     """At a rational instance, on the named branch, every algebraic object must be one of the objects pgsym's
     core builds from the same exact arguments (``metric.angle_bisectors``, ``Conic.intersections``,
     ``Conic.tangents_from``, ``metric.rotation``), so the proof's formulas and the library cannot drift."""
-    from .operations import flat
-
     records = _data(claim).core
     if not records:
         return "not needed"
@@ -751,7 +309,7 @@ def _core_check(claim: Claim, rng: random.Random, deadline: Any) -> str:
                 mine = [_sympy_value(tower.R, x, branch.values) for x in flat(values[node])]
                 candidates = build(*(_core_object(a, values[a], tower, branch) for a in args))
                 if not any(_proportional(mine, list(c.coords)) for c in candidates):
-                    return f"MISMATCH at {node.name}"
+                    return f"MISMATCH at {node.label}"
         except PgsymError as err:  # a degenerate instance or an undecidable cos(2π/7): try another
             last = str(err)
             continue
@@ -775,11 +333,8 @@ def prove_algebraic(claim: Claim, timeout: float | None = 10.0, seed: int = 0, i
     >>> prove_algebraic(c).branches[:33]
     'proved for every choice of root: '
     """
-    from .engine import _alarm, _Deadline, _rng, _Timeout, _TooLarge
-    from .verdicts import Certificate, Condition, Counterexample, Status, Verdict
-
     start = time.perf_counter()
-    deadline = _Deadline(timeout)
+    deadline = Deadline(timeout)
     roots = roots_of(claim)
     rootsyms = {r.symbol for r in roots}
     base = dict(name=claim.name, title=claim.title, statement=claim.statement, expected=claim.expected,
@@ -793,7 +348,7 @@ def prove_algebraic(claim: Claim, timeout: float | None = 10.0, seed: int = 0, i
 
     def proved(certificate: Certificate, branches: str) -> Any:
         # the core rebuilds the objects at a rational instance first: a disagreement withholds the proof
-        core = _core_check(claim, _rng(claim, seed), deadline)
+        core = _core_check(claim, claim_rng(claim, seed), deadline)
         if core.startswith("MISMATCH"):
             return done(Status.UNKNOWN, core_check=core, branches="no decision",
                         reason=f"pgsym's core and the proof formulas disagree ({core})")
@@ -804,10 +359,7 @@ def prove_algebraic(claim: Claim, timeout: float | None = 10.0, seed: int = 0, i
         return done(Status.UNKNOWN, reason="equation hypotheses together with square-root constructions are not "
                                            "supported", branches="no decision")
     try:
-        with _alarm(timeout):
-            from .engine import _conclusion_polys
-            from .normalisation import normalise
-
+        with alarm(timeout):
             norm, _why = normalise(claim)
             sub = norm.substitution if norm is not None else {}
             params = [p for p in claim.parameters if p not in rootsyms and p not in sub]
@@ -834,7 +386,7 @@ def prove_algebraic(claim: Claim, timeout: float | None = 10.0, seed: int = 0, i
                 conditions.append(Condition(f"{norm.condition} (frame)"))
             steps = ["triangular set (lex, roots first; a Gröbner basis): " + "; ".join(tower.text)]
             failing = None
-            for label, poly in _conclusion_polys(claim, values, ring=R):
+            for label, poly in conclusion_polys(claim, values, ring=R):
                 deadline.check("reducing the conclusion")
                 if poly == 0:
                     steps.append(f"{label} reduces to 0 modulo the defining equations")
@@ -847,8 +399,6 @@ def prove_algebraic(claim: Claim, timeout: float | None = 10.0, seed: int = 0, i
                 steps.append(f"{label} is not in the ideal, but c·({label}) is for every polynomial c of the "
                              f"condition {needed}: it vanishes wherever {needed}")
             if failing is None:
-                from .operations import flat
-
                 entries = [p for v in values.values() for p in flat(v) if not isinstance(p, int)]
                 certificate = Certificate("ideal membership modulo the defining equations (Wu's method: a "
                                           "triangular set with unit initials)", R.field + f"[{len(R.symbols)} "
@@ -866,11 +416,11 @@ def prove_algebraic(claim: Claim, timeout: float | None = 10.0, seed: int = 0, i
                                           [*steps, *lines], 0, backend=R.backend,
                                           normalisation="" if norm is None else norm.describe())
                 return proved(certificate, text)
-            return _sample(claim, failing, R, rng=_rng(claim, seed), instances=instances, deadline=deadline,
+            return _sample(claim, failing, R, rng=claim_rng(claim, seed), instances=instances, deadline=deadline,
                            done=done, counterexample=Counterexample)
-    except _TooLarge as err:
+    except TooLarge as err:
         return done(Status.UNKNOWN, reason=f"the expansion is too large: {err.args[0]}", branches="no decision")
-    except _Timeout as err:
+    except Timeout as err:
         stage = err.args[0] if err.args else "working"
         return done(Status.UNKNOWN, reason=f"timed out after {timeout} s while {stage}", branches="no decision")
     except PgsymError as err:
@@ -902,8 +452,6 @@ def _named_branch_proof(claim: Claim, values: dict[Node, Any], tower: _Tower, de
     square of a polynomial s (e.g. |AB| for B = A + p²(1 − t², 2t), the tangent half-angle of Wu's school), or
     equals the square of an earlier root. The sign of the named root is then evident (s·w_A w_B a sum of even
     powers with positive coefficients), the root is replaced by ±s, and the conclusion must reduce to zero."""
-    from .engine import _conclusion_polys
-
     R = tower.R
     roots = roots_of(claim)
     gens = [g for g in R.symbols if g not in {r.symbol for r in roots}]
@@ -953,7 +501,7 @@ def _named_branch_proof(claim: Claim, values: dict[Node, Any], tower: _Tower, de
     if not sub:
         return None
     others = []
-    for label, poly in _conclusion_polys(claim, values):
+    for label, poly in conclusion_polys(claim, values):
         deadline.check("reducing the conclusion on the named branch")
         expr = R.to_expr(tower.reduce(poly))
         named = tower.reduce(R(sympy.expand(expr.xreplace(sub))))
@@ -993,8 +541,6 @@ def _every_root(roots: list[Root]) -> str:
 
 def _coordinates(claim: Claim, tower: _Tower, values: dict[Node, Any], branch: _Branch) -> str:
     """The exact coordinates of the claim's algebraic points on a branch, as text ("; X = (1, 2 + √3)")."""
-    from .operations import flat
-
     out = []
     for node, _args, _build in _data(claim).core:
         if node.kind != "point" or node.name.startswith("_"):
@@ -1008,8 +554,6 @@ def _coordinates(claim: Claim, tower: _Tower, values: dict[Node, Any], branch: _
 
 def _sample(claim: Claim, failing: tuple[str, Any], R0: PolynomialRing, rng: random.Random, instances: int,
             deadline: Any, done: Callable[..., Any], counterexample: Any) -> Any:
-    from .verdicts import Status
-
     seen = 0
     other_failure = None
     for attempt in range(12 * instances):
@@ -1025,8 +569,10 @@ def _sample(claim: Claim, failing: tuple[str, Any], R0: PolynomialRing, rng: ran
         for b, (kind, residuals) in results:
             if kind == "fails" and b.named:
                 b.text += _coordinates(claim, tower, values, b)
-                ce = counterexample({str(s): Fraction(int(v.p), int(v.q)) for s, v in point.items()},
-                                    residuals, claim, branch={str(s): str(v) for s, v in b.values.items()})
+                at = {str(s): Fraction(int(v.p), int(v.q)) for s, v in point.items()}
+                roots = {str(s): str(v) for s, v in b.values.items()}
+                ce = counterexample(at, residuals, claim, branch=roots,
+                                    check=partial(recheck_branch, claim, at, roots))
                 return done(Status.FALSE, counterexample=ce,
                             method="exact evaluation at a rational instance on each choice of root",
                             reason=f"the conclusion fails on the named branch ({b.text})",
@@ -1054,5 +600,14 @@ def _sample(claim: Claim, failing: tuple[str, Any], R0: PolynomialRing, rng: ran
                 branches=f"held on every branch at {seen} random instances; not proved")
 
 
-# last, so that either module may be imported first: claims.py attaches the constructions above to Claim at its end
-from .claims import Claim, Node  # noqa: E402
+# the constructions as plain functions of a claim, as they were spelled before they became methods of Claim
+angle_bisector = SquareRootConstructions.angle_bisector
+external_bisector = SquareRootConstructions.external_bisector
+line_conic_intersection = SquareRootConstructions.line_conic_intersection
+line_conic_intersections = SquareRootConstructions.line_conic_intersections
+circle_intersection = SquareRootConstructions.circle_intersection
+circle_intersections = SquareRootConstructions.circle_intersections
+tangent_from = SquareRootConstructions.tangent_from
+tangents_from = SquareRootConstructions.tangents_from
+rotate_degrees = SquareRootConstructions.rotate_degrees
+polygon_vertex = SquareRootConstructions.polygon_vertex

@@ -55,8 +55,9 @@ from typing import Any
 
 from ..errors import InputLimitError, PgsymError
 from ..limits import MAX_ARGUMENT_CHARS, MAX_STATEMENT_LINE_CHARS, MAX_STATEMENT_NAME_CHARS, read_text_file
+from .engine import prove
 from .errors import AlphaGeometryError, StatementError, UnsupportedConstructionError
-from .language import KEYWORDS
+from .language import KEYWORDS, parse_statement
 
 __all__ = ["MAX_AG_BYTES", "MAX_AG_LINE_CHARS", "MAX_AG_PROBLEMS", "OUTCOMES", "Outcome", "Problem",
            "read_alphageometry", "read_alphageometry_file", "solve", "translate"]
@@ -181,9 +182,6 @@ def solve(problem: Problem, timeout: float | None = 10.0) -> Outcome:
     if problem.error is not None:
         status = "unsupported" if isinstance(problem.error, UnsupportedConstructionError) else "error"
         return Outcome(problem, status, message=str(problem.error))
-    from .engine import prove
-    from .language import parse_statement
-
     start = time.perf_counter()
     try:
         claim = parse_statement(problem.statement or "", name=problem.name, source=problem.source)

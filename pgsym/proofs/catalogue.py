@@ -115,13 +115,6 @@ def prove_all(names: Iterable[str] | None = None, *, timeout: float | None = 10.
 
 # -- helpers -------------------------------------------------------------------------------
 
-def _dist2(p: tuple, q: tuple) -> tuple:
-    """Squared distance of two finite points of P² as a (numerator, denominator) pair."""
-    dx = p[0] * q[2] - q[0] * p[2]
-    dy = p[1] * q[2] - q[1] * p[2]
-    return (dx * dx + dy * dy, p[2] * p[2] * q[2] * q[2])
-
-
 def _ratio_of(r: tuple, s: tuple) -> tuple:
     return (r[0] * s[1], r[1] * s[0])
 
@@ -425,8 +418,9 @@ def _euclidean_preserves_distance(c: Claim) -> None:
     E = _euclidean(c)
     A, B = c.free_point("A"), c.free_point("B")
     A2, B2 = c.apply("A2", E, A), c.apply("B2", E, B)
-    c.conclude_equal_ratio(c.formula("d2", "ratio", _dist2, A2, B2, description="|A2 B2|²"),
-                           c.formula("d", "ratio", _dist2, A, B, description="|A B|²"))
+    dist2 = alg.squared_distance_fraction
+    c.conclude_equal_ratio(c.formula("d2", "ratio", dist2, A2, B2, description="|A2 B2|²"),
+                           c.formula("d", "ratio", dist2, A, B, description="|A B|²"))
 
 
 @_entry("similarity-preserves-length-ratio", "A similarity preserves ratios of lengths", "hierarchy-2d")
@@ -435,7 +429,8 @@ def _similarity_preserves_length_ratio(c: Claim) -> None:
     S = _similarity(c)
     A, B, C = c.free_point("A"), c.free_point("B"), c.free_point("C")
     A2, B2, C2 = c.apply("A2", S, A), c.apply("B2", S, B), c.apply("C2", S, C)
-    ratio = lambda a, b, cc: _ratio_of(_dist2(a, b), _dist2(a, cc))  # noqa: E731
+    dist2 = alg.squared_distance_fraction
+    ratio = lambda a, b, cc: _ratio_of(dist2(a, b), dist2(a, cc))  # noqa: E731
     c.conclude_equal_ratio(c.formula("r2", "ratio", ratio, A2, B2, C2, description="|A2B2|²/|A2C2|²"),
                            c.formula("r", "ratio", ratio, A, B, C, description="|AB|²/|AC|²"))
 
@@ -871,8 +866,9 @@ def _affine_preserves_distance(c: Claim) -> None:
     """Claims |TA TB|² = |AB|² for an affinity T."""
     T = _affine(c)
     A, B = c.free_point("A"), c.free_point("B")
-    c.conclude_equal_ratio(c.formula("d2", "ratio", _dist2, c.apply("A2", T, A), c.apply("B2", T, B)),
-                           c.formula("d", "ratio", _dist2, A, B))
+    dist2 = alg.squared_distance_fraction
+    c.conclude_equal_ratio(c.formula("d2", "ratio", dist2, c.apply("A2", T, A), c.apply("B2", T, B)),
+                           c.formula("d", "ratio", dist2, A, B))
 
 
 @_entry("pascal-without-conic", "FALSE: Pascal's line for any six points", "classical-theorems", expected=False)

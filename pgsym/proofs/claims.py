@@ -29,6 +29,7 @@ from .. import ring as alg
 from ..errors import InvalidCoordinatesError, ObjectTypeError
 from .errors import NonPolynomialClaimError, UndefinedConstructionError
 from .operations import KINDS, OPERATIONS, Operation, constructions, operation
+from .square_roots import RootData, SquareRootConstructions
 
 __all__ = [
     "KINDS",
@@ -55,7 +56,7 @@ class Node:
     conditions: list[str] = field(default_factory=list)
     #: the group a formula commutes with when its builder knows it (a square-root construction), else None
     group: str | None = None
-    #: a root adjoined by its defining equation (pgsym.proofs.algebraic): no free object, so no frame moves it
+    #: a root adjoined by its defining equation (pgsym.proofs.square_roots): no free object, so no frame moves it
     root: bool = False
 
     @property
@@ -68,6 +69,23 @@ class Node:
                 f"{self.name} was built by {self.op!r}, which is no operation of the table "
                 f"(known: {', '.join(OPERATIONS)})"
             ) from None
+
+    @property
+    def label(self) -> str:
+        """How a verdict names the object: the statement's own name, or for an object the prover added (its name
+        starts with ``_``) what it is, e.g. ``|AB|²`` for a squared distance a conclusion needed.
+
+        >>> c = Claim("x", "x")
+        >>> A, B = c.free_point("A"), c.free_point("B")
+        >>> c.conclude_equal_length(A, B, B, A)
+        >>> A.label, [n.label for n in c.nodes.values() if n.name.startswith("_")]
+        ('A', ['|AB|²', '|BA|²'])
+        """
+        if not self.name.startswith("_"):
+            return self.name
+        if self.root or not self.description:
+            return self.name[1:]
+        return self.description
 
     def __repr__(self) -> str:
         return f"<{self.kind} {self.name} = {self.description}>"
@@ -116,7 +134,7 @@ def _count(n: int) -> str:
     return _NUMBER_WORDS[n] if n < len(_NUMBER_WORDS) else str(n)
 
 
-class Claim:
+class Claim(SquareRootConstructions):
     """A statement of projective geometry to be proved for generic values of its parameters.
 
     Build it with the ``free_*`` methods (free objects), the construction methods
@@ -154,6 +172,8 @@ class Claim:
         self.nodes: dict[str, Node] = {}
         self.hypotheses: list[tuple[sympy.Expr, str]] = []
         self.conclusions: list[Conclusion] = []
+        #: the roots of the square-root constructions (:mod:`pgsym.proofs.square_roots`), None without any
+        self.square_roots: RootData | None = None
 
     def __repr__(self) -> str:
         return f"Claim({self.name!r}, {self.title!r})"
@@ -317,7 +337,7 @@ class Claim:
             for i, (a, allowed) in enumerate(zip(args, kinds, strict=True)):
                 nodes.append(self._get(a, (nodes[0].kind,) if entry.same_kind and i else allowed, op))
             nodes = tuple(nodes)
-        names = [n.name for n in nodes]
+        names = [n.label for n in nodes]
         return self._node(name, kind or entry.result_kind([n.kind for n in nodes]), op, nodes,
                           description or entry.description(names, data), data,
                           entry.conditions(names, name, data) if conditions is None else conditions)
@@ -929,29 +949,4 @@ class Claim:
         return [c for n in self.nodes.values() for c in n.conditions]
 
 
-def node_size(node: Node) -> int | None:
-    """Number of coordinates of a vector node (None for matrices and scalars)."""
-    return KINDS.get(node.kind)
-
-
-def is_vector(node: Node) -> bool:
-    """True for points, lines and planes."""
-    return node.kind in _VECTOR_KINDS
-
-
 _ = alg  # the formulas module is part of the claim vocabulary (see Claim.formula)
-
-
-# -- constructions with square roots: defined in pgsym.proofs.algebraic, methods of every claim ------------------
-from . import algebraic as _algebraic  # noqa: E402  (it needs Claim and Node, defined above)
-
-Claim.angle_bisector = _algebraic.angle_bisector  # type: ignore[attr-defined]
-Claim.external_bisector = _algebraic.external_bisector  # type: ignore[attr-defined]
-Claim.line_conic_intersection = _algebraic.line_conic_intersection  # type: ignore[attr-defined]
-Claim.line_conic_intersections = _algebraic.line_conic_intersections  # type: ignore[attr-defined]
-Claim.circle_intersection = _algebraic.circle_intersection  # type: ignore[attr-defined]
-Claim.circle_intersections = _algebraic.circle_intersections  # type: ignore[attr-defined]
-Claim.tangent_from = _algebraic.tangent_from  # type: ignore[attr-defined]
-Claim.tangents_from = _algebraic.tangents_from  # type: ignore[attr-defined]
-Claim.rotate_degrees = _algebraic.rotate_degrees  # type: ignore[attr-defined]
-Claim.polygon_vertex = _algebraic.polygon_vertex  # type: ignore[attr-defined]

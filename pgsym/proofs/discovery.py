@@ -33,6 +33,7 @@ import sympy
 
 from .. import ring as alg
 from .claims import Claim, Node
+from .engine import prove
 from .operations import OPERATIONS, flat
 from .verdicts import Verdict
 
@@ -83,34 +84,41 @@ def _same(u: Any, v: Any) -> bool:
     return all(u[i] * v[j] == u[j] * v[i] for i in range(len(u)) for j in range(i + 1, len(u)))
 
 
+def _on(p: Node) -> list[Node]:
+    """The arguments p lies on by construction (the operation table's ``lies_on``)."""
+    return [p.args[i] for i in p.operation.lies_on]
+
+
+def _through(x: Node) -> list[Node]:
+    """The arguments x passes through by construction (the operation table's ``through``)."""
+    return [x.args[i] for i in x.operation.through]
+
+
+def _lies_on(p: Node, x: Node) -> bool:
+    """p lies on x by construction: x is one of p's own, or holds one of them (a point of a line of two planes)."""
+    return any(a is x or any(b is x for b in _on(a)) for a in _on(p))
+
+
 def _incident_by_construction(p: Node, x: Node) -> bool:
     """p lies on x (a line, plane or conic) because of how one of them was built."""
-    if x.op in ("join", "plane_through", "conic_through") and p in x.args:
+    if any(a is p for a in _through(x)) or _lies_on(p, x):
         return True
-    if p.op == "line_meets_plane" and (p.args[1] is x or (p.args[0].op == "line_of_planes" and x in p.args[0].args)):
-        return True
-    if p.op == "point_on_line" and x.op == "plane_through" and set(p.args) <= set(x.args):
-        return True
-    if p.op in ("meet", "point_on_planes", "point_of_line") and x in p.args:
-        return True
-    if p.op in ("second_intersection", "point_on_conic") and p.args[0] is x:
-        return True
-    if p.op == "point_on_line" and x.op == "join" and set(p.args) == set(x.args):
-        return True
-    on_conic = p.op in ("second_intersection", "point_on_conic")
-    return x.op == "polar" and p.kind == "point" and x.args[1] is p and on_conic
+    if p.operation.on_span and x.kind in ("line", "plane") and all(any(a is b for b in _through(x)) for a in p.args):
+        return True  # a point of the line AB lies on every line and plane through A and B (not on a conic)
+    pole = x.operation.polar_of
+    return pole is not None and x.args[pole[1]] is p and _lies_on(p, x.args[pole[0]])
 
 
 def _on_line3_by_construction(c: Node, a: Node, b: Node) -> bool:
     """c lies on the line AB of P³ by construction (a point of AB, or where the line AB meets a plane)."""
-    if c.op == "point_on_line" and set(c.args) == {a, b}:
+    if c.operation.on_span and {id(x) for x in c.args} == {id(a), id(b)}:
         return True
-    return c.op == "line_meets_plane" and c.args[0].op == "line3" and set(c.args[0].args) == {a, b}
+    return any({id(x) for x in _through(line)} == {id(a), id(b)} for line in _on(c) if line.kind == "line3")
 
 
 def _collinear_by_construction(pts: tuple[Node, ...], lines: list[Node]) -> bool:
     for a, b, c in itertools.permutations(pts):
-        if c.op == "point_on_line" and set(c.args) == {a, b}:
+        if c.operation.on_span and {id(x) for x in c.args} == {id(a), id(b)}:
             return True
     return any(all(_incident_by_construction(p, l) for p in pts) for l in lines)
 
@@ -202,8 +210,6 @@ def discover(claim: Claim, *, timeout: float | None = 2.0, seed: int = 0, prove_
     left out.
     The claim's own conclusions are not needed (and not used).
     """
-    from .engine import prove
-
     rng = random.Random(seed)
     values = None
     for _ in range(8):  # an instance where every construction is defined

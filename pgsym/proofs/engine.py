@@ -35,24 +35,24 @@ All three read each construction's formula, conditions and core builder from the
 from __future__ import annotations
 
 import itertools
-import math
 import random
-import signal
-import threading
 import time
-import zlib
 from collections.abc import Callable
-from contextlib import contextmanager
 from enum import StrEnum
 from fractions import Fraction
+from functools import partial
 from typing import Any
 
 import sympy
 
 from .. import ring as alg
-from ..errors import PgsymError
+from ..errors import ObjectTypeError, PgsymError
 from ..exact import is_zero
+from .algebraic import prove_algebraic
+from .budget import Deadline, Timeout, TooLarge, alarm
 from .claims import Claim, Node
+from .errors import UndefinedConstructionError
+from .evaluation import claim_rng, conclusion_polys, evaluate, nonzero_requirements, objects_to_check
 from .normalisation import Normalisation, normalise
 from .operations import CoreDegenerate, flat
 from .polynomials import PolynomialRing, default_backend
@@ -77,219 +77,7 @@ class _Outcome(StrEnum):
     NO_WITNESS = "no-witness"
 
 
-class _Timeout(Exception):
-    pass
-
-
-class _TooLarge(Exception):
-    pass
-
-
-MAX_TERMS = 400_000
-"""The most terms one coordinate may have in the exact pass: beyond, the verdict is *unknown* rather than a
-computation that a time limit cannot interrupt (python-flint's products run in C)."""
-
-MAX_WORK = 1_500_000_000
-"""The most term products one construction may need in the exact pass (estimated before it runs, see
-:class:`_Cost`; python-flint forms 10⁸ to 10⁹ a second): beyond, the verdict is *unknown* at once, since one
-product in C cannot be interrupted by a time limit."""
-
-
-class _Cost:
-    """A stand-in for a polynomial that knows only bounds on its number of terms and its degree.
-
-    The table's formulas are written for any ring, so running one on stand-ins bounds the term products
-    it would form (``n₁·n₂`` for each product) before the real polynomials are multiplied; ``tally[0]`` adds
-    them up. A product has at most ``n₁·n₂`` terms and at most as many as there are monomials of its degree
-    in the ring's ``k`` variables, ``C(k + d, k)``.
-    """
-
-    __slots__ = ("d", "k", "n", "tally")
-
-    def __init__(self, n: int, d: int, k: int, tally: list[int]) -> None:
-        self.n, self.d, self.k, self.tally = n, d, k, tally
-
-    def _parts(self, other: Any) -> tuple[int, int]:
-        return (other.n, other.d) if isinstance(other, _Cost) else (1, 0)
-
-    def _monomials(self, d: int) -> int:
-        return math.comb(self.k + d, self.k)
-
-    def __add__(self, other: Any) -> _Cost:
-        n, d = self._parts(other)
-        d = max(self.d, d)
-        return _Cost(min(self.n + n, self._monomials(d)), d, self.k, self.tally)
-
-    __radd__ = __sub__ = __rsub__ = __add__
-
-    def __mul__(self, other: Any) -> _Cost:
-        n, d = self._parts(other)
-        self.tally[0] += self.n * n
-        d += self.d
-        return _Cost(min(self.n * n, self._monomials(d)), d, self.k, self.tally)
-
-    __rmul__ = __mul__
-
-    def __neg__(self) -> _Cost:
-        return self
-
-    def __pow__(self, e: int) -> _Cost:
-        out = _Cost(1, 0, self.k, self.tally)
-        for _ in range(int(e)):
-            out = out * self
-        return out
-
-
-def _estimate(compute: Callable[[list[Any]], Any], args: list[Any], R: PolynomialRing) -> int | None:
-    """The term products ``compute`` would form on these arguments' values (None when it cannot be told)."""
-    tally = [0]
-    k = len(R.symbols)
-    stand_ins = [_map(a, lambda x: _Cost(R.nterms(x), max(R.degree(x), 0), k, tally)) for a in args]
-    try:
-        compute(stand_ins)
-    except Exception:  # a computation that compares or converts its values: no estimate, MAX_TERMS still holds
-        return None
-    return tally[0]
-
-
-class _Deadline:
-    def __init__(self, seconds: float | None) -> None:
-        self.end = None if seconds is None else time.perf_counter() + seconds
-        self.stage = "start"
-
-    def check(self, stage: str | None = None) -> None:
-        if stage:
-            self.stage = stage
-        if self.end is not None and time.perf_counter() > self.end:
-            raise _Timeout(self.stage)
-
-
-@contextmanager
-def _alarm(seconds: float | None):  # type: ignore[no-untyped-def]
-    """Interrupt long single computations with SIGALRM (main thread on Unix only)."""
-    usable = (seconds is not None and seconds > 0 and hasattr(signal, "setitimer")
-              and threading.current_thread() is threading.main_thread())
-    if not usable:
-        yield
-        return
-
-    def handler(signum, frame):  # type: ignore[no-untyped-def]
-        raise _Timeout("interrupted")
-
-    old = signal.signal(signal.SIGALRM, handler)
-    signal.setitimer(signal.ITIMER_REAL, seconds + 0.05)
-    try:
-        yield
-    finally:
-        signal.setitimer(signal.ITIMER_REAL, 0)
-        signal.signal(signal.SIGALRM, old)
-
-
 # -- evaluation of a claim in one arithmetic -----------------------------------------------
-
-def _evaluate(claim: Claim, scalar: Callable[[Any], Any], reduce: Callable[[Any], Any] | None = None,
-              deadline: _Deadline | None = None, ring: PolynomialRing | None = None) -> dict[Node, Any]:
-    values: dict[Node, Any] = {}
-    for node in claim.nodes.values():
-        if deadline is not None:
-            deadline.check(f"constructing {node.name}")
-        args = [values[a] for a in node.args if isinstance(a, Node)]
-        if ring is not None:
-            work = _estimate(lambda v, node=node: node.operation.formula(node, v, scalar), args, ring)
-            if work is not None and work > MAX_WORK:
-                raise _TooLarge(f"{node.name} would need about {work:.1e} term products")
-        value = node.operation.formula(node, args, scalar)
-        if reduce is not None:
-            value = _map(value, reduce)
-        elif deadline is not None and any(hasattr(x, "__len__") and len(x) > MAX_TERMS for x in flat(value)):
-            raise _TooLarge(f"{node.name} has more than {MAX_TERMS} terms")
-        values[node] = value
-    return values
-
-
-def _map(value: Any, f: Callable[[Any], Any]) -> Any:
-    if isinstance(value, tuple):
-        return tuple(_map(v, f) for v in value)
-    return f(value)
-
-
-def _is_zero_vector(value: Any) -> bool:
-    return all(x == 0 for x in flat(value))
-
-
-def _conclusion_polys(claim: Claim, values: dict[Node, Any], skip: Any = (), ring: PolynomialRing | None = None
-                      ) -> list[tuple[str, Any]]:
-    """(label, polynomial) pairs that must all vanish; rank conclusions are handled separately.
-
-    With ``ring`` (exact polynomials of that ring) each conclusion is first formed on :class:`_Cost` stand-ins, and one
-    that would need more than :data:`MAX_WORK` term products raises :class:`_TooLarge` before it starts.
-    """
-    out: list[tuple[str, Any]] = []
-    for c in claim.conclusions:
-        if any(c is x for x in skip):
-            continue
-        vals = [values[a] for a in c.args if isinstance(a, Node)]
-        names = [a.name for a in c.args if isinstance(a, Node)]
-        if ring is not None:
-            work = _estimate(lambda v, kind=c.kind, names=names: _conclusion_values(kind, v, names), vals, ring)
-            if work is not None and work > MAX_WORK:
-                raise _TooLarge(f"the conclusion {c.text or c.kind} would need about {work:.1e} term products")
-        out.extend(_conclusion_values(c.kind, vals, names))
-    return out
-
-
-def _conclusion_values(kind: str, vals: list[Any], names: list[str]) -> list[tuple[str, Any]]:
-    """The (label, polynomial) pairs of one conclusion of that kind, from its arguments' values."""
-    out: list[tuple[str, Any]] = []
-    if kind == "incident":
-        out.append((f"{names[1]}ᵀ{names[0]}", alg.dot(vals[0], vals[1])))
-    elif kind == "det":
-        out.append((f"det[{' '.join(names)}]", alg.det(vals)))
-    elif kind == "proportional":
-        u, v = flat(vals[0]), flat(vals[1])
-        k = next((i for i, x in enumerate(v) if x != 0), 0)
-        for i in range(len(u)):
-            if i != k:
-                out.append((f"{names[0]}[{i}]·{names[1]}[{k}] − {names[0]}[{k}]·{names[1]}[{i}]",
-                            u[i] * v[k] - u[k] * v[i]))
-    elif kind == "equal":
-        u, v = flat(vals[0]), flat(vals[1])
-        for i, (a, b) in enumerate(zip(u, v, strict=True)):
-            out.append((f"{names[0]}[{i}] − {names[1]}[{i}]", a - b))
-    elif kind == "zero":
-        for i, a in enumerate(flat(vals[0])):
-            out.append((f"{names[0]}[{i}]" if len(flat(vals[0])) > 1 else names[0], a))
-    elif kind == "equal_ratio":
-        (n1, d1), (n2, d2) = vals
-        out.append((f"num({names[0]})·den({names[1]}) − num({names[1]})·den({names[0]})", n1 * d2 - n2 * d1))
-    return out
-
-
-def _nonzero_requirements(claim: Claim, values: dict[Node, Any]) -> list[tuple[str, list[Any]]]:
-    out = []
-    for node in claim.nodes.values():
-        args = [values[a] for a in node.args if isinstance(a, Node)]
-        for text, polys in zip(node.conditions, node.operation.nonzero(node, values[node], args), strict=True):
-            out.append((text, polys))
-    for c in claim.conclusions:
-        if c.kind == "proportional":
-            for a in c.args:
-                out.append((f"{a.name} is not zero", flat(values[a])))
-        if c.kind == "equal_ratio":
-            for a in c.args:
-                if a.op != "const":
-                    out.append((f"the denominator of {a.name} is not zero", [values[a][1]]))
-    return out
-
-
-def _objects_to_check(claim: Claim) -> list[Node]:
-    """The constructed objects that must not be the zero vector: every point, line, plane, line of P³ and
-    conic built by an operation (a matrix or scalar may be zero on purpose, e.g. a residual concluded zero)."""
-    protected = {id(a) for c in claim.conclusions if c.kind in ("zero", "equal") for a in c.args}
-    return [n for n in claim.nodes.values()
-            if n.op not in ("free", "const") and n.kind not in ("matrix", "scalar", "ratio")
-            and id(n) not in protected]
-
 
 def _rank_mod(rows: list[list[int]], p: int) -> tuple[int, tuple[int, ...], tuple[int, ...]]:
     """Rank of an integer matrix modulo p, with the rows and columns of a nonzero maximal minor."""
@@ -393,13 +181,13 @@ def _modp(x: Fraction) -> int:
 def _check_point(claim: Claim, values: dict[Node, Any], modp: bool) -> tuple[str, Any]:
     """Classify one evaluated point: 'degenerate', 'fails' (with residuals), 'holds' (with rank data)."""
     red = (lambda x: x % PRIME) if modp else (lambda x: x)
-    for _text, polys in _nonzero_requirements(claim, values):
+    for _text, polys in nonzero_requirements(claim, values):
         if all(red(p) == 0 for p in polys):
             return _Outcome.DEGENERATE, _text
-    for node in _objects_to_check(claim):
+    for node in objects_to_check(claim):
         if all(red(p) == 0 for p in flat(values[node])):
-            return _Outcome.DEGENERATE, f"{node.name} is the zero vector"
-    residuals = [red(val) for _, val in _conclusion_polys(claim, values)]
+            return _Outcome.DEGENERATE, f"{node.label} is the zero vector"
+    residuals = [red(val) for _, val in conclusion_polys(claim, values)]
     rank_info = []
     for c in claim.conclusions:
         if c.kind == "rank":
@@ -420,10 +208,6 @@ def _check_point(claim: Claim, values: dict[Node, Any], modp: bool) -> tuple[str
     return _Outcome.HOLDS, rank_info
 
 
-def _rng(claim: Claim, seed: int) -> random.Random:
-    return random.Random(zlib.crc32(claim.name.encode()) + 7919 * seed)
-
-
 def _random_point(claim: Claim, rng: random.Random, bound: int) -> dict[sympy.Symbol, int]:
     if bound >= PRIME:
         return {s: rng.randrange(PRIME) for s in claim.parameters}
@@ -431,17 +215,19 @@ def _random_point(claim: Claim, rng: random.Random, bound: int) -> dict[sympy.Sy
 
 
 def _find_small_counterexample(claim: Claim, R: Any, rng: random.Random, fallback: dict[sympy.Symbol, int],
-                               deadline: _Deadline) -> Counterexample:
+                               deadline: Deadline) -> Counterexample:
     for attempt in range(120):
         deadline.check("searching a small counterexample")
         point = _random_point(claim, rng, 2 + attempt // 10)
-        values = _evaluate(claim, _point_evaluator(claim, R, point))
+        values = evaluate(claim, _point_evaluator(claim, R, point))
         kind, data = _check_point(claim, values, modp=False)
         if kind == _Outcome.FAILS:
-            return Counterexample({str(s): Fraction(v) for s, v in point.items()}, data, claim)
-    values = _evaluate(claim, _point_evaluator(claim, R, fallback))
+            at = {str(s): Fraction(v) for s, v in point.items()}
+            return Counterexample(at, data, claim, check=partial(recheck_counterexample, claim, at))
+    values = evaluate(claim, _point_evaluator(claim, R, fallback))
     kind, data = _check_point(claim, values, modp=False)
-    return Counterexample({str(s): Fraction(v) for s, v in fallback.items()}, data, claim)
+    at = {str(s): Fraction(v) for s, v in fallback.items()}
+    return Counterexample(at, data, claim, check=partial(recheck_counterexample, claim, at))
 
 
 def _describe_ring(R: PolynomialRing) -> str:
@@ -450,14 +236,14 @@ def _describe_ring(R: PolynomialRing) -> str:
     return f"{R.field}[{shown}] ({len(names)} variables, {R.order} order)"
 
 
-def _random_pass(claim: Claim, R: Any, rng: random.Random, deadline: _Deadline) -> tuple[str, Any, str]:
+def _random_pass(claim: Claim, R: Any, rng: random.Random, deadline: Deadline) -> tuple[str, Any, str]:
     """Returns (outcome, data, summary) with outcome in 'fails', 'holds', 'degenerate', 'low-rank'."""
     last = (_Outcome.DEGENERATE, "", "")
     for trial in range(4):
         deadline.check("random evaluation")
         point = _random_point(claim, rng, PRIME)
         frac = _point_evaluator(claim, R, point)
-        values = _evaluate(claim, lambda e, frac=frac: _modp(frac(e)), reduce=lambda x: x % PRIME, deadline=deadline)
+        values = evaluate(claim, lambda e, frac=frac: _modp(frac(e)), reduce=lambda x: x % PRIME, deadline=deadline)
         kind, data = _check_point(claim, values, modp=True)
         if kind == _Outcome.FAILS:
             return (_Outcome.FAILS, point,
@@ -477,7 +263,7 @@ def _random_pass(claim: Claim, R: Any, rng: random.Random, deadline: _Deadline) 
 def _proportional_by_division(c: Any, values: dict[Node, Any], R: PolynomialRing) -> str | None:
     """Prove u = q·v (or v = q·u) with one exact polynomial division; None when that does not work."""
     u, v = (flat(values[a]) for a in c.args)
-    names = [a.name for a in c.args]
+    names = [a.label for a in c.args]
     for (x, y), (nx, ny) in (((u, v), names), ((v, u), names[::-1])):
         k = next((i for i, t in enumerate(y) if t != 0), None)
         if k is None or x[k] == 0:
@@ -519,7 +305,7 @@ def _general_position(claim: Claim, normalisation: Normalisation, backend: str |
 
 
 def _membership_given(poly: Any, basis: list[Any], requirements: list[tuple[str, list[Any]]],
-                      deadline: _Deadline) -> str | None:
+                      deadline: Deadline) -> str | None:
     """A non-degeneracy condition under which the conclusion follows from the hypotheses, or None.
 
     The condition "c₁, …, cₖ not all zero" suffices when every cᵢ·g lies in the ideal: wherever some cᵢ ≠ 0
@@ -549,7 +335,7 @@ def _solved_hypotheses(claim: Claim) -> dict[sympy.Symbol, sympy.Expr] | None:
     return sub
 
 
-def _exact_pass(claim: Claim, deadline: _Deadline, rank_witness: list[Any], backend: str | None = None,
+def _exact_pass(claim: Claim, deadline: Deadline, rank_witness: list[Any], backend: str | None = None,
                 normalisation: Normalisation | None = None) -> tuple[str, Any]:
     solved = _solved_hypotheses(claim) if claim.hypotheses else None
     hyps = claim.hypotheses if solved is None else []
@@ -559,22 +345,22 @@ def _exact_pass(claim: Claim, deadline: _Deadline, rank_witness: list[Any], back
     conv = _converter(claim, order, field=bool(claim.hypotheses), backend="sympy" if hyps else backend,
                       substitution=substitution)
     R = conv.R
-    values = _evaluate(claim, conv, deadline=deadline, ring=R)
+    values = evaluate(claim, conv, deadline=deadline, ring=R)
     entries = [p for v in values.values() for p in flat(v) if not isinstance(p, int)]
     largest = max((R.nterms(p) for p in entries), default=0)
     conditions = []
     requirements: list[tuple[str, list[Any]]] = []
-    for text, polys in _nonzero_requirements(claim, values):
+    for text, polys in nonzero_requirements(claim, values):
         deadline.check("checking the non-degeneracy conditions")
         if all(p == 0 for p in polys):
             return _Outcome.DEGENERATE, (f"the condition {text} fails identically "
                                          "(the construction is undefined for every value of the parameters)")
         conditions.append(Condition(text, raw=[p for p in polys if p != 0][:3]))
         requirements.append((text, [p for p in polys if p != 0]))
-    for node in _objects_to_check(claim):
+    for node in objects_to_check(claim):
         deadline.check("checking that no construction vanishes identically")
         if all(p == 0 for p in flat(values[node])):
-            return _Outcome.DEGENERATE, (f"{node.name} = {node.description} is identically the zero vector "
+            return _Outcome.DEGENERATE, (f"{node.label} = {node.description} is identically the zero vector "
                                          "(the construction is undefined for every value of the parameters)")
     if normalisation is not None:  # last, so that the claim's own conditions read first
         conditions += _general_position(claim, normalisation, backend)
@@ -586,7 +372,7 @@ def _exact_pass(claim: Claim, deadline: _Deadline, rank_witness: list[Any], back
         basis = [R(g.as_expr()) for g in G.exprs]
         method = "Gröbner basis ideal membership"
         steps.append("Gröbner basis (grevlex) of the hypotheses: " + "; ".join(R.text(g) for g in basis))
-        for label, poly in _conclusion_polys(claim, values, ring=R):
+        for label, poly in conclusion_polys(claim, values, ring=R):
             deadline.check("reducing the conclusion")
             quotients, rem = poly.div(basis)
             if rem != 0:
@@ -616,7 +402,7 @@ def _exact_pass(claim: Claim, deadline: _Deadline, rank_witness: list[Any], back
                 if line is not None:
                     steps.append(line)
                     done.append(c)
-        for label, poly in _conclusion_polys(claim, values, done, ring=R):
+        for label, poly in conclusion_polys(claim, values, done, ring=R):
             deadline.check("expanding the conclusion")
             if poly != 0:
                 if solved:
@@ -633,13 +419,13 @@ def _exact_pass(claim: Claim, deadline: _Deadline, rank_witness: list[Any], back
             for rs, cs, minor in alg.minors(rows, r + 1):
                 deadline.check("expanding the minors")
                 if minor != 0:
-                    return _Outcome.NONZERO, (f"minor rows {rs} columns {cs} of {node.name}", R.text(minor))
-            steps.append(f"all {r + 1}×{r + 1} minors of {node.name} expand to 0")
+                    return _Outcome.NONZERO, (f"minor rows {rs} columns {cs} of {node.label}", R.text(minor))
+            steps.append(f"all {r + 1}×{r + 1} minors of {node.label} expand to 0")
         witness = next((w for w in rank_witness if w[0] is node), None)
         if witness is None:
-            return _Outcome.NO_WITNESS, node.name
+            return _Outcome.NO_WITNESS, node.label
         _, _, _rank, rs, cs = witness
-        steps.append(f"the {r}×{r} minor of {node.name} on rows {rs}, columns {cs} is nonzero at a random point "
+        steps.append(f"the {r}×{r} minor of {node.label} on rows {rs}, columns {cs} is nonzero at a random point "
                      "modulo p, hence not the zero polynomial")
     _, degree = _size(R, entries)
     certificate = Certificate(method, _describe_ring(R), steps, largest,
@@ -715,21 +501,21 @@ def _agree(claim: Claim, objs: dict[Node, Any], values: dict[Node, Any]) -> str 
         if node.kind == "ratio":
             n, d = mine
             if d == 0 or Fraction(n) / Fraction(d) != _core_value(obj)[0]:
-                return node.name
+                return node.label
             continue
         u, v = flat(mine), _core_value(obj)
         k = next((i for i, x in enumerate(v) if x != 0), None)
         if len(u) != len(v) or k is None or u[k] == 0 or any(u[i] * v[k] != u[k] * v[i] for i in range(len(u))):
-            return node.name
+            return node.label
     return None
 
 
-def _core_check(claim: Claim, rng: random.Random, deadline: _Deadline) -> str:
+def _core_check(claim: Claim, rng: random.Random, deadline: Deadline) -> str:
     R = _converter(claim).R
     for _ in range(8):
         deadline.check("comparing with pgsym's core objects")
         point = _random_point(claim, rng, 9)
-        values = _evaluate(claim, _point_evaluator(claim, R, point))
+        values = evaluate(claim, _point_evaluator(claim, R, point))
         try:
             objs = _core_objects(claim, point, values=values)
         except (PgsymError, CoreDegenerate):
@@ -747,7 +533,7 @@ def _on_hypotheses(claim: Claim, point: dict[Any, Fraction]) -> bool:
     return all(h.xreplace(sub) == 0 for h, _ in claim.hypotheses)
 
 
-def _variety_points(claim: Claim, rng: random.Random, deadline: _Deadline, tries: int = 60):
+def _variety_points(claim: Claim, rng: random.Random, deadline: Deadline, tries: int = 60):
     """Exact points of the hypothesis variety: random small values for some parameters, the others solved for.
 
     Each hypothesis is solved for a parameter it contains to the first degree (or, failing that, for the
@@ -804,7 +590,7 @@ def _variety_refutation(ce: Counterexample, summary: str, start: float, base: di
                    elapsed=time.perf_counter() - start, **base)
 
 
-def _variety_counterexample(claim: Claim, deadline: _Deadline, rng: random.Random, tries: int = 60,
+def _variety_counterexample(claim: Claim, deadline: Deadline, rng: random.Random, tries: int = 60,
                             enough: int = 8) -> Counterexample | None:
     """A point of the hypothesis variety where the constructions are defined and the conclusion fails.
 
@@ -813,10 +599,11 @@ def _variety_counterexample(claim: Claim, deadline: _Deadline, rng: random.Rando
     R = _converter(claim).R
     holds = 0
     for point in _variety_points(claim, rng, deadline, tries):
-        values = _evaluate(claim, _point_evaluator(claim, R, point))
+        values = evaluate(claim, _point_evaluator(claim, R, point))
         kind, data = _check_point(claim, values, modp=False)
         if kind == _Outcome.FAILS and _on_hypotheses(claim, point):
-            return Counterexample({str(s): v for s, v in point.items()}, data, claim)
+            at = {str(s): v for s, v in point.items()}
+            return Counterexample(at, data, claim, check=partial(recheck_counterexample, claim, at))
         holds += kind == _Outcome.HOLDS
         if holds >= enough:  # a false claim fails almost everywhere on the variety: enough searching
             break
@@ -831,7 +618,7 @@ def recheck_counterexample(claim: Claim, values: dict[str, Any]) -> bool:
     polynomials are evaluated exactly.
     """
     point = {s: Fraction(values[str(s)]) for s in claim.parameters}
-    vals = _evaluate(claim, _point_evaluator(claim, _converter(claim).R, point))
+    vals = evaluate(claim, _point_evaluator(claim, _converter(claim).R, point))
     try:
         objs = _core_objects(claim, point, quantities_may_fail=True, values=vals)
     except (PgsymError, CoreDegenerate):
@@ -870,26 +657,20 @@ def prove(claim: Claim, *, timeout: float | None = 10.0, seed: int = 0, core_che
     ('false', True)
     """
     if not isinstance(claim, Claim):
-        from ..errors import ObjectTypeError
-
         raise ObjectTypeError(f"prove expects a Claim (or use pgsym.proofs.prove with a catalogue name), got {claim!r}")
     if not claim.conclusions:
-        from .claims import UndefinedConstructionError
-
         raise UndefinedConstructionError(f"claim {claim.name!r} has no conclusion; add one with a conclude_* method")
-    if claim.__dict__.get("algebraic") is not None:  # square roots: branch semantics (pgsym.proofs.algebraic)
-        from .algebraic import prove_algebraic
-
+    if claim.square_roots is not None:  # square roots: branch semantics (pgsym.proofs.algebraic)
         return prove_algebraic(claim, timeout=timeout, seed=seed, backend=backend)
     start = time.perf_counter()
-    deadline = _Deadline(timeout)
+    deadline = Deadline(timeout)
     base = dict(name=claim.name, title=claim.title, statement=claim.statement, expected=claim.expected,
                 constructions=_constructions(claim), hypotheses=[t for _, t in claim.hypotheses],
                 conclusion=[c.text for c in claim.conclusions])
-    rng = _rng(claim, seed)
+    rng = claim_rng(claim, seed)
     summary = ""
     try:
-        with _alarm(timeout):
+        with alarm(timeout):
             R = _converter(claim).R
             rank_witness: list[Any] = []
             if claim.hypotheses:
@@ -945,11 +726,11 @@ def prove(claim: Claim, *, timeout: float | None = 10.0, seed: int = 0, core_che
                                elapsed=time.perf_counter() - start, **base)
             return Verdict(status=Status.UNKNOWN, random_pass=summary, reason=reason,
                            elapsed=time.perf_counter() - start, **base)
-    except _TooLarge as err:
+    except TooLarge as err:
         return Verdict(status=Status.UNKNOWN, random_pass=summary,
                        reason=f"the expansion is too large: {err.args[0]} (no frame could be chosen, or it did not "
                               "suffice)", elapsed=time.perf_counter() - start, **base)
-    except _Timeout as err:
+    except Timeout as err:
         return Verdict(status=Status.UNKNOWN, random_pass=summary,
                        reason=f"timed out after {timeout} s while {err.args[0] if err.args else 'working'}",
                        elapsed=time.perf_counter() - start, **base)

@@ -138,7 +138,7 @@ from .errors import (
     StatementSyntaxError,
 )
 
-__all__ = ["STATEMENT_SUFFIX", "parse_statement", "read_statement"]
+__all__ = ["KEYWORDS", "STATEMENT_SUFFIX", "keywords", "parse_statement", "read_statement"]
 
 STATEMENT_SUFFIX = ".thm"
 """The file suffix of theorems in the statement language."""
@@ -169,9 +169,10 @@ class _Token:
 
 @dataclass
 class _Call:
-    """A parsed expression: an operation and its arguments (names, tuples or calls)."""
+    """A parsed expression: the keyword of an operation of the language and its arguments (names, tuples or
+    calls)."""
 
-    op: str
+    word: str
     args: list[Any]
     tok: _Token
 
@@ -313,7 +314,7 @@ def _canonical(e: Any) -> str:
         return e.text
     if isinstance(e, _Tuple):
         return "(" + ", ".join(("-" if s < 0 else "") + t.text for s, t in e.coords) + ")"
-    return e.op + " " + " ".join(_canonical(a) if not isinstance(a, _Call) else f"({_canonical(a)})" for a in e.args)
+    return e.word + " " + " ".join(_canonical(a) if not isinstance(a, _Call) else f"({_canonical(a)})" for a in e.args)
 
 
 # -- building the claim ---------------------------------------------------------------------------------------
@@ -475,11 +476,11 @@ class _Reader:
             if self.count > MAX_STATEMENT_OBJECTS:
                 raise StatementLimitError(f"more than {MAX_STATEMENT_OBJECTS} objects in one theorem",
                                           e.tok.line, e.tok.col)
-        node = _BUILD[e.op](self.claim, key, args, e.tok)
-        if e.op == "conic" and args and args[0].kind == _P:
+        node = _BUILD[e.word](self.claim, key, args, e.tok)
+        if e.word == "conic" and args and args[0].kind == _P:
             self.first_point[key] = args[0]
-        if e.op == "circle" and node.op in ("circle", "circle3"):  # a known point: A of circle O A, circle A B C
-            self.first_point[key] = args[1] if node.op == "circle" else args[0]
+        if e.word == "circle" and node.operation.through:  # a known point: A of circle O A, circle A B C
+            self.first_point[key] = args[node.operation.through[0]]
         return node
 
     def _coordinates(self, name: str, kind: str, e: _Tuple) -> Node:
@@ -804,3 +805,93 @@ def _algebraic_definition(reader: _Reader, word: str, cur: _Line, names: list[st
         got = " ".join(f"{a.kind} {a.name}" for a in args) or "nothing"
         raise StatementKindError(f"{form.text} takes ({accepted}), got {got}", form.line, form.col)
     build()
+
+
+# -- the keywords and what each means (for references and error messages) -------------------------------------------
+
+_MEANINGS: dict[str, tuple[str, str]] = {  # keyword -> (group, meaning)
+    "title": ("statement", "the theorem's title (the rest of the line)"),
+    "expect": ("statement", "expect true or expect false: whether the statement is meant to hold"),
+    "params": ("statement", "names of parameters that coordinates may use"),
+    "prove": ("statement", "a conclusion: a predicate and its arguments; several prove lines must all hold"),
+    "on": ("statement", "point NAME on line, conic or circle: a point with one parameter of its own"),
+    "through": ("statement", "point NAME on conic K through P: the point of K seen from P"),
+    "points": ("free objects", "free points of P² (two parameters each)"),
+    "lines": ("free objects", "free lines of P²"),
+    "points3": ("free objects", "free points of P³"),
+    "planes": ("free objects", "free planes of P³"),
+    "points1": ("free objects", "free points of P¹"),
+    "conics": ("free objects", "free conics (six parameters each)"),
+    "matrices": ("free objects", "free invertible 3×3 matrices"),
+    "matrices4": ("free objects", "free invertible 4×4 matrices"),
+    "matrices2": ("free objects", "free invertible 2×2 matrices"),
+    "point": ("kinds", "a point of P²: point NAME = expression, or given coordinates"),
+    "line": ("kinds", "a line of P²"),
+    "point3": ("kinds", "a point of P³"),
+    "plane": ("kinds", "a plane of P³; as an operation: the plane through three points of P³"),
+    "line3": ("kinds", "a line of P³"),
+    "conic": ("kinds", "a conic; as an operation: the conic through five points or tangent to five lines"),
+    "point1": ("kinds", "a point of P¹"),
+    "ratio": ("kinds", "a number built from the figure (a quotient of two polynomials)"),
+    "matrix": ("kinds", "a matrix (given entries)"),
+    "join": ("operations", "two points → their line; two points of P³ → line3; three points of P³ → plane"),
+    "meet": ("operations", "two lines → their point; two planes → line3; line3 and plane, three planes → point3; "
+                           "as a predicate: two lines of P³ meet"),
+    "tangent": ("operations", "conic, point on it → the tangent there; as a predicate: a line touches a conic"),
+    "polar": ("operations", "conic, point → the polar of the point"),
+    "second": ("operations", "conic C, point P of C, point Q → the second point of C on PQ; circles K L, common "
+                             "point A → their second common point"),
+    "harmonic": ("operations", "A B C → the harmonic conjugate of C with respect to A, B; as a predicate: "
+                               "A B C D is harmonic (cross-ratio −1)"),
+    "crossratio": ("operations", "A B C D → the cross-ratio (A, B; C, D)"),
+    "midpoint": ("operations", "two finite points → their affine midpoint"),
+    "apply": ("operations", "matrix, object → its image (point, line, plane or conic)"),
+    "dual": ("operations", "conic → its dual conic (the matrix adj C)"),
+    "parallel": ("Euclidean operations", "line l, point P → the line through P parallel to l; as a predicate: "
+                                         "two lines are parallel"),
+    "perpendicular": ("Euclidean operations", "line l, point P → the line through P perpendicular to l; as a "
+                                              "predicate: two lines are perpendicular"),
+    "bisector": ("Euclidean operations", "A B → the perpendicular bisector of the segment AB"),
+    "foot": ("Euclidean operations", "point P, line l → the foot of the perpendicular from P to l"),
+    "reflect": ("Euclidean operations", "X P → X reflected in the point P; X l → X reflected in the line l"),
+    "rotate": ("Euclidean operations", "X O c s → X rotated about O by the angle with cosine c and sine s; "
+                                       "X O DEGREES → by a whole number of degrees (square roots)"),
+    "translate": ("Euclidean operations", "X A B → X moved by the vector from A to B"),
+    "circle": ("Euclidean operations", "O A → centre O through A; A B C → through three points; O r → centre O, "
+                                       "squared radius r"),
+    "centre": ("Euclidean operations", "circle (or conic) → its centre"),
+    "invert": ("Euclidean operations", "X K → the inverse of X in the circle K"),
+    "dist2": ("Euclidean operations", "A B → the squared distance (a ratio)"),
+    "area": ("Euclidean operations", "A B C → the signed area of the triangle (a ratio)"),
+    "segratio": ("Euclidean operations", "A B C D → the signed ratio AB / CD of parallel segments"),
+    "add": ("Euclidean operations", "two ratios (or a ratio and a number) → their sum"),
+    "sub": ("Euclidean operations", "two ratios (or a ratio and a number) → their difference"),
+    "mul": ("Euclidean operations", "two ratios (or a ratio and a number) → their product"),
+    "collinear": ("predicates", "three points of P² or P³ on one line"),
+    "concurrent": ("predicates", "three lines through one point"),
+    "coplanar": ("predicates", "four points of P³ on one plane"),
+    "conconic": ("predicates", "six points on one conic, or six lines tangent to one"),
+    "equal": ("predicates", "two objects equal up to scale; two ratios, or a ratio and a number, equal"),
+    "equallength": ("predicates", "A B C D: AB and CD are equally long"),
+    "equalangle": ("predicates", "A B C D E F: the oriented angle ∠ABC equals ∠DEF modulo π"),
+    "concyclic": ("predicates", "four points on one circle (or one line)"),
+    "equalarea": ("predicates", "A B C D E F: the triangles have equal signed areas"),
+    "anglebisector": ("square roots", "A B C → the internal bisector of the angle ABC"),
+    "exbisector": ("square roots", "A B C → the external bisector of the angle ABC"),
+    "intersection": ("square roots", "l K or K M → a common point of a line (or circle) and a circle"),
+    "intersections": ("square roots", "points X Y = intersections l K: both common points, in either order"),
+    "tangentfrom": ("square roots", "P K → a tangent from P to the circle K"),
+    "tangentsfrom": ("square roots", "lines s t = tangentsfrom P K: both tangents, in either order"),
+    "polygon": ("square roots", "A B n k → vertex k of the regular n-gon with consecutive vertices A, B"),
+}
+
+
+def keywords() -> list[tuple[str, str, str]]:
+    """Every keyword of the statement language with its group and meaning, in the order of the grammar.
+
+    >>> [k for k in keywords() if k[0] == "midpoint"]
+    [('midpoint', 'operations', 'two finite points → their affine midpoint')]
+    >>> {word for word, _, _ in keywords()} == KEYWORDS
+    True
+    """
+    return [(word, group, meaning) for word, (group, meaning) in _MEANINGS.items()]

@@ -53,6 +53,7 @@ from typing import Any
 import sympy
 
 from .claims import Claim, Node
+from .operations import flat
 
 __all__ = ["FRAMES", "GROUPS", "Normalisation", "normalise"]
 
@@ -149,14 +150,12 @@ def _fresh_coefficients(node: Node, counts: Counter) -> bool:
 
 
 def _parameter_counts(claim: Claim) -> Counter:
-    from .operations import flat
-
     counts: Counter = Counter()
     for node in claim.nodes.values():
         # every node with coefficient data (a free object, a combination, a constant, the parameter of a point on a
         # line or a conic, a squared radius, a rotation's cosine and sine): a parameter is "own" only when it
         # appears once, alone, in all of them
-        if (node.op in ("free", "combine", "const") or node.operation.coefficients) and node.data is not None:
+        if node.operation.coefficients and node.data is not None:
             for e in flat(node.data):
                 for s in sympy.sympify(e).free_symbols:
                     counts[s] += 1 if isinstance(e, sympy.Symbol) else 2  # inside an expression: never "own"
@@ -173,6 +172,11 @@ _INVARIANT_WORDS = {"projective": "projectively invariant", "affine": "invariant
                     "similarity": "invariant under similarities", "euclidean": "invariant under isometries"}
 
 
+def _free(node: Node) -> bool:
+    """A free object of the claim (given, not a constant)."""
+    return node.operation.given and not node.operation.constant
+
+
 def _own(e: Any, counts: Counter) -> bool:
     return isinstance(e, sympy.Symbol) and counts[e] == 1
 
@@ -186,17 +190,10 @@ def _node_group(node: Node, counts: Counter) -> str | None:
     similarity, the only ones the similarity frame uses). Anything else: ``None``.
     """
     op = node.operation
-    if node.op == "formula" and node.group:  # a construction with square roots (algebraic.py)
+    if node.group:  # a construction with square roots says its group itself (pgsym.proofs.square_roots)
         return node.group
-    if node.op in ("point_on_line", "point_of_line", "point_on_conic"):
-        return op.group if _own(node.data[0], counts) else None
-    if node.op == "circle_radius":
-        r = node.data[0]
-        if _own(r, counts):
-            return "similarity"
-        return "euclidean" if r.is_Rational and r != 0 else None
-    if node.op == "rotate":
-        return "similarity" if all(sympy.sympify(e).is_Rational for e in node.data) else None
+    if op.node_group is not None:
+        return op.node_group(node.data, lambda e: _own(e, counts))
     return op.group
 
 
@@ -211,15 +208,14 @@ def _character(node: Node, group: str) -> Any:
     det(M)^a exists (b must be 0); under orientation-preserving similarities det M = k², so the factor is
     k^(2a + b); under isometries it is 1; homographies keep only cross-ratios (a = b = 0).
     """
-    raw = {"dist2": (0, 2), "area": (1, 0), "segratio": (0, 0), "cross_ratio": (0, 0),
-           "cross_ratio_collinear": (0, 0)}
-    if node.op == "const":
+    op = node.operation
+    if op.constant:
         value = node.data[0]
         if not sympy.sympify(value).is_Rational:
             return None  # a parameter as a ratio: its behaviour under the group is unknown
         return _ZERO if value == 0 else ((0,) if group in ("affine", "similarity") else ())  # the factor 1
-    if node.op in raw:
-        a, b = raw[node.op]
+    if op.ratio_scaling is not None:
+        a, b = op.ratio_scaling
         if group == "projective":
             return () if (a, b) == (0, 0) else None
         if group == "affine":
@@ -227,11 +223,11 @@ def _character(node: Node, group: str) -> Any:
         if group == "similarity":
             return (2 * a + b,)
         return ()
-    if node.op in ("add", "sub", "mul"):
+    if op.ratio_arithmetic is not None:
         r, s = (_character(x, group) for x in node.args)
         if r is None or s is None:
             return None
-        if node.op == "mul":
+        if op.ratio_arithmetic == "product":
             return _ZERO if _ZERO in (r, s) else tuple(x + y for x, y in zip(r, s, strict=True))
         if r == _ZERO or s == _ZERO:
             return s if r == _ZERO else r
@@ -264,24 +260,24 @@ def _obstacle(claim: Claim, counts: Counter, group: str = "projective") -> str |
         if c.kind not in _INVARIANT_CONCLUSIONS or c.kind == "zero":
             return f"the conclusion '{c.text}' is not {_INVARIANT_WORDS[group]}"
     for node in claim.nodes.values():
-        if node.op == "const":
+        if node.operation.constant:
             continue
-        if node.op == "free":
+        if node.operation.given:
             if node.root:  # a root of pgsym.proofs.algebraic: fixed by its defining equation
                 continue
             if node.kind in FRAMES and _generic_vector(node, counts):
                 continue
             if node.kind == "conic" and _generic_symmetric(node, counts):
                 continue
-            return f"{node.name} is a fixed object or has special coordinates {node.description}"
-        if node.op == "combine":
+            return f"{node.label} is a fixed object or has special coordinates {node.description}"
+        if node.operation.fresh_coefficients:
             if _fresh_coefficients(node, counts):
                 continue
-            return f"{node.name} = {node.description} depends on the representatives of its points"
+            return f"{node.label} = {node.description} depends on the representatives of its points"
         if _node_group(node, counts) not in allowed:
             what = {"projective": "every homography", "affine": "every affine map",
                     "similarity": "every similarity", "euclidean": "every isometry"}[group]
-            return f"{node.name} = {node.description} ({node.op}) does not commute with {what}"
+            return f"{node.label} = {node.description} ({node.op}) does not commute with {what}"
     return None
 
 
@@ -317,7 +313,7 @@ def _metric_frame(claim: Claim, group: str) -> Normalisation | None:
     """The first free points of the claim sent to the group's frame (None when there are too few of them)."""
     targets = _METRIC_FRAMES[group]
     # points in the chart w = 1 (or with their own w), which the frame's points fit
-    free = [n for n in claim.nodes.values() if n.op == "free" and n.kind == "point"]
+    free = [n for n in claim.nodes.values() if _free(n) and n.kind == "point"]
     if len(free) < len(targets):
         return None
     chosen = free[: len(targets)]
@@ -365,7 +361,8 @@ def normalise(claim: Claim) -> tuple[Normalisation | None, str]:
     counts = _parameter_counts(claim)
     why = _obstacle(claim, counts)
     if why is not None:
-        metric = any(n.op not in ("free", "const", "combine") and _node_group(n, counts) not in (None, "projective")
+        metric = any(not (n.operation.given or n.operation.fresh_coefficients)
+                     and _node_group(n, counts) not in (None, "projective")
                      for n in claim.nodes.values())
         if not metric:
             return None, f"no normalisation: {why}"
@@ -381,7 +378,7 @@ def normalise(claim: Claim) -> tuple[Normalisation | None, str]:
 
 
 def _projective(claim: Claim) -> tuple[Normalisation | None, str]:
-    free = [n for n in claim.nodes.values() if n.op == "free" and n.kind in FRAMES]
+    free = [n for n in claim.nodes.values() if _free(n) and n.kind in FRAMES]
     by_kind: dict[str, list[Node]] = {}
     for n in free:
         by_kind.setdefault(n.kind, []).append(n)

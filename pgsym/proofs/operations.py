@@ -29,20 +29,30 @@ from typing import Any
 import sympy
 from sympy import Matrix
 
-from .. import affine, conic_metric, conics, invariants, metric, plucker, projective_line, projective_plane, space
+from .. import (
+    affine,
+    conic_metric,
+    conic_pencil,
+    conics,
+    invariants,
+    metric,
+    plucker,
+    projective_line,
+    projective_plane,
+    space,
+)
 from .. import ring as alg
 from ..exact import is_zero
 from ..homogeneous import HomogeneousVector
 from ..kinds import object_classes
 
 __all__ = [
-    "EUCLIDEAN_OPERATIONS", "KINDS", "OPERATIONS", "CoreDegenerate", "Operation", "constructions", "flat", "operation",
+    "EUCLIDEAN_OPERATIONS", "KINDS", "OPERATIONS", "CoreDegenerate", "Operation", "affine_vector", "constructions",
+    "flat", "map_nested", "operation",
 ]
 
 # Proofs carry a line of P³ as its 4×4 Plücker matrix (the wedge of two points), not as the six
 # Plücker coordinates of the Line3 class, so its size here is that of a matrix.
-_MATRIX_FORM = ("line3",)
-
 #: kind of object -> number of homogeneous coordinates (None for matrices, scalars and ratios): the kinds of
 #: pgsym's classes, plus the kinds that exist only in proofs (matrix, scalar, ratio)
 KINDS: dict[str, int | None] = {
@@ -58,6 +68,17 @@ _VECTOR_KINDS = tuple(k for k, size in KINDS.items() if size is not None)
 
 class CoreDegenerate(Exception):
     """The core cannot build an object at this point (e.g. a singular matrix): try another point."""
+
+
+def map_nested(value: Any, f: Callable[[Any], Any]) -> Any:
+    """``f`` applied to every entry of a nested tuple value, keeping its shape.
+
+    >>> map_nested(((1, 2), 3), lambda x: 10 * x)
+    ((10, 20), 30)
+    """
+    if isinstance(value, tuple):
+        return tuple(map_nested(v, f) for v in value)
+    return f(value)
 
 
 def flat(value: Any) -> list[Any]:
@@ -108,7 +129,19 @@ class Operation:
       the span of the core's own arguments;
     * ``conclusion``: the value is a quantity of a conclusion (zero exactly when the statement holds, e.g. the
       reciprocal product of two lines that meet), so it vanishes identically on a true claim and is never a
-      degenerate construction.
+      degenerate construction;
+    * ``given``: the value is given (a free object or a constant), not constructed: it is never checked for
+      vanishing identically, and a constant's denominator is not a condition;
+    * ``lies_on``: the indices of the arguments the result lies on by construction (the meet of two lines lies on
+      both, the second point of a conic on the conic), ``through``: those the result passes through (the join of
+      two points, the conic through five), ``polar_of``: ``(conic, point)`` when the result passes through the
+      point exactly when the point lies on the conic (a polar) — what discovery marks as true by construction;
+    * for the choice of a frame (:mod:`pgsym.proofs.normalisation`): ``constant`` (a number given as a ratio),
+      ``fresh_coefficients`` (the value depends on the representatives unless its coefficients are parameters of
+      its own: ``combine``), ``node_group(data, own)`` the group when it depends on the node's data (``own(e)``:
+      ``e`` is a parameter used nowhere else), ``ratio_scaling`` ``(a, b)`` when a ratio changes by
+      det(M)^a · k^b under an affine map or a similarity of scale k, ``ratio_arithmetic`` ``"sum"`` or
+      ``"product"`` for the arithmetic of ratios.
     """
 
     name: str
@@ -126,6 +159,15 @@ class Operation:
     group: str | None = "projective"
     conclusion: bool = False
     on_span: bool = False
+    given: bool = False
+    constant: bool = False
+    fresh_coefficients: bool = False
+    node_group: Callable[[Any, Callable[[Any], bool]], str | None] | None = None
+    ratio_scaling: tuple[int, int] | None = None
+    ratio_arithmetic: str | None = None
+    lies_on: tuple[int, ...] = ()
+    through: tuple[int, ...] = ()
+    polar_of: tuple[int, int] | None = None
 
     def result_kind(self, arg_kinds: Sequence[str]) -> str:
         """The kind of the result for arguments of the given kinds."""
@@ -383,34 +425,56 @@ def _line_of_planes_formula(node: Any, v: list[Any], scalar: Scalar) -> Any:
     return _dual_plucker(alg.wedge(v[0], v[1]))
 
 
+# -- the group of a construction that depends on its data ------------------------------------------------------
+
+def _family(data: Any, own: Callable[[Any], bool]) -> str | None:
+    """A point with a parameter of its own: a homography maps the family of its values onto the family."""
+    return "projective" if own(data[0]) else None
+
+
+def _radius_group(data: Any, own: Callable[[Any], bool]) -> str | None:
+    """A squared radius of its own is rescaled by a similarity (the family again); a fixed nonzero number is kept
+    only by isometries."""
+    r = data[0]
+    if own(r):
+        return "similarity"
+    return "euclidean" if r.is_Rational and r != 0 else None
+
+
+def _rotation_group(data: Any, own: Callable[[Any], bool]) -> str | None:
+    """A rotation by a fixed angle commutes with every orientation-preserving similarity."""
+    return "similarity" if all(sympy.sympify(e).is_Rational for e in data) else None
+
+
 # -- the table -------------------------------------------------------------------------------------------
 
 _POINT, _LINE, _POINT1, _POINT3, _PLANE = ("point",), ("line",), ("point1",), ("point3",), ("plane",)
 
 _TABLE = (
     Operation("free", (), "free", _free_value, lambda n, d: "", condition_values=_free_conditions, core=_free_core,
-              coefficients=True, constructible=False),
+              coefficients=True, constructible=False, given=True),
     Operation("const", (), "ratio", lambda node, v, scalar: (scalar(node.data[0]), scalar(node.data[1])),
-              lambda n, d: "", coefficients=True, constructible=False),
+              lambda n, d: "", coefficients=True, constructible=False, given=True, constant=True),
     Operation("join", (_POINT, _POINT), "line", lambda node, v, scalar: alg.cross(v[0], v[1]),
               lambda n, d: f"{n[0]} × {n[1]}", lambda n, name, d: [f"{n[0]} ≠ {n[1]}"],
-              core=lambda node, a, exact: projective_plane.join(*a)),
+              core=lambda node, a, exact: projective_plane.join(*a), through=(0, 1)),
     Operation("meet", (_LINE, _LINE), "point", lambda node, v, scalar: alg.cross(v[0], v[1]),
               lambda n, d: f"{n[0]} × {n[1]}", lambda n, name, d: [f"{n[0]} ≠ {n[1]}"],
-              core=lambda node, a, exact: projective_plane.meet(*a)),
+              core=lambda node, a, exact: projective_plane.meet(*a), lies_on=(0, 1)),
     Operation("combine", (_VECTOR_KINDS, _VECTOR_KINDS), 0, _combine,
               lambda n, d: f"{d[0]}·{n[0]} + {d[1]}·{n[1]}",
               lambda n, name, d: [f"{name} is not the zero vector ({n[0]} ≠ {n[1]})"],
-              core=_combine_core, same_kind=True, coefficients=True, group=None, on_span=True),
+              core=_combine_core, same_kind=True, coefficients=True, group=None, on_span=True,
+              fresh_coefficients=True),
     Operation("plane_through", (_POINT3,) * 3, "plane", lambda node, v, scalar: alg.plane_through(*v),
               lambda n, d: f"plane({', '.join(n)})", lambda n, name, d: [f"{', '.join(n)} are not collinear"],
-              core=lambda node, a, exact: space.plane_through(*a)),
+              core=lambda node, a, exact: space.plane_through(*a), through=(0, 1, 2)),
     Operation("point_on_planes", (_PLANE,) * 3, "point3", lambda node, v, scalar: alg.plane_through(*v),
               lambda n, d: f"point({', '.join(n)})", lambda n, name, d: [f"{', '.join(n)} do not share a line"],
-              core=lambda node, a, exact: space.point_on_planes(*a)),
+              core=lambda node, a, exact: space.point_on_planes(*a), lies_on=(0, 1, 2)),
     Operation("line3", (_POINT3, _POINT3), "line3", lambda node, v, scalar: alg.wedge(v[0], v[1]),
               lambda n, d: f"{n[0]} {n[1]}ᵀ − {n[1]} {n[0]}ᵀ", lambda n, name, d: [f"{n[0]} ≠ {n[1]}"],
-              core=lambda node, a, exact: plucker.Line3.join(*a)),
+              core=lambda node, a, exact: plucker.Line3.join(*a), through=(0, 1)),
     Operation("apply", (("matrix",), ("point1", "point", "point3")), 1,
               lambda node, v, scalar: alg.matvec(v[0], v[1]), lambda n, d: f"{n[0]} {n[1]}",
               core=lambda node, a, exact: _vector(node.kind, a[0] * a[1].vector), group=None),
@@ -425,18 +489,18 @@ _TABLE = (
               lambda n, d: f"{n[0]} {n[1]}",
               lambda n, name, d: [f"{n[1]} is not a singular point of {n[0]} ({n[0]} {n[1]} ≠ 0)"],
               core=lambda node, a, exact: conics.Conic(a[0].matrix if hasattr(a[0], "matrix") else a[0]).polar(a[1]),
-              aliases=("tangent",)),
+              aliases=("tangent",), polar_of=(0, 1)),
     Operation("conic_through", (_POINT,) * 5, "conic", lambda node, v, scalar: _conic_from_points(v),
               lambda n, d: f"conic({', '.join(n)})",
               lambda n, name, d: [f"{', '.join(n)} determine a unique conic (no two equal, no four collinear)"],
-              core=lambda node, a, exact: conics.conic_through(*a)),
+              core=lambda node, a, exact: conics.conic_through(*a), through=(0, 1, 2, 3, 4)),
     Operation("dual_conic", (("conic",),), "matrix", lambda node, v, scalar: alg.adjugate(v[0]),
               lambda n, d: f"adj({n[0]})", lambda n, name, d: [f"{n[0]} is non-degenerate (det {n[0]} ≠ 0)"],
               _det_of_first, core=lambda node, a, exact: conics.Conic(a[0]).dual()),
     Operation("cross_ratio", (_POINT1,) * 4, "ratio", _cross_ratio, lambda n, d: f"({n[0]}, {n[1]}; {n[2]}, {n[3]})",
               lambda n, name, d: [f"[{n[0]} {n[3]}][{n[1]} {n[2]}] ≠ 0 ({n[0]} ≠ {n[3]} and {n[1]} ≠ {n[2]})"],
               lambda node, value, args: [[value[1]]],
-              core=lambda node, a, exact: projective_line.cross_ratio(*a)),
+              core=lambda node, a, exact: projective_line.cross_ratio(*a), ratio_scaling=(0, 0)),
     Operation("harmonic_conjugate", (_POINT1,) * 3, "point1", _harmonic_conjugate,
               lambda n, d: f"[{n[0]} {n[2]}] {n[1]} + [{n[1]} {n[2]}] {n[0]}",
               lambda n, name, d: [f"{', '.join(n)} are distinct"],
@@ -446,24 +510,24 @@ _TABLE = (
               lambda n, d: f"({n[2]}ᵀ{n[0]}{n[2]}) {n[1]} − 2 ({n[1]}ᵀ{n[0]}{n[2]}) {n[2]}",
               lambda n, name, d: [f"{n[1]} ≠ {n[2]} ({name} is the second point of {n[0]} on the line {n[1]}{n[2]}; "
                                   f"{n[1]} must lie on {n[0]})"],
-              core=_second_core),
+              core=_second_core, lies_on=(0,)),
     Operation("point_on_conic", (("conic",), _POINT), "point", _conic_point,
               lambda n, d: f"second point of {n[0]} on the line through {n[1]} and (1, {d[0]}, {d[0]}²)",
               lambda n, name, d: [f"{name} is defined ({n[1]} lies on {n[0]}, the line through it is no tangent)"],
-              core=_conic_point_core, coefficients=True),
+              core=_conic_point_core, coefficients=True, lies_on=(0,), node_group=_family),
     Operation("point_on_line", (("point", "point3"), ("point", "point3")), 0,
               lambda node, v, scalar: tuple(a + scalar(node.data[0]) * b for a, b in zip(v[0], v[1], strict=True)),
               lambda n, d: f"{n[0]} + {d[0]}·{n[1]}", lambda n, name, d: [f"{n[0]} ≠ {n[1]}"],
               lambda node, value, args: [_pairs(args[0], args[1])],
               core=lambda node, a, exact: _vector(node.kind, (x + exact(node.data[0]) * y
                                                               for x, y in zip(a[0].coords, a[1].coords, strict=True))),
-              same_kind=True, coefficients=True, on_span=True),
+              same_kind=True, coefficients=True, on_span=True, node_group=_family),
     Operation("point_of_line", (_LINE,), "point",
               lambda node, v, scalar: alg.cross(v[0], _moment(scalar(node.data[0]))),
               lambda n, d: f"{n[0]} × (1, {d[0]}, {d[0]}²)", lambda n, name, d: [f"{name} is a point of {n[0]}"],
               core=lambda node, a, exact: projective_plane.meet(
                   a[0], projective_plane.Line(*_moment(exact(node.data[0])))),
-              coefficients=True),
+              coefficients=True, lies_on=(0,), node_group=_family),
     Operation("conic_tangent_to", (_LINE,) * 5, "conic", _conic_tangent_to,
               lambda n, d: f"adj(dual conic({', '.join(n)}))",
               lambda n, name, d: [f"{', '.join(n)} are tangent to a unique non-degenerate conic "
@@ -471,15 +535,15 @@ _TABLE = (
               core=_tangent_to_core),
     Operation("line_meets_plane", (("line3",), _PLANE), "point3", lambda node, v, scalar: alg.matvec(v[0], v[1]),
               lambda n, d: f"{n[0]} {n[1]}", lambda n, name, d: [f"{n[0]} does not lie in {n[1]}"],
-              core=lambda node, a, exact: a[0].intersect_plane(a[1])),
+              core=lambda node, a, exact: a[0].intersect_plane(a[1]), lies_on=(0, 1)),
     Operation("line_of_planes", (_PLANE, _PLANE), "line3", _line_of_planes_formula,
               lambda n, d: f"({n[0]} {n[1]}ᵀ − {n[1]} {n[0]}ᵀ)*", lambda n, name, d: [f"{n[0]} ≠ {n[1]}"],
-              core=lambda node, a, exact: plucker.Line3.meet(*a)),
+              core=lambda node, a, exact: plucker.Line3.meet(*a), lies_on=(0, 1)),
     Operation("cross_ratio_collinear", (("point", "line"),) * 4, "ratio", _cross_ratio2,
               lambda n, d: f"({n[0]}, {n[1]}; {n[2]}, {n[3]})",
               lambda n, name, d: [f"{n[0]} ≠ {n[3]}, {n[1]} ≠ {n[2]} and {n[0]} ≠ {n[1]} "
                                   f"({', '.join(n)} collinear or concurrent)"],
-              lambda node, value, args: [[value[1]]], core=_cross_ratio2_core, same_kind=True),
+              lambda node, value, args: [[value[1]]], core=_cross_ratio2_core, same_kind=True, ratio_scaling=(0, 0)),
     Operation("harmonic_conjugate_collinear", (("point", "line"),) * 3, 0, _harmonic2,
               lambda n, d: f"harmonic conjugate of {n[2]} with respect to {n[0]}, {n[1]}",
               lambda n, name, d: [f"{', '.join(n)} are distinct ({', '.join(n)} collinear or concurrent)"],
@@ -517,12 +581,13 @@ _TABLE = (
 # Points are homogeneous (x, y, w): every formula below is right for any representative (any w ≠ 0), lines
 # (a, b, c) for any scale, circles for any scale of their matrix. A ratio is a pair (numerator, denominator).
 
-def _xy(p: Sequence[Any]) -> tuple[Any, Any]:
-    return p[0], p[1]
+def affine_vector(a: Sequence[Any], b: Sequence[Any]) -> tuple[Any, Any]:
+    """w_A w_B (B − A) in affine coordinates: ``w_A B − w_B A`` (first two coordinates); right for any
+    representatives, with no division.
 
-
-def _vec(a: Sequence[Any], b: Sequence[Any]) -> tuple[Any, Any]:
-    """w_A w_B (B − A) in affine coordinates: ``w_A B − w_B A`` (first two coordinates)."""
+    >>> affine_vector((1, 1, 1), (6, 4, 2))       # (3, 2) − (1, 1) = (2, 1), times w_A w_B = 2
+    (4, 2)
+    """
     return b[0] * a[2] - a[0] * b[2], b[1] * a[2] - a[1] * b[2]
 
 
@@ -569,14 +634,14 @@ def _rotate(node: Any, v: list[Any], scalar: Scalar) -> tuple[Any, ...]:
     # O + R(X − O): with (u, v) = w_O w_X (X − O), the point (w_X O + R(u, v), w_O w_X)
     (x, y, w), (ox, oy, ow) = v
     c, s = scalar(node.data[0]), scalar(node.data[1])
-    u, t = _vec((ox, oy, ow), (x, y, w))
+    u, t = affine_vector((ox, oy, ow), (x, y, w))
     return (w * ox + c * u - s * t, w * oy + s * u + c * t, ow * w)
 
 
 def _translate(node: Any, v: list[Any], scalar: Scalar) -> tuple[Any, ...]:
     # X + (B − A) over the common denominator w_X w_A w_B
     (x, y, w), a, b = v
-    u, t = _vec(a, b)
+    u, t = affine_vector(a, b)
     return (x * a[2] * b[2] + w * u, y * a[2] * b[2] + w * t, w * a[2] * b[2])
 
 
@@ -630,8 +695,7 @@ def _invert(node: Any, v: list[Any], scalar: Scalar) -> tuple[Any, ...]:
 
 
 def _dist2(node: Any, v: list[Any], scalar: Scalar) -> tuple[Any, Any]:
-    u, t = _vec(v[0], v[1])
-    return (u * u + t * t, v[0][2] * v[0][2] * v[1][2] * v[1][2])
+    return alg.squared_distance_fraction(v[0], v[1])
 
 
 def _area(node: Any, v: list[Any], scalar: Scalar) -> tuple[Any, Any]:
@@ -643,7 +707,7 @@ def _segratio(node: Any, v: list[Any], scalar: Scalar) -> tuple[Any, Any]:
     # AB / CD for parallel segments: with u = B − A, t = D − C (u = k t), k = u·t / t·t; the vectors are
     # U/(w_A w_B) and T/(w_C w_D), so k = (U·T) w_C w_D / ((T·T) w_A w_B)
     a, b, c, d = v
-    uu, tt = _vec(a, b), _vec(c, d)
+    uu, tt = affine_vector(a, b), affine_vector(c, d)
     return ((uu[0] * tt[0] + uu[1] * tt[1]) * c[2] * d[2], (tt[0] * tt[0] + tt[1] * tt[1]) * a[2] * b[2])
 
 
@@ -671,7 +735,7 @@ def _concyclic_q(node: Any, v: list[Any], scalar: Scalar) -> tuple[Any]:
 def _equalangle_q(node: Any, v: list[Any], scalar: Scalar) -> tuple[Any]:
     # tan ∠ABC = (u × t)/(u · t) with u = A − B, t = C − B; the representatives scale u × t and u · t alike
     def cross_dot(p: Any, vertex: Any, q: Any) -> tuple[Any, Any]:
-        u, t = _vec(vertex, p), _vec(vertex, q)
+        u, t = affine_vector(vertex, p), affine_vector(vertex, q)
         return u[0] * t[1] - u[1] * t[0], u[0] * t[0] + u[1] * t[1]
     (c1, d1), (c2, d2) = cross_dot(*v[:3]), cross_dot(*v[3:])
     return (c1 * d2 - c2 * d1,)
@@ -687,12 +751,8 @@ def _finite(*points: Sequence[Any]) -> list[list[Any]]:
 
 
 def _distinct(p: Sequence[Any], q: Sequence[Any]) -> list[Any]:
-    u, t = _vec(p, q)
+    u, t = affine_vector(p, q)
     return [u * u + t * t]
-
-
-def _circle_a(k: Any) -> Any:
-    return k[0][0]
 
 
 # the core's objects
@@ -724,7 +784,8 @@ def _segratio_core(node: Any, a: list[Any], exact: Scalar) -> Any:
 
 def _circles_second_core(node: Any, a: list[Any], exact: Scalar) -> Any:
     k, l, p = (_conic_core(a[0]), _conic_core(a[1]), a[2])
-    points = [x for x in k.intersections(l) if x != p and all(is_zero(e.as_real_imag()[1]) for e in x.coords)]
+    common = conic_pencil.intersect_conics(k, l)
+    points = [x for x in common if x != p and all(is_zero(e.as_real_imag()[1]) for e in x.coords)]
     if len(points) != 1:
         raise CoreDegenerate("the circles do not meet in one second real point at this point")
     return points[0]
@@ -766,7 +827,7 @@ _EUCLIDEAN = (
          lambda n, name, d: [f"{n[0]} is a finite point", f"{n[1]} is a finite point"],
          lambda node, value, a: _finite(a[0], a[1]),
          lambda node, a, exact: metric.rotation(exact(node.data[0]), exact(node.data[1]), a[1])(a[0]),
-         coefficients=True),
+         coefficients=True, node_group=_rotation_group),
     _sim("translate", (_POINT, _POINT, _POINT), "point", _translate,
          lambda n, d: f"{n[0]} translated by the vector {n[1]}{n[2]}",
          lambda n, name, d: [f"{x} is a finite point" for x in n], lambda node, value, a: _finite(*a),
@@ -778,18 +839,20 @@ _EUCLIDEAN = (
          lambda n, name, d: [f"{name} has nonzero radius ({n[0]} ≠ {n[1]})", f"{n[0]} is a finite point",
                              f"{n[1]} is a finite point"],
          lambda node, value, a: [_distinct(a[0], a[1]), *_finite(a[0], a[1])],
-         lambda node, a, exact: _circle_core(a[0], metric.squared_distance(a[0], a[1]))),
+         lambda node, a, exact: _circle_core(a[0], metric.squared_distance(a[0], a[1])), through=(1,)),
     _sim("circle_radius", (_POINT,), "conic", _circle_centre_radius,
          lambda n, d: f"circle with centre {n[0]} and squared radius {d[0]}",
          lambda n, name, d: [f"{name} has nonzero radius ({d[0]} ≠ 0)", f"{n[0]} is a finite point"],
          lambda node, value, a: [[value[2][2] * value[0][0] - value[0][2] * value[0][2] - value[1][2] * value[1][2]],
                                  *_finite(a[0])],
-         lambda node, a, exact: _circle_core(a[0], exact(node.data[0])), coefficients=True),
+         lambda node, a, exact: _circle_core(a[0], exact(node.data[0])), coefficients=True,
+         node_group=_radius_group),
     _sim("circle3", (_POINT,) * 3, "conic", _circle_three, lambda n, d: f"circle through {', '.join(n)}",
          lambda n, name, d: [f"{', '.join(n)} are finite and not collinear"],
          lambda node, value, a: [[value[0][0]]],
          lambda node, a, exact: _circle_core(_circumcentre_core(*a),
-                                             metric.squared_distance(_circumcentre_core(*a), a[0]))),
+                                             metric.squared_distance(_circumcentre_core(*a), a[0])),
+         through=(0, 1, 2)),
     _sim("centre", (_C2,), "point", _centre, lambda n, d: f"centre of {n[0]} (the pole of l∞)",
          lambda n, name, d: [f"{n[0]} has a finite centre (it is no parabola)"],
          lambda node, value, a: [[value[2]]],
@@ -805,17 +868,18 @@ _EUCLIDEAN = (
          lambda node, a, exact: conic_metric.inversion(a[0], _conic_core(a[1]))),
     _sim("dist2", (_POINT, _POINT), "ratio", _dist2, lambda n, d: f"|{n[0]}{n[1]}|²",
          lambda n, name, d: [f"{n[0]} and {n[1]} are finite points"], lambda node, value, a: [[value[1]]],
-         lambda node, a, exact: metric.squared_distance(*a)),
+         lambda node, a, exact: metric.squared_distance(*a), ratio_scaling=(0, 2)),
     _sim("area", (_POINT,) * 3, "ratio", _area, lambda n, d: f"signed area of {''.join(n)}",
          lambda n, name, d: [f"{', '.join(n)} are finite points"], lambda node, value, a: [[value[1]]],
-         lambda node, a, exact: invariants.signed_area(*(p.coords for p in a)), group="affine"),
+         lambda node, a, exact: invariants.signed_area(*(p.coords for p in a)), group="affine",
+         ratio_scaling=(1, 0)),
     _sim("segratio", (_POINT,) * 4, "ratio", _segratio, lambda n, d: f"{n[0]}{n[1]} / {n[2]}{n[3]}",
          lambda n, name, d: [f"{n[2]} ≠ {n[3]} and {n[0]}, {n[1]} are finite points"],
-         lambda node, value, a: [[value[1]]], _segratio_core),
+         lambda node, value, a: [[value[1]]], _segratio_core, ratio_scaling=(0, 0)),
     *(_sim(op, (("ratio",), ("ratio",)), "ratio", _ratio_arith(op), lambda n, d, s=sign: f"{n[0]} {s} {n[1]}",
            lambda n, name, d: [], None, lambda node, a, exact, op=op: (a[0] + a[1] if op == "add" else
                                                                       a[0] - a[1] if op == "sub" else a[0] * a[1]),
-           group="projective")
+           group="projective", ratio_arithmetic="product" if op == "mul" else "sum")
       for op, sign in (("add", "+"), ("sub", "−"), ("mul", "·"))),
     # conclusion quantities
     _sim("perpendicular_to", (_LINE, _LINE), "scalar", _perpendicular_q, lambda n, d: f"{n[0]}ᵀ C*∞ {n[1]}",

@@ -28,6 +28,7 @@ from fractions import Fraction
 from typing import Any
 
 import sympy
+from sympy.polys.rings import ring
 
 from .errors import PolynomialBackendError
 
@@ -90,8 +91,6 @@ class PolynomialRing:
             self._ctx = ctx_type.get(names, {"lex": "lex", "grevlex": "degrevlex", "grlex": "deglex"}[order])
             self.gens = list(self._ctx.gens())
         else:
-            from sympy.polys.rings import ring
-
             self._ring, *self.gens = ring(self.symbols, sympy.ZZ if integral else sympy.QQ, order)
 
     @property
@@ -110,8 +109,6 @@ class PolynomialRing:
         if e.is_Rational:
             return self._ctx.constant(self._coefficient(e))
         if self._sympy_ring is None:  # SymPy's ring reads expressions fastest; flint then takes its terms
-            from sympy.polys.rings import ring
-
             self._sympy_ring = ring(self.symbols, sympy.QQ, "lex")[0]
         terms = self._sympy_ring(e).items()
         return self._ctx.from_dict({m: self._coefficient(c) for m, c in terms})

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import json
 import re
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from enum import StrEnum
 from fractions import Fraction
@@ -41,6 +42,9 @@ _STATUS_MARK = {Status.PROVED: "✔ proved", Status.FALSE: "✘ false", Status.U
                 Status.DEGENERATE: "⚠ degenerate construction"}
 _STATUS_LATEX = {s: rf"\text{{{s.value}}}" for s in Status}
 
+_INLINE_CONDITIONS = 3
+"""The most non-degeneracy conditions a verdict writes on one line; a longer list is written one per line."""
+
 
 # the engine's few math symbols as LaTeX commands; everything else is escaped as plain text
 _TEX_MATH = {"≠": r"$\neq$", "×": r"$\times$", "·": r"$\cdot$", "∧": r"$\wedge$", "−": "-", "λ": r"$\lambda$",
@@ -69,7 +73,8 @@ def poly_str(p: Any, max_terms: int = 40) -> str:
     if hasattr(p, "as_expr"):  # SymPy's ring
         return str(p.as_expr())
     if hasattr(p, "context"):  # python-flint: rebuild the expression in the context's variable names
-        import sympy
+        import sympy  # noqa: PLC0415 — the CLI imports verdicts at start-up; SymPy loads when one is shown
+
 
         names = [sympy.Symbol(n) for n in p.context().names()]
         return str(sympy.Add(*(sympy.Rational(str(c)) * sympy.Mul(*(x**e for x, e in zip(names, m, strict=True)))
@@ -127,14 +132,16 @@ class Certificate:
 class Counterexample:
     """Exact values of the parameters at which the constructions are defined and the conclusion fails.
 
-    ``residuals`` are the values of the conclusion polynomials there (not all zero).
-    :meth:`recheck` builds the configuration again with pgsym's core objects.
+    ``residuals`` are the values of the conclusion polynomials there (not all zero). ``check`` is the prover's
+    own re-check of these values (it builds the configuration again with pgsym's core objects); the verdict
+    only holds it, so that this data module never imports a prover.
     """
 
     values: dict[str, Fraction]
     residuals: list[Fraction]
     claim: Any = None
     branch: dict[str, str] = field(default_factory=dict)  # exact values of the claim's square roots, if any
+    check: Callable[[], bool] | None = field(default=None, repr=False, compare=False)
 
     def substitution(self) -> dict[Any, Any]:
         """The values as a SymPy substitution ``{symbol: Rational}``.
@@ -142,21 +149,19 @@ class Counterexample:
         >>> Counterexample({"a": Fraction(1, 2)}, [Fraction(1)]).substitution()
         {a: 1/2}
         """
-        import sympy
+        import sympy  # noqa: PLC0415 — the CLI imports verdicts at start-up; SymPy loads when one is shown
 
         return {sympy.Symbol(k): sympy.Rational(v.numerator, v.denominator) for k, v in self.values.items()}
 
     def recheck(self) -> bool:
-        """Rebuild with the core objects at these values: True when the claim indeed fails there."""
-        from .engine import recheck_counterexample
+        """Rebuild with the core objects at these values: True when the claim indeed fails there.
 
-        if self.claim is None:
-            return False
-        if self.branch:
-            from .algebraic import recheck_branch
-
-            return recheck_branch(self.claim, self.values, self.branch)
-        return recheck_counterexample(self.claim, self.values)
+        >>> Counterexample({"a": Fraction(1)}, [Fraction(1)], check=lambda: True).recheck()
+        True
+        >>> Counterexample({"a": Fraction(1)}, [Fraction(1)]).recheck()  # no prover attached: nothing confirmed
+        False
+        """
+        return self.check is not None and bool(self.check())
 
     def to_dict(self) -> dict[str, Any]:
         """JSON-ready form (fractions as strings).
@@ -258,14 +263,17 @@ class Verdict:
     def identity_size(self) -> str:
         """How big the certified identity is, in words ("" when there is no certificate).
 
-        >>> Verdict("x", "x", "proved", certificate=Certificate("m", "ℤ[a]", [], 12, largest_degree=3)).identity_size()
+        The polynomial library that did the arithmetic is no part of the proof: it stays in :meth:`to_dict`
+        (``certificate.backend``) and is not shown here.
+
+        >>> Verdict("x", "x", "proved", certificate=Certificate("m", "ℤ[a]", [], 12, largest_degree=3,
+        ...                                                     backend="flint")).identity_size()
         'largest polynomial expanded: 12 terms of degree 3 in ℤ[a]'
         """
         c = self.certificate
         if c is None:
             return ""
-        backend = f", on {c.backend}" if c.backend else ""
-        return f"largest polynomial expanded: {c.largest_terms} terms of degree {c.largest_degree} in {c.ring}{backend}"
+        return f"largest polynomial expanded: {c.largest_terms} terms of degree {c.largest_degree} in {c.ring}"
 
     def condition_texts(self) -> list[str]:
         """The conditions in words, each once (several constructions may need the same one, e.g. "P is a finite
@@ -290,7 +298,11 @@ class Verdict:
                 lines.append(f"  normalisation: {self.certificate.normalisation}")
             lines.append(f"  {self.identity_size()}")
         if self.conditions:
-            lines.append("  provided that: " + "; ".join(self.condition_texts()))
+            texts = self.condition_texts()
+            if len(texts) > _INLINE_CONDITIONS:
+                lines += ["  provided that:", *(f"    - {t}" for t in texts)]
+            else:
+                lines.append("  provided that: " + "; ".join(texts))
         if self.counterexample is not None:
             lines.append("  counterexample: " + ", ".join(f"{k} = {v}" for k, v in self.counterexample.values.items()))
             branch = self.counterexample.branch
@@ -332,7 +344,11 @@ class Verdict:
                 lines.append(f"- … and {len(self.certificate.steps) - 8} more polynomials, each reduced to 0")
             lines += [f"- {e(self.identity_size())}", ""]
         if self.conditions:
-            lines.append("*Non-degeneracy conditions:* " + "; ".join(e(t) for t in self.condition_texts()))
+            texts = self.condition_texts()
+            if len(texts) > _INLINE_CONDITIONS:
+                lines += ["*Non-degeneracy conditions:*", *(f"- {e(t)}" for t in texts)]
+            else:
+                lines.append("*Non-degeneracy conditions:* " + "; ".join(e(t) for t in texts))
             lines.append("")
         if self.counterexample is not None:
             vals = ", ".join(f"{e(k)} = {v}" for k, v in self.counterexample.values.items())
@@ -376,7 +392,12 @@ class Verdict:
             items.append(f"Method: {t(self.certificate.method)}; {t(self.identity_size())}")
             items += [r"\texttt{" + t(_short(s, 120)) + "}" for s in self.certificate.steps[:4]]
         if self.conditions:
-            items.append("Non-degeneracy conditions: " + "; ".join(t(x) for x in self.condition_texts()))
+            texts = self.condition_texts()
+            if len(texts) > _INLINE_CONDITIONS:
+                items.append("Non-degeneracy conditions:\n" + "\n".join(
+                    [r"\begin{itemize}", *(rf"\item {t(x)}" for x in texts), r"\end{itemize}"]))
+            else:
+                items.append("Non-degeneracy conditions: " + "; ".join(t(x) for x in texts))
         if self.counterexample is not None:
             items.append("Counterexample: " + ", ".join(f"{t(k)} = {t(str(v))}"
                                                          for k, v in self.counterexample.values.items()))

@@ -108,7 +108,7 @@ def _check_parameters(k: float, sigma: float, threshold: float, min_distance: in
 
 
 def _structure_tensor(image: np.ndarray, sigma: float):  # type: ignore[no-untyped-def]
-    import cv2
+    import cv2  # noqa: PLC0415 — OpenCV loads on first use: vision modules load without it
 
     border = cv2.BORDER_REFLECT_101
     Ix = cv2.Sobel(image, cv2.CV_32F, 1, 0, ksize=3, borderType=border)
@@ -149,7 +149,7 @@ def _sparse_nonzero(mask: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
 
 def _suppress(response: np.ndarray, candidates: np.ndarray, d: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Local maxima of ``response`` among ``candidates`` (mask, rows, columns); plateau ties kept in raster order."""
-    import cv2
+    import cv2  # noqa: PLC0415 — OpenCV loads on first use: vision modules load without it
 
     kernel = np.ones((2 * d + 1, 2 * d + 1), np.uint8)
     dilated = cv2.dilate(response, kernel, borderType=cv2.BORDER_CONSTANT, borderValue=-np.inf)
@@ -158,7 +158,7 @@ def _suppress(response: np.ndarray, candidates: np.ndarray, d: int) -> tuple[np.
     # values within a window) can leave several maxima close together. Keep the first in raster order.
     ys, xs = _sparse_nonzero(maxima)
     if len(ys) > 1:
-        from scipy.spatial import cKDTree
+        from scipy.spatial import cKDTree  # noqa: PLC0415 — SciPy loads on first use: vision modules load without it
 
         pairs = cKDTree(np.stack([ys, xs], axis=1)).query_pairs(r=d, p=np.inf, output_type="ndarray")
         if len(pairs):

@@ -305,7 +305,7 @@ def _denormalized(
 
 
 def _as_exact_point(value: Any, name: str, i: int) -> Point:
-    from ..projective_plane import Point
+    from ..projective_plane import Point  # noqa: PLC0415 — vision → core by design: vision modules load without SymPy
 
     if isinstance(value, Point):
         return value
@@ -346,7 +346,7 @@ def exact_homography(src: Sequence[Any], dst: Sequence[Any]) -> sympy.ImmutableM
     if len(src) != 4 or len(dst) != 4:
         raise DimensionError(f"exact_homography needs exactly four source and four destination points, "
                              f"got {len(src)} and {len(dst)}; use dlt_homography for more")
-    from ..transformations import homography_from_points
+    from ..transformations import homography_from_points  # noqa: PLC0415 — vision → core by design: vision modules load without SymPy
 
     P = [_as_exact_point(v, "source", i) for i, v in enumerate(src)]
     Q = [_as_exact_point(v, "destination", i) for i, v in enumerate(dst)]
@@ -355,9 +355,9 @@ def exact_homography(src: Sequence[Any], dst: Sequence[Any]) -> sympy.ImmutableM
 
 def _canonical_matrix(H: sympy.Matrix) -> sympy.ImmutableMatrix:
     """``H`` in the core's canonical form for homogeneous coordinates (:func:`pgsym.exact.canonical_coords`)."""
-    import sympy
+    import sympy  # noqa: PLC0415 — vision → core by design: vision modules load without SymPy
 
-    from ..exact import canonical_coords
+    from ..exact import canonical_coords  # noqa: PLC0415 — vision → core by design: vision modules load without SymPy
 
     return sympy.ImmutableMatrix(3, 3, list(canonical_coords(list(H))))
 

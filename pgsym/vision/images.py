@@ -12,8 +12,10 @@ Convention: an image for the numeric routines is a ``float32`` array of shape
 
 from __future__ import annotations
 
+import io
 import os
 import stat
+import warnings
 from pathlib import Path
 
 import numpy as np
@@ -107,7 +109,7 @@ def read_image(path: str | Path) -> np.ndarray:
     if width * height > MAX_IMAGE_PIXELS:
         raise InputLimitError(f"the image {str(path)!r} has {width}x{height} = {width * height} pixels; "
                               f"at most {MAX_IMAGE_PIXELS} are read (scale it down first)")
-    import cv2
+    import cv2  # noqa: PLC0415 — OpenCV loads on first use: vision modules load without it
 
     old = cv2.utils.logging.setLogLevel(cv2.utils.logging.LOG_LEVEL_SILENT)  # damage is reported below, once
     try:
@@ -171,10 +173,7 @@ def image_size(data: bytes, name: str = "image") -> tuple[int, int]:
     ...
     pgsym.vision.errors.ImageError: cannot read image 'image': not an image format pgsym reads (use PNG or JPEG)
     """
-    import io
-    import warnings
-
-    from PIL import Image  # Pillow (a Matplotlib dependency) reads only the header here
+    from PIL import Image  # noqa: PLC0415 — Pillow (a Matplotlib dependency) reads only the header here
 
     try:
         with warnings.catch_warnings():
@@ -227,7 +226,7 @@ def write_image(path: str | Path, image: np.ndarray) -> None:
     ...     read_image(os.path.join(d, "a.png")).tolist()
     [[1.0, 1.0], [1.0, 1.0]]
     """
-    import cv2
+    import cv2  # noqa: PLC0415 — OpenCV loads on first use: vision modules load without it
 
     a = np.asarray(image)
     if a.dtype != np.uint8:

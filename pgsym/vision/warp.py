@@ -76,7 +76,7 @@ def warp(image: np.ndarray, H: Any, size: tuple[int, int]) -> np.ndarray:
     >>> out.shape, float(out[2, 2])
     ((5, 5), 1.0)
     """
-    import cv2
+    import cv2  # noqa: PLC0415 — OpenCV loads on first use: vision modules load without it
 
     check_image(image)
     M = check_homography(H)
