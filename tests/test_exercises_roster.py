@@ -124,8 +124,8 @@ def test_canvas_gradebook_export_takes_sis_user_id_and_student(tmp_path):
             '"Student, Test",87999,,a1b2c3,Geometry 1,,\r\n')
     p = write(tmp_path, "grades.csv", text.encode("utf-8-sig"))
     assert read_roster(p) == [("s001", "Lovelace, Ada"), ("s003", "D’Angelo, Zoë")]
-    # Canvas's own id only on request
-    assert read_roster(p, id_column="ID")[0] == ("87011", "Lovelace, Ada")
+    # Canvas's own id only on request; the test student has a Canvas id but is still no student
+    assert read_roster(p, id_column="ID") == [("87011", "Lovelace, Ada"), ("87012", "D’Angelo, Zoë")]
 
 
 def test_canvas_student_without_sis_id_is_named(tmp_path):

@@ -23,6 +23,7 @@ pgsym.exercises.errors.UnparsableAnswerError: cannot read the answer: unexpected
 
 from __future__ import annotations
 
+import hashlib
 from fractions import Fraction
 from typing import Any
 
@@ -272,7 +273,6 @@ def answer_digest(salt: str, answer: Answer) -> str:
     >>> answer_digest("F-1:1", Answer.projective([2, 4, 0])) == answer_digest("F-1:1", Answer.projective([1, 2, 0]))
     True
     """
-    import hashlib
 
     return hashlib.blake2b(f"{salt}|{answer.kind}|{answer.display()}".encode(), digest_size=12).hexdigest()
 

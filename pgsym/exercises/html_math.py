@@ -112,7 +112,7 @@ def _is_plain(root: ElementTree.Element) -> bool:
 def mathml(tex: str, display: bool) -> str:
     """MathML of a LaTeX math snippet (``display`` for a block), or the snippet as ``<code>`` if the
     converter fails or produces anything but plain MathML."""
-    from latex2mathml.converter import convert  # only the HTML sheets need it
+    from latex2mathml.converter import convert  # noqa: PLC0415 — only the HTML sheets need it
 
     try:
         markup = convert(tex, display="block" if display else "inline")

@@ -13,6 +13,7 @@ True
 
 from __future__ import annotations
 
+import hashlib
 import re
 from dataclasses import dataclass, field
 from fractions import Fraction
@@ -315,7 +316,6 @@ class Sheet:
         """
         safe = "".join(c if c.isascii() and (c.isalnum() or c in "-_") else "_" for c in self.student_id)[:60]
         if safe != self.student_id:
-            import hashlib
 
             safe += "-" + hashlib.blake2b(self.student_id.encode(), digest_size=3).hexdigest()
         return "sheet-" + safe

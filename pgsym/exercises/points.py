@@ -24,6 +24,7 @@ from fractions import Fraction
 
 from .errors import TemplateError
 from .model import Sheet
+from .registry import get_template
 
 __all__ = ["MAX_POINTS", "apply_points", "parse_points", "part_points", "points_text"]
 
@@ -87,7 +88,6 @@ def part_points(spec: Mapping[str, Sequence[Fraction]], topic: str, parts: int,
 
 def apply_points(sheets: Iterable[Sheet], spec: Mapping[str, Sequence[Fraction]] | None = None) -> list[Sheet]:
     """The sheets with the points of every part set (see :func:`part_points`)."""
-    from .template import get_template
 
     spec = spec or {}
     out = []

@@ -25,7 +25,7 @@ _ORIGIN: dict[str, Path] = {}  # the file each instructor template came from (lo
 
 def _builtin() -> dict[str, Template]:
     if not _BUILTIN:
-        from .templates import BUILTIN_TEMPLATES
+        from .templates import BUILTIN_TEMPLATES  # noqa: PLC0415 — the built-in templates load on first use
 
         for cls in BUILTIN_TEMPLATES:
             _BUILTIN[cls.name] = cls()

@@ -135,10 +135,12 @@ def roster_from_table(table: Table, name: str, id_column: str | None = None) -> 
         if not any(cell.strip() for cell in row):
             continue  # a blank line
         sid = row[id_col].strip() if id_col < len(row) else ""
-        if canvas and not sid:
+        if canvas:
             first = row[0].strip().lower() if row else ""
             if first in _CANVAS_META_ROWS or name_of(row).lower() in _CANVAS_TEST_STUDENT:
-                continue  # Canvas's points-possible / posting-policy rows and its test student
+                # Canvas's points-possible / posting-policy rows, and its test student, which has a Canvas
+                # id (read with --roster-id-column ID) but no SIS id
+                continue
         if not sid:
             column = one_line(header[id_col])[:40]
             raise RosterError(f"line {line} of {name!r} has no student id (column {column!r})"

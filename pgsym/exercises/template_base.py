@@ -21,6 +21,7 @@ from dataclasses import dataclass, field, replace
 from typing import Any
 
 from .errors import TemplateError
+from .mistakes import admissible, default_mistakes
 from .model import Answer, Exercise, Mistake, Part
 
 __all__ = ["Draft", "Template", "TemplateError", "check"]
@@ -70,7 +71,6 @@ class Template:
         ``return [*super().mistakes(exercise, index), mistake("dual", Answer.projective(p))]``;
         candidates equivalent to the right answer are dropped before they are stored.
         """
-        from .mistakes import default_mistakes
 
         return default_mistakes(exercise.parts[index].answer)
 
@@ -90,7 +90,6 @@ class Template:
 
     def with_mistakes(self, exercise: Exercise) -> Exercise:
         """``exercise`` with the admissible :meth:`mistakes` of every part attached (for the manifest)."""
-        from .mistakes import admissible
 
         parts = tuple(replace(p, mistakes=tuple(admissible(p.answer, self.mistakes(exercise, i))))
                       for i, p in enumerate(exercise.parts))
