@@ -148,7 +148,11 @@ def test_a_chapter_refers_only_to_itself_and_earlier_chapters(page):
 # table and the page list the same symbols, so a symbol added to the page needs its pattern here.
 NOTATION_PATTERNS: dict[str, str] = {
     r"\mathbf{x} \sim \lambda\mathbf{x}": r"\\sim",
+    r"\mathbb{P}^n": r"\\mathbb\{P\}\^n",
     r"\mathbb{P}^2": r"\\mathbb\{P\}\^2",
+    r"\mathbb{P}^1": r"\\mathbb\{P\}\^1|ℙ¹",
+    r"[A\,B]": r"\[\s*\w\s*\\,\s*\w\s*\]",
+    r"\operatorname{adj}(H)": r"\\operatorname\{adj\}|\\mathrm\{adj\}",
     r"\mathbb{P}^3": r"\\mathbb\{P\}\^3",
     r"\mathbf{x} \vee \mathbf{y}": r"\\vee|∨",
     r"\mathbf{l} \wedge \mathbf{m}": r"\\wedge|∧",
@@ -156,11 +160,11 @@ NOTATION_PATTERNS: dict[str, str] = {
     r"\mathrm{PGL}(3)": r"PGL\}?\(3\)|PGL_3",
     r"\mathrm{PGL}(4)": r"PGL\}?\(4\)|PGL_4",
     r"(A, B; C, D)": r"\(\s*\\?\w+\s*,\s*\\?\w+\s*;\s*\\?\w+\s*,\s*\\?\w+\s*\)",
-    r"I": r"circular point",
+    r"\mathbf{I}": r"circular point",
     r"C^*": r"dual conic",
     r"C^*_\infty": r"C\^\{?\*\}?_\{?\\infty|C_\{?\\infty\}?\^\{?\*|C\*∞",
     r"\boldsymbol{\pi}_\infty": r"\\pi\}?_\{?\\infty|π∞",
-    r"L": r"Plücker matri",
+    r"\mathbf{L}": r"Plücker matri",
     r"\Omega_\infty": r"\\Omega_\{?\\infty|Ω∞",
     r"Q^*_\infty": r"Q\^\{?\*\}?_\{?\\infty|Q_\{?\\infty\}?\^\{?\*|Q\*∞",
 }
