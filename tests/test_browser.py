@@ -22,9 +22,10 @@ def test_page_renders_math_and_images_without_errors(browser, server, page_path)
         if "$" in source:  # a page with mathematics (the bibliography has none, so Sphinx loads no MathJax)
             assert page.locator("mjx-container").count() > 0, "no typeset math (MathJax output) on the page"
         text = page.locator("main").inner_text()
-        # the text outside code: a docstring may show a delimiter as code (``$$...$$`` in the API reference)
+        # the text outside code and scripts: a docstring may show a delimiter as code (``$$...$$`` in the API
+        # reference), and the live cells' description of a page (a script) holds the cells' sources
         text = page.evaluate("""() => { const main = document.querySelector('main').cloneNode(true);
-            main.querySelectorAll('code, pre').forEach(c => c.remove()); return main.innerText; }""")
+            main.querySelectorAll('code, pre, script, style').forEach(c => c.remove()); return main.innerText; }""")
         for raw in ("\\[", "\\(", "$$"):
             assert raw not in text, f"untypeset math delimiter {raw!r} left in the page text"
         broken = page.evaluate(

@@ -33,8 +33,10 @@ PLOT_OR_ARRAY = re.compile(r"\b(plt|np|cv2|_plot)\.")
 
 
 def code_cells(chapter: str) -> list[dict]:
+    """The code cells of a chapter that its page shows (a cell tagged remove-cell is not in the page)."""
     notebook = json.loads((ROOT / "book" / f"{chapter}.ipynb").read_text(encoding="utf-8"))
-    return [cell for cell in notebook["cells"] if cell["cell_type"] == "code"]
+    return [cell for cell in notebook["cells"] if cell["cell_type"] == "code"
+            and "remove-cell" not in cell.get("metadata", {}).get("tags", [])]
 
 
 def source(cell: dict) -> str:
