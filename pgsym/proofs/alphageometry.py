@@ -53,11 +53,11 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from ..errors import InputLimitError, PgsymError
-from ..limits import MAX_ARGUMENT_CHARS, MAX_STATEMENT_LINE_CHARS, MAX_STATEMENT_NAME_CHARS, read_text_file
+from ..errors import PgsymError
+from ..limits import MAX_ARGUMENT_CHARS, MAX_STATEMENT_LINE_CHARS, MAX_STATEMENT_NAME_CHARS
 from .engine import prove
 from .errors import AlphaGeometryError, StatementError, UnsupportedConstructionError
-from .language import KEYWORDS, parse_statement
+from .language import KEYWORDS, parse_statement, read_statement_text
 
 __all__ = ["MAX_AG_BYTES", "MAX_AG_LINE_CHARS", "MAX_AG_PROBLEMS", "OUTCOMES", "Outcome", "Problem",
            "read_alphageometry", "read_alphageometry_file", "solve", "translate"]
@@ -133,19 +133,7 @@ def read_alphageometry(text: str, source: str = "") -> list[Problem]:
 def read_alphageometry_file(path: str | os.PathLike[str]) -> list[Problem]:
     """Read a problem file (UTF-8, at most :data:`MAX_AG_BYTES` bytes) with :func:`read_alphageometry`."""
     p = Path(path)
-    try:
-        text = read_text_file(p, "problem file", MAX_AG_BYTES)
-    except InputLimitError as err:
-        raise AlphaGeometryError(str(err), source=str(p)) from None
-    except UnicodeDecodeError as err:
-        line = err.object[: err.start].count(b"\n") + 1
-        raise AlphaGeometryError("the file is not UTF-8 text", line, source=str(p)) from None
-    except OSError as err:
-        raise AlphaGeometryError(f"cannot read the problem file: {err.strerror or err}", source=str(p)) from None
-    if "\x00" in text:
-        line = text[: text.index("\x00")].count("\n") + 1
-        raise AlphaGeometryError("the file holds binary data (a NUL byte); problems are plain text", line,
-                                 source=str(p))
+    text = read_statement_text(p, "problem file", MAX_AG_BYTES, AlphaGeometryError)
     return read_alphageometry(text, source=str(p))
 
 

@@ -700,26 +700,36 @@ def _parse(text: str, name: str, source: str) -> Claim:
     return reader.claim
 
 
+def read_statement_text(path: str | os.PathLike[str], what: str = "theorem file", limit: int = MAX_STATEMENT_BYTES,
+                        error: type[StatementError] | None = None) -> str:
+    """The text of a statement file (UTF-8, at most ``limit`` bytes read), or a statement error naming the file,
+    line and column: of class ``error`` when given (a reader of another format), else the language's own.
+    """
+    p, source = Path(path), str(path)
+    try:
+        text = read_text_file(p, what, limit)
+    except InputLimitError as err:
+        raise (error or StatementLimitError)(str(err), source=source) from None
+    except UnicodeDecodeError as err:
+        line = err.object[: err.start].count(b"\n") + 1
+        col = err.start - (err.object.rfind(b"\n", 0, err.start) + 1) + 1
+        raise (error or StatementSyntaxError)("the file is not UTF-8 text", line, col, source) from None
+    except OSError as err:
+        raise (error or StatementError)(f"cannot read the {what}: {err.strerror or err}", source=source) from None
+    if "\x00" in text:
+        line = text[: text.index("\x00")].count("\n") + 1
+        raise (error or StatementSyntaxError)(f"the file holds binary data (a NUL byte); a {what} is plain text",
+                                              line, 1, source)
+    return text
+
+
 def read_statement(path: str | os.PathLike[str]) -> Claim:
     """Read a theorem file (UTF-8, at most :data:`~pgsym.limits.MAX_STATEMENT_BYTES` bytes) into a claim.
 
     The claim is named after the file (without its suffix). Errors name the file, line and column.
     """
     p = Path(path)
-    try:
-        text = read_text_file(p, "theorem file", MAX_STATEMENT_BYTES)
-    except InputLimitError as err:
-        raise StatementLimitError(str(err), source=str(p)) from None
-    except UnicodeDecodeError as err:
-        line = err.object[: err.start].count(b"\n") + 1
-        col = err.start - (err.object.rfind(b"\n", 0, err.start) + 1) + 1
-        raise StatementSyntaxError("the file is not UTF-8 text", line, col, str(p)) from None
-    except OSError as err:
-        raise StatementError(f"cannot read the theorem file: {err.strerror or err}", source=str(p)) from None
-    if "\x00" in text:
-        line = text[: text.index("\x00")].count("\n") + 1
-        raise StatementSyntaxError("the file holds binary data (a NUL byte); a theorem is plain text", line, 1,
-                                   str(p))
+    text = read_statement_text(p)
     return parse_statement(text, name=p.stem if p.suffix == STATEMENT_SUFFIX else p.name, source=str(p))
 
 
