@@ -6,12 +6,10 @@ from __future__ import annotations
 
 import csv
 import io
-import shutil
-import subprocess
-import sys
 from pathlib import Path
 
 import pytest
+from _installed import run_pgsym
 from click.testing import CliRunner
 from hypothesis import given
 from hypothesis import strategies as st
@@ -21,13 +19,9 @@ from pgsym.cli import main
 from pgsym.exercises.lms import MAX_COLUMNS, split_parts
 
 DATA = Path(__file__).parent / "data" / "lms"
-PGSYM = shutil.which("pgsym", path=str(Path(sys.executable).parent))
 
 
-def run(*args: str, cwd: Path | None = None) -> subprocess.CompletedProcess[str]:
-    assert PGSYM is not None, "the pgsym console script is not installed next to this Python"
-    return subprocess.run([PGSYM, *args], capture_output=True, text=True, timeout=300, stdin=subprocess.DEVNULL,
-                          cwd=cwd)
+run = run_pgsym
 
 
 @pytest.fixture(scope="module")

@@ -11,23 +11,18 @@ import csv
 import io
 import shutil
 import subprocess
-import sys
 from fractions import Fraction
-from pathlib import Path
 
 import pytest
+from _installed import run_pgsym
 from lxml import etree
 
 MAXIMA = shutil.which("maxima")
-PGSYM = shutil.which("pgsym", path=str(Path(sys.executable).parent))
 TOPICS = ("join,meet:2,ideal:2,apply-point,apply-line,apply-conic,homography4,cross-ratio:2,classify:2,decompose,"
           "plane3,point3,plucker,homogeneous:2,perpendicular,angle,conic-type")
 
 
-def run(*args: str, cwd: Path | None = None) -> subprocess.CompletedProcess[str]:
-    assert PGSYM is not None, "the pgsym console script is not installed next to this Python"
-    return subprocess.run([PGSYM, *args], capture_output=True, text=True, timeout=300, stdin=subprocess.DEVNULL,
-                          cwd=cwd)
+run = run_pgsym
 
 
 @pytest.fixture(scope="module")

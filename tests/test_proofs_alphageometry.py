@@ -13,12 +13,11 @@ import cmath
 import itertools
 import math
 import random
-import shutil
 import subprocess
-import sys
 from pathlib import Path
 
 import pytest
+from _installed import run_pgsym
 
 from pgsym.proofs.alphageometry import (
     MAX_AG_BYTES,
@@ -32,7 +31,6 @@ from pgsym.proofs.errors import AlphaGeometryError, StatementError, UnsupportedC
 from pgsym.proofs.language import parse_statement
 
 DATA = Path(__file__).parent / "data" / "alphageometry"
-PGSYM = shutil.which("pgsym", path=str(Path(sys.executable).parent))
 
 # -- AlphaGeometry's figure in floats (from defs.txt's meaning) -------------------------------------------------
 
@@ -466,9 +464,7 @@ def test_unreadable_files_get_named_errors(tmp_path: Path) -> None:
 
 
 def run(*args: str) -> subprocess.CompletedProcess[str]:
-    assert PGSYM is not None, "the pgsym console script is not installed next to this Python"
-    return subprocess.run([PGSYM, "prove", *args], capture_output=True, text=True, timeout=300,
-                          stdin=subprocess.DEVNULL)
+    return run_pgsym("prove", *args)
 
 
 @pytest.fixture
