@@ -109,8 +109,12 @@ pdf: system-deps  ## build the PDF of the whole book with LuaLaTeX and print its
 lint: $(INSTALLED)  ## ruff
 	$(BIN)/ruff check .
 
-test: book pdf system-deps lint  ## everything: lint, unit/property/doctests, strict nbval, CLI, the built book in a real browser and as PDF
-	$(BIN)/python -m pytest
+# The tests run on every core (PYTEST_WORKERS=1 runs them in one process); the files stay whole on one
+# worker, so a module's fixtures (a built PDF, a browser) are made once. tests/test_book_pdf.py runs
+# `make pdf` itself, on one worker, while the other workers go on with the rest.
+PYTEST_WORKERS ?= auto
+test: book system-deps lint  ## everything: lint, unit/property/doctests, strict nbval, CLI, the built book in a real browser and as PDF
+	$(BIN)/python -m pytest -n $(PYTEST_WORKERS) --dist loadfile
 
 lab: $(INSTALLED)  ## open the chapters in JupyterLab from the same venv (one chapter: make lab NB=harris)
 	$(BIN)/jupyter lab $(if $(NB),book/$(NB).ipynb,book/)

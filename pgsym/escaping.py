@@ -171,6 +171,11 @@ _TEX_UNICODE = {"⊂": r"$\subset$", "↔": r"$\leftrightarrow$", "×": r"$\time
 _TEX_UNICODE_LUA = {k: v for k, v in _TEX_UNICODE.items() if k not in "’…−"} | {"−": "$-$"}
 _TEX_LIGATURES = {"-": "-", "<": "<", ">": ">", ",": ",", "'": "'", "`": "`", "!": "`", "?": "`"}
 _TEX_LINE = 500  # characters of escaped text per source line (TeX reads lines into a fixed buffer)
+# A word longer than a line (a path, a URL, a run of CJK characters) would run off the page, where a PDF
+# reader loses it: past _TEX_WORD characters it may break after punctuation, and at least every
+# _TEX_WORD characters.
+_TEX_WORD = 24
+_TEX_BREAK_AFTER = frozenset("/\\.,;:=&?!-_)]}|@")
 # right-to-left scripts: Hebrew, Arabic, Syriac, Thaana, N'Ko, Samaritan, Mandaic and their presentation forms
 _RTL = "\u0590-\u08ff\ufb1d-\ufdff\ufe70-\ufefe"
 _RTL_CHAR = re.compile(f"[{_RTL}]")
@@ -207,7 +212,7 @@ def tex_escape(text: str, unicode: bool = False) -> str:
     """
     text = clean(text)
     out: list[str] = []
-    width = 0
+    width = run = 0
     for i, c in enumerate(text):
         if unicode:
             # typographic characters stay as typed (D’Angelo is not D'Angelo): the fonts have them
@@ -218,6 +223,11 @@ def tex_escape(text: str, unicode: bool = False) -> str:
             piece += "{}"
         out.append(piece)
         width += len(piece)
+        run = 0 if c in " \t\n" else run + 1
+        following = text[i + 1] if i + 1 < len(text) else " "
+        if run >= _TEX_WORD and (c in _TEX_BREAK_AFTER or run % _TEX_WORD == 0) and following not in " \t\n" \
+                and not (_RTL_CHAR.match(c) or _RTL_CHAR.match(following)):
+            out.append(r"\allowbreak{}")
         # '%' + newline joins two source lines without a space; never before a space (TeX would drop it)
         if width >= _TEX_LINE and i + 1 < len(text) and text[i + 1] not in " \t\n" and not (
                 unicode and _RTL_CHAR.match(c)):

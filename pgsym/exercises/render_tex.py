@@ -60,6 +60,8 @@ _PREAMBLE_REST = r"""% (no TeX ligatures: a name's -- << ,, `` prints as typed)
 \usepackage{enumitem}
 \setlength{\parindent}{0pt}
 \setlength{\parskip}{0.5em}
+% a line that cannot be filled well may stretch rather than run off the page (long paths, names, URLs)
+\setlength{\emergencystretch}{3em}
 \newif\ifsolutions
 % headings as ordinary paragraphs: a very long name or title breaks across lines and pages
 \newcommand{\sheettitle}[1]{\par{\raggedright\Large\bfseries #1\par}\nopagebreak\medskip}
