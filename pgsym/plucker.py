@@ -165,9 +165,28 @@ class Line3(HomogeneousVector, kind="line3"):
         return obj
 
 
+    @classmethod
+    def image(cls, coords: Sequence[Any], H: ring.Action) -> tuple[Any, ...]:
+        """The Plücker coordinates of the image line, in any ring: the Plücker matrix maps like a dual conic,
+        ``L' = H L Hᵀ`` (``L = A Bᵀ − B Aᵀ`` goes to ``(HA)(HB)ᵀ − (HB)(HA)ᵀ``).
+
+        >>> H = ring.Action([[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 1, 0, 1]])
+        >>> A, B = (0, 0, 0, 1), (0, 1, 0, 0)                        # the y-axis
+        >>> Line3.image(Line3.join(Point3(*A), Point3(*B)).coords, H)
+        (0, 0, 0, 0, 1, 0)
+        >>> _ == Line3.join(Point3(*H.point(A)), Point3(*H.point(B))).coords
+        True
+        """
+        zero = coords[0] * 0
+        m = [[zero] * 4 for _ in range(4)]
+        for (i, j), c in zip(_POSITIONS, coords, strict=True):
+            m[i][j], m[j][i] = c, -c
+        image = H.hyperplane_form(m)
+        return tuple(image[i][j] for i, j in _POSITIONS)
+
     def _transformed_by(self, H: Any) -> Line3:
-        """The image line: the Plücker matrix maps like a dual conic, ``L' = H L Hᵀ`` (``L = A Bᵀ − B Aᵀ``)."""
-        return type(self).from_matrix(H.map_form(self.matrix))
+        """The image line under the transformation ``H`` (checked by ``H.apply``), by :meth:`image`."""
+        return type(self)(*(sympy.expand(e) for e in type(self).image(self._coords, H.action)))
 
     # -- constructions ------------------------------------------------------------------------
     @classmethod
