@@ -93,6 +93,8 @@ _LAZY: dict[str, str] = {
     "point_on_planes": "space",
     "rank_exact": "linalg",
     "reciprocal_product": "plucker",
+    "meet_lines": "plucker",
+    "plane_through_lines": "plucker",
     "absolute_dual_quadric": "metric",
     "angle_bisectors": "metric",
     "common_perpendicular": "metric",
