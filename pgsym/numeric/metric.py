@@ -34,6 +34,7 @@ from ..errors import CoincidentLinesError, CoincidentPointsError
 from ._arrays import DEGENERATE, check_option
 from .euclid import (
     PART,
+    add_square,
     check_options,
     either_point_ideal,
     euclid_arrays,
@@ -231,11 +232,7 @@ def _point_kernel(ins: list[np.ndarray], o: np.ndarray, ws: list[np.ndarray]) ->
         np.multiply(x[..., i], rx, out=t)
         np.multiply(y[..., i], ry, out=u)
         np.subtract(t, u, out=t)
-        if i == 0:
-            np.multiply(t, t, out=o)
-        else:
-            np.multiply(t, t, out=t)
-            np.add(o, t, out=o)
+        add_square(t, o, i == 0)
     np.sqrt(o, out=o)
 
 
