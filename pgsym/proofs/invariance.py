@@ -47,7 +47,7 @@ from ..quadrics import DualQuadric
 from ..space import Plane, Point3
 from .claims import Claim, Node
 from .engine import prove as prove_claim
-from .operations import KINDS
+from .operations import KINDS, affine_vector
 from .verdicts import Verdict
 
 __all__ = [
@@ -211,8 +211,7 @@ def _v_volume_ratio(c: Config) -> list[Pair]:
 def _v_parallel_ratio(c: Config) -> list[Pair]:
     # u = q − p = U / (p₃q₃) and w = s − r = W / (r₃s₃) in affine coordinates: (w·u)/(u·u) and the 2×2 bracket
     p, q, r, s = _data(c)
-    U = [qi * p[2] - pi * q[2] for pi, qi in zip(p[:2], q[:2], strict=True)]
-    W = [si * r[2] - ri * s[2] for ri, si in zip(r[:2], s[:2], strict=True)]
+    U, W = affine_vector(p, q), affine_vector(r, s)
     return [(alg.dot(W, U) * p[2] * q[2], alg.dot(U, U) * r[2] * s[2]),
             (U[0] * W[1] - U[1] * W[0], p[2] * q[2] * r[2] * s[2])]
 
