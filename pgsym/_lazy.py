@@ -16,10 +16,11 @@ from __future__ import annotations
 import importlib
 import sys
 import types
-from collections.abc import Callable, Mapping
+import warnings
+from collections.abc import Callable, Mapping, Sequence
 from typing import Any
 
-__all__ = ["lazy_names"]
+__all__ = ["lazy_names", "moved_names"]
 
 
 def lazy_names(package: str, table: Mapping[str, str]) -> tuple[Callable[[str], Any], Callable[[], list[str]]]:
@@ -67,3 +68,34 @@ def _keep_names_over_submodules(package: str, table: Mapping[str, str]) -> None:
     _ATTRIBUTE_NAMES.setdefault(package, set()).update(name for name, target in table.items()
                                                        if not target.endswith(":"))
     sys.modules[package].__class__ = _LazyPackage
+
+
+def moved_names(module: str, new_home: str, names: Sequence[str],
+                renamed: Mapping[str, str] | None = None) -> Callable[[str], Any]:
+    """A module ``__getattr__`` for names that moved to ``new_home``: each use of an old spelling warns
+    (:class:`DeprecationWarning`, naming the new home) and returns the name's value there.
+
+    The new home is imported on first use of an old name only, so a module of a lower layer can keep the names
+    it lost to a higher one without importing that layer (``tests/test_architecture.py`` lists every such
+    forward and checks that nothing in the package uses it). ``renamed`` maps an old name to its new one.
+
+    >>> getattr_ = moved_names("pgsym.old", "pgsym.ring", ["dot"], renamed={"scalar_product": "dot"})
+    >>> import warnings
+    >>> with warnings.catch_warnings(record=True) as caught:
+    ...     warnings.simplefilter("always")
+    ...     getattr_("scalar_product")((1, 2), (3, 4))
+    11
+    >>> str(caught[0].message)
+    'pgsym.old.scalar_product is now pgsym.ring.dot; import it from there'
+    """
+    table = {name: name for name in names} | dict(renamed or {})
+
+    def __getattr__(name: str) -> Any:
+        new = table.get(name)
+        if new is None:
+            raise AttributeError(f"module {module!r} has no attribute {name!r}")
+        warnings.warn(f"{module}.{name} is now {new_home}.{new}; import it from there", DeprecationWarning,
+                      stacklevel=2)
+        return getattr(importlib.import_module(new_home), new)
+
+    return __getattr__

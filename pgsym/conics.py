@@ -41,7 +41,7 @@ from .exact import all_zero, latex
 from .homogeneous import Scalar, _format_entry, is_zero, require, to_exact
 from .matrices import adjugate
 from .projective_plane import Line, Point, collinear, cross
-from .symmetric_form import SymmetricForm, roots_on_line
+from .symmetric_form import DualForm, SymmetricForm, roots_on_line
 
 __all__ = [
     "Conic",
@@ -367,7 +367,7 @@ class Conic(SymmetricForm, kind="conic"):
         return (zeros[0], zeros[-1])  # a tangent: its one (double) point twice
 
 
-class DualConic(SymmetricForm, kind="dual_conic"):
+class DualConic(DualForm, SymmetricForm, kind="dual_conic"):
     """A dual (line) conic: the lines l with ``lᵀ C* l = 0``, from a symmetric 3×3 matrix C*.
 
     Degenerate dual conics are allowed: the dual conic at infinity ``diag(1, 1, 0)``
@@ -381,7 +381,6 @@ class DualConic(SymmetricForm, kind="dual_conic"):
     __slots__ = ()
     _kind = "dual conic"
     ambient_dim = 2
-    _covariant = False  # a form on lines: C*' = H C* Hᵀ
 
     def _repr_latex_(self) -> str:
         return f"$C^{{*}} = {self.latex()}$"

@@ -41,6 +41,7 @@ __all__ = [
     "OutputError",
     "PgsymError",
     "SingularTransformationError",
+    "SkewLinesError",
     "UndecidableError",
     "UndefinedCrossRatioError",
     "ZeroCoordinateError",
@@ -94,6 +95,10 @@ class CollinearPointsError(DegenerateConfigurationError):
 
 class DependentPlanesError(DegenerateConfigurationError):
     """Planes that must meet in a single point share a line (or are parallel or equal)."""
+
+
+class SkewLinesError(DegenerateConfigurationError):
+    """Two lines of space that must meet (in a point, or in a common plane) are skew."""
 
 
 class SingularTransformationError(DegenerateConfigurationError):

@@ -15,7 +15,7 @@ Point(1, 2, 3)
 from __future__ import annotations
 
 import numbers
-from collections.abc import Callable, Iterator
+from collections.abc import Callable, Iterator, Sequence
 from fractions import Fraction  # noqa: F401 (doctests)
 from typing import Any, ClassVar, TypeVar
 
@@ -26,7 +26,7 @@ from .errors import DimensionError, IdealPointError, ObjectTypeError, Undecidabl
 from .exact import Scalar, all_zero, canonical_coords, format_entry, is_zero, latex, to_exact
 from .kinds import Kind
 from .matrices import proportional
-from .ring import dot
+from .ring import Action, dot
 
 __all__ = ["HomogeneousHyperplane", "HomogeneousPoint", "HomogeneousVector", "is_zero", "to_exact"]
 
@@ -56,10 +56,9 @@ class HomogeneousVector(Kind):
 
     size: int = 3
     _kind: str = "vector"
-    # the n of the space Pⁿ the object lives in (None: not acted on by transformations), and whether it
-    # transforms like a point (x' = H x) or covariantly like a line or plane (l' ∝ H⁻ᵀ l)
+    # the n of the space Pⁿ the object lives in (None: not acted on by transformations); how the object
+    # transforms is its ``image`` rule
     ambient_dim: ClassVar[int | None] = None
-    _covariant: ClassVar[bool] = False
 
     __slots__ = ("_coords",)
 
@@ -176,9 +175,19 @@ class HomogeneousVector(Kind):
         return type(self)._from_exact(canonical_coords(self._coords))
 
     # -- action of a transformation ----------------------------------------------------------------
+    @classmethod
+    def image(cls, coords: Sequence[Any], H: Action) -> tuple[Any, ...]:
+        """The coordinates of the image under the matrix action ``H``, in any ring: a point maps by ``H x``.
+
+        >>> from pgsym import Point
+        >>> Point.image((1, 2, 1), Action([[2, 0, 0], [0, 2, 0], [0, 0, 1]]))
+        (2, 4, 1)
+        """
+        return H.point(coords)
+
     def _transformed_by(self: _V, H: Any) -> _V:
-        """The image under the transformation ``H`` (checked by ``H.apply``): ``H x``, or ``adj(H)ᵀ l`` if covariant."""
-        return type(self)._from_exact(H.map_vector(self._coords, self._covariant))
+        """The image under the transformation ``H`` (checked by ``H.apply``), by the class's :meth:`image` rule."""
+        return type(self)._from_exact(tuple(sympy.expand(e) for e in type(self).image(self._coords, H.action)))
 
     # -- rendering ----------------------------------------------------------------
     def __repr__(self) -> str:
@@ -251,7 +260,16 @@ class HomogeneousHyperplane(HomogeneousVector):
     """
 
     __slots__ = ()
-    _covariant = True  # l' ∝ H⁻ᵀ l keeps the incidence lᵀx = 0
+
+    @classmethod
+    def image(cls, coords: Sequence[Any], H: Action) -> tuple[Any, ...]:
+        """A line or plane maps by the cofactor matrix, ``adj(H)ᵀ l ∝ H⁻ᵀ l``, which keeps the incidence ``lᵀx = 0``.
+
+        >>> from pgsym import Line
+        >>> Line.image((1, 0, 0), Action([[1, 0, 5], [0, 1, 0], [0, 0, 1]]))     # x = 0 moved by 5: x = 5
+        (1, 0, -5)
+        """
+        return H.hyperplane(coords)
 
     @property
     def normal(self) -> tuple[Expr, ...]:

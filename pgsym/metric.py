@@ -481,8 +481,16 @@ def squared_distance(a: Any, b: Any) -> Expr:
 def distance(a: Any, b: Any) -> Expr:
     """The Euclidean distance, ``√squared_distance(a, b)``, as an exact algebraic number.
 
+    For complex points this is the principal square root of the *bilinear* squared distance
+    ``(x₁ − x₂)² + (y₁ − y₂)²``, the form the absolute defines (C*∞ and Q*∞ are bilinear, not Hermitian): so
+    ``(0, 0)`` and ``(3i, 0)`` are ``√−9 = 3i`` apart, and a point on an isotropic line, ``(1, i)``, is at
+    distance 0 from ``(0, 0)``. (A float library that takes the Hermitian norm, such as geometer, returns 3
+    and √2 instead; real points get the same distance either way.)
+
     >>> distance(Point(0, 0), Point(1, 1)), distance(Point3(1, 2, 3), Plane(0, 0, 2, 0))
     (sqrt(2), 3)
+    >>> distance(Point(0, 0), Point(3 * sympy.I, 0)), distance(Point(0, 0), Point(1, sympy.I))
+    (3*I, 0)
     """
     return sympy.sqrt(squared_distance(a, b))
 

@@ -55,6 +55,7 @@ from sympy import Expr, ImmutableMatrix, Integer
 
 from . import ring
 from .errors import (
+    CoincidentLinesError,
     CoincidentPointsError,
     CollinearPointsError,
     DegenerateConfigurationError,
@@ -63,6 +64,7 @@ from .errors import (
     NotAPencilError,
     NotOnKleinQuadricError,
     NotSkewSymmetricError,
+    SkewLinesError,
     UndefinedCrossRatioError,
     ZeroVectorError,
 )
@@ -79,6 +81,8 @@ __all__ = [
     "NotSkewSymmetricError",
     "cross_ratio_planes",
     "klein_form",
+    "meet_lines",
+    "plane_through_lines",
     "reciprocal_product",
 ]
 
@@ -165,9 +169,28 @@ class Line3(HomogeneousVector, kind="line3"):
         return obj
 
 
+    @classmethod
+    def image(cls, coords: Sequence[Any], H: ring.Action) -> tuple[Any, ...]:
+        """The Plücker coordinates of the image line, in any ring: the Plücker matrix maps like a dual conic,
+        ``L' = H L Hᵀ`` (``L = A Bᵀ − B Aᵀ`` goes to ``(HA)(HB)ᵀ − (HB)(HA)ᵀ``).
+
+        >>> H = ring.Action([[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 1, 0, 1]])
+        >>> A, B = (0, 0, 0, 1), (0, 1, 0, 0)                        # the y-axis
+        >>> Line3.image(Line3.join(Point3(*A), Point3(*B)).coords, H)
+        (0, 0, 0, 0, 1, 0)
+        >>> _ == Line3.join(Point3(*H.point(A)), Point3(*H.point(B))).coords
+        True
+        """
+        zero = coords[0] * 0
+        m = [[zero] * 4 for _ in range(4)]
+        for (i, j), c in zip(_POSITIONS, coords, strict=True):
+            m[i][j], m[j][i] = c, -c
+        image = H.hyperplane_form(m)
+        return tuple(image[i][j] for i, j in _POSITIONS)
+
     def _transformed_by(self, H: Any) -> Line3:
-        """The image line: the Plücker matrix maps like a dual conic, ``L' = H L Hᵀ`` (``L = A Bᵀ − B Aᵀ``)."""
-        return type(self).from_matrix(H.map_form(self.matrix))
+        """The image line under the transformation ``H`` (checked by ``H.apply``), by :meth:`image`."""
+        return type(self)(*(sympy.expand(e) for e in type(self).image(self._coords, H.action)))
 
     # -- constructions ------------------------------------------------------------------------
     @classmethod
@@ -431,6 +454,63 @@ def reciprocal_product(l: Line3, m: Line3) -> Expr:
     require(l, Line3, "reciprocal_product")
     require(m, Line3, "reciprocal_product")
     return sympy.expand(sum((a * b for a, b in zip(l.coordinates, m.dual_coordinates, strict=True)), Integer(0)))
+
+
+def _meeting(l: Line3, m: Line3, function: str, what: str) -> ImmutableMatrix:
+    """``L M*`` for two distinct lines that meet: the rank-one matrix ``X πᵀ`` of their common point X and plane π.
+
+    With X on both lines, ``L = X Bᵀ − B Xᵀ`` for a second point B of l, and ``M* X = 0`` gives
+    ``L M* = X (Bᵀ M*)``: a multiple of X in every column, and ``Bᵀ M* = −(M* B)ᵀ``, the plane through m and
+    B (nonzero as B is off m), in every row.
+    """
+    for name, line in (("first", l), ("second", m)):
+        require(line, Line3, function, f"; pass the {name} line as a Line3 (Line3.join of two points)")
+    if l == m:
+        raise CoincidentLinesError(
+            f"{function}: {l!r} and {m!r} are the same line, which has every one of its points and lies in every "
+            f"plane through it: two equal lines have no single {what}; pass two distinct lines")
+    product = reciprocal_product(l, m)
+    if not is_zero(product):
+        raise SkewLinesError(
+            f"{function}: the lines {l!r} and {m!r} are skew (their reciprocal product is {product}, not 0): they "
+            f"do not meet and lie in no common plane, so they have no {what}; pass two coplanar lines")
+    return ImmutableMatrix((l.matrix * m.dual_matrix).applyfunc(sympy.expand))
+
+
+def meet_lines(l: Line3, m: Line3) -> Point3:
+    """The point where two distinct coplanar lines of space meet (ideal when they are parallel): a nonzero column
+    of ``L M* = X πᵀ``.
+
+    Skew lines raise :class:`~pgsym.errors.SkewLinesError`, equal lines
+    :class:`~pgsym.errors.CoincidentLinesError`. The float kernel is :func:`pgsym.numeric.meet_lines`.
+
+    >>> x_axis = Line3.join(Point3(0, 0, 0), Point3(1, 0, 0))
+    >>> meet_lines(x_axis, Line3.join(Point3(2, 0, 0), Point3(2, 1, 0))).dehomogenize()    # the line x = 2, z = 0
+    (2, 0, 0)
+    >>> meet_lines(x_axis, Line3.join(Point3(0, 0, 1), Point3(0, 1, 1)))       # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    pgsym.errors.SkewLinesError: meet_lines: the lines ... are skew (their reciprocal product is 1, not 0): ...
+    """
+    product = _meeting(l, m, "meet_lines", "meet")
+    return Point3._from_exact(next(c for c in (tuple(product[:, k]) for k in range(4)) if not all_zero(c)))
+
+
+def plane_through_lines(l: Line3, m: Line3) -> Plane:
+    """The plane spanned by two distinct lines of space that meet (or are parallel): a nonzero row of
+    ``L M* = X πᵀ``.
+
+    Skew lines raise :class:`~pgsym.errors.SkewLinesError`, equal lines
+    :class:`~pgsym.errors.CoincidentLinesError`. The float kernel is :func:`pgsym.numeric.plane_through_lines`.
+
+    >>> x_axis = Line3.join(Point3(0, 0, 0), Point3(1, 0, 0))
+    >>> plane_through_lines(x_axis, Line3.join(Point3(2, 0, 0), Point3(2, 1, 0))) == Plane(0, 0, 1, 0)    # z = 0
+    True
+    >>> plane_through_lines(x_axis, Line3.join(Point3(0, 5, 0), Point3(1, 5, 0))) == Plane(0, 0, 1, 0)    # parallel
+    True
+    """
+    product = _meeting(l, m, "plane_through_lines", "common plane")
+    return Plane._from_exact(next(r for r in (tuple(product[k, :]) for k in range(4)) if not all_zero(r)))
 
 
 def klein_form(coordinates: Sequence[Scalar]) -> Expr:

@@ -45,7 +45,7 @@ from .errors import (
 )
 from .homogeneous import HomogeneousPoint, is_zero
 from .matrices import adjugate, expanded
-from .projective_plane import Line
+from .projective_plane import Line, Point
 from .transformations import Transformation
 
 __all__ = [
@@ -191,7 +191,7 @@ def cross_ratio(a: Point1, b: Point1, c: Point1, d: Point1) -> Expr:
     return _ratio(brackets[(0, 2)], brackets[(1, 3)], brackets[(0, 3)], brackets[(1, 2)], equal, "points", inputs)
 
 
-def harmonic_conjugate(a: Point1, b: Point1, c: Point1) -> Point1:
+def harmonic_conjugate(a: Point1 | Point, b: Point1 | Point, c: Point1 | Point) -> Point1 | Point:
     """The harmonic conjugate of C with respect to A and B: the point D with ``(A, B; C, D) = -1``.
 
     Solving ``[A C][B D] + [A D][B C] = 0`` (linear in D) gives
@@ -199,22 +199,53 @@ def harmonic_conjugate(a: Point1, b: Point1, c: Point1) -> Point1:
     such D exists and :class:`UndefinedCrossRatioError` is raised. Note that the
     map C ↦ D is an involution, and D is C's mirror image when B is ideal.
 
+    Three collinear points of P² (:class:`~pgsym.projective_plane.Point`) have their conjugate on the same
+    line: with ``C = αA + βB``, read off ``C × B = α (A × B)`` and ``A × C = β (A × B)`` in a coordinate where
+    ``A × B`` is nonzero, ``D = αA − βB`` (the P¹ formula in the coordinates (α, β) of the line; no division,
+    so ideal points are fine). Points that are not collinear have no conjugate:
+    :class:`UndefinedCrossRatioError`. The float kernel is :func:`pgsym.numeric.harmonic_conjugate`.
+
     >>> harmonic_conjugate(Point1(0), Point1(4), Point1(1)).dehomogenize()
     -2
     >>> harmonic_conjugate(Point1(-1), Point1(1), Point1(0)).is_ideal   # the midpoint pairs with ∞
     True
+    >>> harmonic_conjugate(Point(0, 0), Point(4, 4), Point(1, 1)).dehomogenize()     # the same on the line y = x
+    (-2, -2)
     """
+    if any(isinstance(p, Point) for p in (a, b, c)):
+        return _harmonic_conjugate_collinear(a, b, c)
     a, b, c = (_as_point1(p, "harmonic_conjugate") for p in (a, b, c))
     ac, bc, ab = bracket(a, c), bracket(b, c), bracket(a, b)
-    named = {"A = B": ab, "A = C": ac, "B = C": bc}
-    same = [name for name, value in named.items() if is_zero(value)]
+    _require_distinct(a, b, c, {"A = B": ab, "A = C": ac, "B = C": bc})
+    coords = tuple(sympy.expand(ac * bi + bc * ai) for ai, bi in zip(a, b, strict=True))
+    return Point1._from_exact(coords)
+
+
+def _require_distinct(a: Any, b: Any, c: Any, named: dict[str, Any]) -> None:
+    same = [name for name, value in named.items() if all(is_zero(x) for x in (value if isinstance(value, tuple)
+                                                                                else (value,)))]
     if same:
         raise UndefinedCrossRatioError(
             f"no harmonic conjugate of C = {c!r} with respect to A = {a!r} and B = {b!r}: "
             f"{', '.join(same)}; the three points must be distinct"
         )
-    coords = tuple(sympy.expand(ac * bi + bc * ai) for ai, bi in zip(a, b, strict=True))
-    return Point1._from_exact(coords)
+
+
+def _harmonic_conjugate_collinear(a: Point, b: Point, c: Point) -> Point:
+    for name, p in zip("ABC", (a, b, c), strict=True):
+        if not isinstance(p, Point):
+            raise ObjectTypeError(
+                f"harmonic_conjugate takes three points of P¹ or three collinear points of P², got {name} = "
+                f"{type(p).__name__} {p!r} beside a Point")
+    n, cb, ac = ring.cross(a.coords, b.coords), ring.cross(c.coords, b.coords), ring.cross(a.coords, c.coords)
+    _require_distinct(a, b, c, {"A = B": n, "A = C": ac, "B = C": cb})
+    if not is_zero(ring.dot(c.coords, n)):
+        raise UndefinedCrossRatioError(
+            f"no harmonic conjugate of C = {c!r} with respect to A = {a!r} and B = {b!r}: the three points are not "
+            "collinear (det[A B C] ≠ 0), and a harmonic conjugate lies on the line of the other three")
+    k = next(i for i in range(3) if not is_zero(n[i]))
+    alpha, beta = cb[k], ac[k]
+    return Point._from_exact(tuple(sympy.expand(alpha * x - beta * y) for x, y in zip(a.coords, b.coords, strict=True)))
 
 
 class ProjectiveMap1(Transformation):

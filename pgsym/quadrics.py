@@ -42,7 +42,7 @@ from .linalg import nullspace_exact
 from .matrices import adjugate
 from .plucker import Line3
 from .space import Plane, Point3
-from .symmetric_form import SymmetricForm, roots_on_line
+from .symmetric_form import DualForm, SymmetricForm, roots_on_line
 
 __all__ = ["DualQuadric", "LineOnQuadricError", "NotASphereError", "NotOnQuadricError", "Quadric"]
 
@@ -457,7 +457,7 @@ class Quadric(SymmetricForm, kind="quadric"):
         return DualQuadric._from_exact(adjugate(self._matrix))
 
 
-class DualQuadric(SymmetricForm, kind="dual_quadric"):
+class DualQuadric(DualForm, SymmetricForm, kind="dual_quadric"):
     """A dual quadric: the planes π with ``πᵀ Q* π = 0``, from a symmetric 4×4 matrix.
 
     For a non-degenerate quadric Q its tangent planes form ``Q* = adj Q``; degenerate dual
@@ -473,7 +473,6 @@ class DualQuadric(SymmetricForm, kind="dual_quadric"):
     size = 4
     ambient_dim = 3
     _kind = "dual quadric"
-    _covariant = False  # a form on planes: Q*' = H Q* Hᵀ
 
     @classmethod
     def absolute(cls) -> DualQuadric:

@@ -23,6 +23,7 @@ from itertools import combinations
 from typing import Any
 
 __all__ = [
+    "Action",
     "Quotient",
     "adjugate",
     "cross",
@@ -162,6 +163,50 @@ def wedge(a: Sequence[Any], b: Sequence[Any]) -> Matrix:
     (0, 1, 0, 0)
     """
     return tuple(tuple(a[i] * b[j] - b[i] * a[j] for j in range(4)) for i in range(4))
+
+
+class Action:
+    """A square matrix ``H`` acting on coordinates, in any ring: the four rules objects transform by.
+
+    Points map by ``H x``; lines and planes by the cofactor matrix ``adj(H)ᵀ ∝ H⁻ᵀ`` (so that ``lᵀx = 0`` is kept);
+    forms on points (conics, quadrics) by ``adj(H)ᵀ M adj(H) ∝ H⁻ᵀ M H⁻¹``; forms on lines or planes (dual conics,
+    dual quadrics, Plücker matrices) by ``H M Hᵀ``. Each object class names its rule (its ``image`` classmethod);
+    the cofactor matrix is computed once, on first use, unless the caller already has it.
+
+    >>> H = Action([[1, 0, 5], [0, 1, 0], [0, 0, 1]])          # the translation by (5, 0)
+    >>> H.point((0, 0, 1)), H.hyperplane((1, 0, 0))             # the origin, and the line x = 0 moves to x = 5
+    ((5, 0, 1), (1, 0, -5))
+    """
+
+    __slots__ = ("_cofactor", "matrix")
+
+    def __init__(self, matrix: Sequence[Sequence[Any]], cofactor: Sequence[Sequence[Any]] | None = None) -> None:
+        self.matrix: Matrix = tuple(tuple(row) for row in matrix)
+        self._cofactor = None if cofactor is None else tuple(tuple(row) for row in cofactor)
+
+    @property
+    def cofactor(self) -> Matrix:
+        """``adj(H)ᵀ``, which is ``det(H) H⁻ᵀ``."""
+        if self._cofactor is None:
+            self._cofactor = transpose(adjugate(self.matrix))
+        return self._cofactor
+
+    def point(self, x: Sequence[Any]) -> Vector:
+        """``H x``."""
+        return matvec(self.matrix, x)
+
+    def hyperplane(self, l: Sequence[Any]) -> Vector:
+        """``adj(H)ᵀ l ∝ H⁻ᵀ l``."""
+        return matvec(self.cofactor, l)
+
+    def point_form(self, m: Sequence[Sequence[Any]]) -> Matrix:
+        """``adj(H)ᵀ M adj(H) ∝ H⁻ᵀ M H⁻¹``."""
+        c = self.cofactor
+        return matmul(matmul(c, m), transpose(c))
+
+    def hyperplane_form(self, m: Sequence[Sequence[Any]]) -> Matrix:
+        """``H M Hᵀ``."""
+        return matmul(matmul(self.matrix, m), transpose(self.matrix))
 
 
 def squared_distance_fraction(p: Sequence[Any], q: Sequence[Any]) -> tuple[Any, Any]:

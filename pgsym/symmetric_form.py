@@ -28,8 +28,9 @@ from .errors import DegenerateConicError, InvalidCoordinatesError, UndecidableEr
 from .exact import all_zero, canonical_coords, format_entry, is_zero, latex, sign
 from .kinds import Kind
 from .matrices import exact_matrix, proportional, rank
+from .ring import Action
 
-__all__ = ["SymmetricForm", "roots_on_line"]
+__all__ = ["DualForm", "SymmetricForm", "roots_on_line"]
 
 _F = TypeVar("_F", bound="SymmetricForm")
 
@@ -79,15 +80,14 @@ def roots_on_line(a: Expr, b: Expr, c: Expr, p: Sequence[Expr], q: Sequence[Expr
 class SymmetricForm(Kind):
     """A nonzero symmetric ``size``×``size`` matrix up to a nonzero scale (base of Conic, DualConic, Quadric).
 
-    Subclasses set ``size`` (3 or 4), ``ambient_dim`` (the n of Pⁿ), ``_kind`` (the name used in
-    errors) and ``_covariant`` (True when the form is on points, so that it maps by ``H⁻ᵀ · H⁻¹``).
+    Subclasses set ``size`` (3 or 4), ``ambient_dim`` (the n of Pⁿ) and ``_kind`` (the name used in
+    errors); a form on lines or planes (a dual form) overrides :meth:`image`.
     """
 
     __slots__ = ("_matrix",)
     size: ClassVar[int] = 3
     ambient_dim: ClassVar[int | None] = None
     _kind: ClassVar[str] = "symmetric form"
-    _covariant: ClassVar[bool] = True
 
     def __init__(self, matrix: Any) -> None:
         self._matrix = self._check(matrix)
@@ -261,9 +261,21 @@ class SymmetricForm(Kind):
         return type(self)._from_exact(ImmutableMatrix(self._matrix.subs(*args, **kwargs)))
 
     # -- action of a transformation ------------------------------------------------------------------
+    @classmethod
+    def image(cls, matrix: Sequence[Sequence[Any]], H: Action) -> tuple[tuple[Any, ...], ...]:
+        """The matrix of the image under the matrix action ``H``, in any ring: a form on points (a conic, a quadric)
+        maps by ``adj(H)ᵀ M adj(H) ∝ H⁻ᵀ M H⁻¹``.
+
+        >>> from pgsym import Conic
+        >>> Conic.image([[1, 0, 0], [0, 1, 0], [0, 0, -1]], Action([[2, 0, 0], [0, 2, 0], [0, 0, 1]]))[2]
+        (0, 0, -16)
+        """
+        return H.point_form(matrix)
+
     def _transformed_by(self: _F, H: Any) -> _F:
-        """The image under ``H``: ``adj(H)ᵀ M adj(H) ∝ H⁻ᵀ M H⁻¹`` if covariant, else ``H M Hᵀ``."""
-        return type(self)._from_exact(H.map_form(self._matrix, self._covariant))
+        """The image under the transformation ``H`` (checked by ``H.apply``), by the class's :meth:`image` rule."""
+        rows = type(self).image(self._matrix.tolist(), H.action)
+        return type(self)._from_exact(ImmutableMatrix([[sympy.expand(e) for e in row] for row in rows]))
 
     # -- rendering -----------------------------------------------------------------------------------
     def __repr__(self) -> str:
@@ -276,3 +288,19 @@ class SymmetricForm(Kind):
 
     def _repr_latex_(self) -> str:
         return f"${self.latex()}$"
+
+
+class DualForm:
+    """Mixin of the forms on lines or planes (dual conics, dual quadrics): they map by ``H M Hᵀ``."""
+
+    __slots__ = ()
+
+    @classmethod
+    def image(cls, matrix: Sequence[Sequence[Any]], H: Action) -> tuple[tuple[Any, ...], ...]:
+        """``H M Hᵀ``: the tangent lines (planes) ``l`` of the form, ``lᵀ M l = 0``, map by ``H⁻ᵀ``.
+
+        >>> from pgsym import DualConic
+        >>> DualConic.image([[1, 0, 0], [0, 1, 0], [0, 0, 0]], Action([[2, 0, 0], [0, 2, 0], [0, 0, 1]]))[0]
+        (4, 0, 0)
+        """
+        return H.hyperplane_form(matrix)

@@ -40,6 +40,7 @@ from .kinds import Kind, object_classes
 from .limits import MAX_EXPONENT
 from .matrices import adjugate, exact_matrix, expanded, proportional
 from .projective_plane import Point, collinear
+from .ring import Action
 
 __all__ = [
     "MAX_POWER",
@@ -78,7 +79,7 @@ class Transformation(Kind, kind="transformation"):
     :class:`~pgsym.errors.SingularTransformationError`. Apply it by calling it
     (``H(x)``) or with ``@`` (``H @ x``); ``H @ G`` is the composition "first
     ``G``, then ``H``". ``==`` compares up to a nonzero scale. Each object class knows
-    how it transforms (its ``_transformed_by``); the transformation only supplies the
+    how it transforms (its ``image`` rule, in any ring); the transformation only supplies the
     products with ``H``, its adjugate and their transposes.
 
     >>> H = Transformation([[2, 0, 1], [0, 2, 0], [0, 0, 1]])
@@ -264,7 +265,7 @@ class Transformation(Kind, kind="transformation"):
         points ``x' = H x``; lines and planes ``l' = adj(H)ᵀ l ∝ H⁻ᵀ l``; conics and quadrics
         ``C' = adj(H)ᵀ C adj(H) ∝ H⁻ᵀ C H⁻¹``; dual conics ``C*' = H C* Hᵀ``; lines of P³
         by their Plücker matrix ``L' = H L Hᵀ`` (equivalently ``L*' ∝ H⁻ᵀ L* H⁻¹``). Each class
-        states its rule in its ``_transformed_by`` and the space it lives in as ``ambient_dim``.
+        states its rule in its ``image`` classmethod and the space it lives in as ``ambient_dim``.
 
         >>> from pgsym.projective_plane import Line
         >>> H = Transformation([[0, -1, 0], [1, 0, 0], [0, 0, 1]])     # rotation by 90°
@@ -288,27 +289,15 @@ class Transformation(Kind, kind="transformation"):
             )
         return obj._transformed_by(self)
 
-    # the products the objects' rules are written with ------------------------------------------
-    def map_vector(self, coords: Any, covariant: bool = False) -> tuple[Expr, ...]:
-        """``H x`` for a point's coordinates; ``adj(H)ᵀ l ∝ H⁻ᵀ l`` for a line's or plane's (``covariant``).
+    @property
+    def action(self) -> Action:
+        """The matrix and its cofactor matrix as an :class:`~pgsym.ring.Action`: the products the objects' ``image``
+        rules are written with.
 
-        >>> Transformation([[1, 0, 5], [0, 1, 0], [0, 0, 1]]).map_vector((0, 0, 1))
+        >>> Transformation([[1, 0, 5], [0, 1, 0], [0, 0, 1]]).action.point((0, 0, 1))
         (5, 0, 1)
         """
-        m = self.cofactor if covariant else self._matrix
-        return tuple(expanded(m * Matrix(coords)))
-
-    def map_form(self, m: Any, covariant: bool = False) -> ImmutableMatrix:
-        """``H M Hᵀ`` for a dual conic or Plücker matrix; ``adj(H)ᵀ M adj(H) ∝ H⁻ᵀ M H⁻¹`` for a conic or quadric.
-
-        >>> Transformation([[2, 0, 0], [0, 1, 0], [0, 0, 1]]).map_form(sympy.eye(3))
-        Matrix([
-        [4, 0, 0],
-        [0, 1, 0],
-        [0, 0, 1]])
-        """
-        left = self.cofactor if covariant else self._matrix
-        return expanded(left * Matrix(m) * left.T)
+        return Action(self._matrix.tolist(), self.cofactor.tolist())
 
     # -- rendering -----------------------------------------------------------------------------
     def __repr__(self) -> str:

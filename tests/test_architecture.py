@@ -115,6 +115,51 @@ def test_layer_rules_catch_an_upward_import(tmp_path: Path) -> None:
     assert ("core", "exercises") not in LAZY_ALLOWED
 
 
+# -- names that moved up a layer ---------------------------------------------------------------------------
+
+# A module that lost names to a higher layer keeps the old spellings with ``pgsym._lazy.moved_names``: each use
+# warns (DeprecationWarning, naming the new home), and the new home is imported only then, after the old module
+# has loaded. Every such forward is listed here (old module → new home) and nothing inside the package may use
+# an old spelling, so no import of the package goes through one.
+MOVED = {"pgsym.invariants": "pgsym.proofs.invariance"}
+
+
+def _moved_forwards() -> dict[str, tuple[str, set[str]]]:
+    """Old module → (new home, the old names) for every ``moved_names(...)`` call of the package."""
+    found = {}
+    for path in SOURCES:
+        for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+            if isinstance(node, ast.Call) and getattr(node.func, "id", None) == "moved_names":
+                names = set(ast.literal_eval(node.args[2]))
+                for kw in node.keywords:
+                    if kw.arg == "renamed":
+                        names |= set(ast.literal_eval(kw.value))
+                found[_module_name(path)] = (ast.literal_eval(node.args[1]), names)
+    return found
+
+
+def test_names_moved_up_a_layer_are_listed_and_unused_inside_the_package() -> None:
+    forwards = _moved_forwards()
+    assert {old: new for old, (new, _) in forwards.items()} == MOVED
+    used = []
+    for path in SOURCES:
+        tree = ast.parse(path.read_text(encoding="utf-8"))
+        name = _module_name(path)
+        package = name if path.name == "__init__.py" else name.rsplit(".", 1)[0]
+        for node in ast.walk(tree):
+            if isinstance(node, ast.ImportFrom):
+                base = package.split(".")[: len(package.split(".")) - (node.level - 1)] if node.level else []
+                target = ".".join(base + ([node.module] if node.module else []))
+                old = forwards.get(target)
+                if old is not None:
+                    used += [f"{name}: {target}.{a.name}" for a in node.names if a.name in old[1]]
+            elif isinstance(node, ast.Attribute) and isinstance(node.value, ast.Name):
+                old = next((v for k, v in forwards.items() if k.rsplit(".", 1)[1] == node.value.id), None)
+                if old is not None and node.attr in old[1]:
+                    used.append(f"{name}: {node.value.id}.{node.attr}")
+    assert not used, f"old spellings of moved names used inside the package: {used}"
+
+
 # -- facts about an operation live in its entry of the table ---------------------------------------------
 
 # Modules that still test an operation's name instead of reading its entry, and why (empty it, never add to it).

@@ -2,13 +2,12 @@
 
 from __future__ import annotations
 
-import shutil
 import subprocess
 import sys
 from fractions import Fraction
-from pathlib import Path
 
 import pytest
+from _installed import run_pgsym
 from hypothesis import given
 from hypothesis import strategies as st
 
@@ -17,12 +16,9 @@ from pgsym.cli._common import parse_coordinates, parse_number, parse_points
 from pgsym.errors import InputLimitError, PgsymError
 from pgsym.limits import MAX_DIGITS, MAX_EXPONENT
 
-PGSYM = shutil.which("pgsym", path=str(Path(sys.executable).parent))
-
 
 def run(*args: str) -> subprocess.CompletedProcess[str]:
-    assert PGSYM is not None, "the pgsym console script is not installed next to this Python"
-    return subprocess.run([PGSYM, *args], capture_output=True, text=True, timeout=60, stdin=subprocess.DEVNULL)
+    return run_pgsym(*args, timeout=60)
 
 
 def test_version():

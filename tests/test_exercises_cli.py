@@ -6,23 +6,19 @@ import csv
 import io
 import json
 import os
-import shutil
 import subprocess
 import sys
 from pathlib import Path
 
 import pytest
+from _installed import run_pgsym
 from click.testing import CliRunner
 
 from pgsym.cli import main
 
-PGSYM = shutil.which("pgsym", path=str(Path(sys.executable).parent))
-
 
 def run(*args: str, cwd: Path | None = None, env: dict | None = None) -> subprocess.CompletedProcess[str]:
-    assert PGSYM is not None, "the pgsym console script is not installed next to this Python"
-    return subprocess.run([PGSYM, *args], capture_output=True, text=True, timeout=120, stdin=subprocess.DEVNULL,
-                          cwd=cwd, env=env)
+    return run_pgsym(*args, cwd=cwd, env=env, timeout=120)
 
 
 def run_here(*args: str):  # type: ignore[no-untyped-def]

@@ -8,18 +8,15 @@ import sympy
 from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
-from pgsym.errors import ObjectTypeError
+from pgsym.errors import DegenerateConfigurationError, ObjectTypeError
 from pgsym.hierarchy import AFFINE_2D, EUCLIDEAN_2D, SIMILARITY_2D, class_by_key, classify
-from pgsym.invariants import (
+from pgsym.invariants import collinear_cross_ratio, cos2_angle, distance_squared, signed_area, signed_volume
+from pgsym.proofs.invariance import (
     INVARIANTS,
     Invariant,
-    collinear_cross_ratio,
-    cos2_angle,
-    distance_squared,
+    invariance_claim,
     invariant,
     invariants_of,
-    signed_area,
-    signed_volume,
     summary_markdown,
     summary_table,
 )
@@ -50,24 +47,38 @@ def test_invariants_of_the_largest_classes_have_no_counterexample():
 
 
 def test_the_engine_rejects_false_claims():
-    # length is NOT invariant under similarities, nor the angle under affinities: the same engine says so
-    wrong = [
-        Invariant("x-length", "length", "similarity2", "", invariant("length").configuration,
-                  invariant("length").value),
-        Invariant("x-angle", "angle", "affine2", "", invariant("angle").configuration, invariant("angle").value),
-        Invariant("x-parallel", "parallelism", "projective2", "", invariant("parallelism").configuration,
-                  invariant("parallelism").value),
-    ]
-    import pgsym.invariants as mod
+    # length is NOT invariant under similarities, nor the angle under affinities, nor parallelism under
+    # projectivities: the claim engine refutes each with a counterexample it rechecks exactly
+    wrong = [Invariant(f"x-{key}", invariant(key).name, cls, "", invariant(key).configuration, invariant(key).value)
+             for key, cls in (("length", "similarity2"), ("angle", "affine2"), ("parallelism", "projective2"))]
+    for w in wrong:
+        proof = w.prove()
+        assert not proof.holds
+        assert all(v.status == "false" and v.counterexample.recheck() for v in proof.verdicts)
 
-    saved = mod.INVARIANTS
-    try:
-        mod.INVARIANTS = saved + tuple(wrong)
-        mod._prove.cache_clear()
-        assert not any(w.prove().holds for w in wrong)
-    finally:
-        mod.INVARIANTS = saved
-        mod._prove.cache_clear()
+
+def test_an_invariance_proof_is_a_claim_proved_by_the_engine():
+    # one claim per component of the class: the improper isometries are a component of their own
+    proof = invariant("length").prove()
+    assert [v.status for v in proof.verdicts] == ["proved", "proved"]
+    assert proof.verdicts[1].title == "length is invariant under the class Isometry (reflection)"
+    claim = invariance_claim(invariant("length"), 1)
+    # the objects X1, X2, their images X1', X2' under the generic improper isometry H, and |X1X2|² before and after
+    assert [n.name for n in claim.nodes.values() if not n.name.startswith("_")] == [
+        "H", "X1", "X1'", "X2", "X2'", "q1", "q1'"]
+    assert "H is non-singular (det H ≠ 0)" in claim.conditions_text()
+
+
+def test_the_old_home_of_the_invariants_forwards_with_a_warning():
+    import pgsym.invariants as old
+    import pgsym.proofs.invariance as new
+
+    for name in ("INVARIANTS", "Invariant", "invariant", "invariants_of", "summary_table", "summary_markdown"):
+        with pytest.warns(DeprecationWarning, match=f"pgsym.invariants.{name} is now pgsym.proofs.invariance"):
+            assert getattr(old, name) is getattr(new, name)
+    import pgsym
+
+    assert pgsym.invariant is new.invariant and pgsym.summary_markdown is new.summary_markdown
 
 
 # -- counterexamples, values derived by hand -------------------------------------------------------
@@ -217,9 +228,19 @@ def test_counterexample_values_are_lists(inv):
 
 def test_the_old_name_of_the_invariance_counterexample_still_works_with_a_warning():
     import pgsym.invariants as invariants
+    from pgsym.proofs.invariance import InvarianceCounterexample
 
     with pytest.warns(DeprecationWarning, match="InvarianceCounterexample"):
         old = invariants.Counterexample
-    assert old is invariants.InvarianceCounterexample
+    assert old is InvarianceCounterexample
     with pytest.raises(AttributeError):
         invariants.NoSuchName  # noqa: B018
+
+
+def test_a_value_with_a_zero_denominator_is_a_named_error():
+    # (0, 0) and (1, −1): squared distance 1 + 1 = 2; the perspectivity (x, y, w) ↦ (x, y, y + w) sends
+    # (1, −1, 1) to the ideal point (1, −1, 0), where the squared distance has the denominator (w_p w_q)² = 0
+    persp = [[1, 0, 0], [0, 1, 0], [0, 1, 1]]
+    assert invariant("length").evaluate([[1, 0, 0], [0, 1, 0], [0, 0, 1]], [0, 0, 1, -1]) == ([2], [2])
+    with pytest.raises(DegenerateConfigurationError, match="length is undefined"):
+        invariant("length").evaluate(persp, [0, 0, 1, -1])

@@ -3,24 +3,20 @@
 from __future__ import annotations
 
 import json
-import shutil
 import subprocess
-import sys
 from pathlib import Path
 
+from _installed import run_pgsym
 from click.testing import CliRunner
 
 from pgsym.cli import main
 from pgsym.proofs import CATALOGUE, catalogue_names
 
 THEOREMS = Path(__file__).parent / "theorems"
-PGSYM = shutil.which("pgsym", path=str(Path(sys.executable).parent))
 
 
 def run(*args: str) -> subprocess.CompletedProcess[str]:
-    assert PGSYM is not None, "the pgsym console script is not installed next to this Python"
-    return subprocess.run([PGSYM, "prove", *args], capture_output=True, text=True, timeout=120,
-                          stdin=subprocess.DEVNULL)
+    return run_pgsym("prove", *args, timeout=120)
 
 
 def test_list_names_every_claim():

@@ -10,7 +10,16 @@ import pytest
 import sympy
 from hypothesis import assume, given, settings
 from hypothesis import strategies as st
-from strategies import homogeneous_triples, integers, invertible_matrices, lines, points, points3, transformations
+from strategies import (
+    homogeneous_triples,
+    integers,
+    invertible_matrices,
+    lines,
+    points,
+    points3,
+    symmetric_forms,
+    transformations,
+)
 
 from pgsym.errors import DimensionError, ObjectTypeError, PgsymError, SingularTransformationError
 from pgsym.projective_plane import Line, Point, collinear, concurrent, cross, incident, join, meet
@@ -496,3 +505,43 @@ def test_homography_from_points_and_conics_errors():
         hpc(on, on, C, "circle")
     with pytest.raises(DimensionError):
         hpc(5, on, C, C)
+
+
+# -- each class's image rule, in any ring ---------------------------------------------------------------------
+
+
+@settings(max_examples=30, deadline=None)
+@given(invertible_matrices(3), points(), lines(), symmetric_forms(3))
+def test_the_image_rules_run_on_plain_integers_as_on_sympy_objects(h, p, l, form):
+    # the rule each class states (its image classmethod) gives on Python integers, with ring.Action, the
+    # coordinates the transformation gives on the exact objects; and the rules keep the forms' values up to
+    # det(H)²: lines map by adj(H)ᵀ, so (adj(H)ᵀ l)ᵀ (H x) = lᵀ adj(H) H x = det(H) lᵀx, and likewise
+    # (Hx)ᵀ adj(H)ᵀ C adj(H) (Hx) = det(H)² xᵀCx, (adj(H)ᵀ l)ᵀ H C* Hᵀ (adj(H)ᵀ l) = det(H)² lᵀC*l
+    from pgsym.conics import Conic, DualConic
+    from pgsym.ring import Action, det, dot, matvec
+
+    H, action, d = Transformation(h), Action(h), det(h)
+    x, m = [int(v) for v in p.coords], [int(v) for v in l.coords]
+    c = [[int(e) for e in row] for row in form.tolist()]
+    for obj, data in ((p, x), (l, m), (Conic(form), c), (DualConic(form), c)):
+        image = H(obj)
+        expected = image.coords if hasattr(image, "coords") else tuple(tuple(r) for r in image.matrix.tolist())
+        assert type(obj).image(data, action) == expected
+    hx, hl = Point.image(x, action), Line.image(m, action)
+    assert dot(hl, hx) == d * dot(m, x)
+    assert dot(hx, matvec(Conic.image(c, action), hx)) == d * d * dot(x, matvec(c, x))
+    assert dot(hl, matvec(DualConic.image(c, action), hl)) == d * d * dot(m, matvec(c, m))
+
+
+def test_the_plucker_rule_maps_a_join_to_the_join_of_the_images():
+    # L = A Bᵀ − B Aᵀ goes to H L Hᵀ = (HA)(HB)ᵀ − (HB)(HA)ᵀ: with A = (1, 0, 0, 1), B = (0, 1, 0, 1) and
+    # H = [[1, 1, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]] (x += y), HA = (1, 0, 0, 1), HB = (1, 1, 0, 1)
+    from pgsym.plucker import Line3
+    from pgsym.ring import Action
+
+    space = _space()
+    h = [[1, 1, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]
+    line = Line3.join(space.Point3(1, 0, 0, 1), space.Point3(0, 1, 0, 1))
+    image = Line3.image(line.coords, Action(h))
+    assert image == Line3.join(space.Point3(1, 0, 0, 1), space.Point3(1, 1, 0, 1)).coords
+    assert Transformation(h)(line).coords == image

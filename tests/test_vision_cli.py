@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import csv
-import shutil
 import subprocess
 import sys
 from pathlib import Path
@@ -11,8 +10,7 @@ from pathlib import Path
 import cv2
 import numpy as np
 import pytest
-
-PGSYM = shutil.which("pgsym", path=str(Path(sys.executable).parent))
+from _installed import run_pgsym
 
 HARRIS_FILES = {"image.png", "Ix.png", "Iy.png", "Ixx.png", "Iyy.png", "Ixy.png", "Sxx.png", "Syy.png", "Sxy.png",
                 "det.png", "trace.png", "response.png", "candidates.png", "maxima.png", "corners.png",
@@ -20,9 +18,7 @@ HARRIS_FILES = {"image.png", "Ix.png", "Iy.png", "Ixx.png", "Iyy.png", "Ixy.png"
 
 
 def run(*args: str, cwd: Path | None = None) -> subprocess.CompletedProcess[str]:
-    assert PGSYM is not None, "the pgsym console script is not installed next to this Python"
-    return subprocess.run([PGSYM, *args], capture_output=True, text=True, timeout=60, stdin=subprocess.DEVNULL,
-                          cwd=cwd)
+    return run_pgsym(*args, cwd=cwd, timeout=60)
 
 
 @pytest.fixture

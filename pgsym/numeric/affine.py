@@ -23,7 +23,17 @@ import numpy as np
 
 from ..errors import CoincidentPointsError, DegenerateConfigurationError
 from ._arrays import DEGENERATE, check_option
-from .euclid import PART, check_options, either_point_ideal, euclid_arrays, flag_unsafe, resolve, run, scaled
+from .euclid import (
+    PART,
+    add_square,
+    check_options,
+    either_point_ideal,
+    euclid_arrays,
+    flag_unsafe,
+    resolve,
+    run,
+    scaled,
+)
 from .tolerances import INCIDENT_RTOL
 
 __all__ = ["is_parallel", "midpoint", "parallel_line"]
@@ -119,11 +129,7 @@ def _sin2_kernel(part: tuple[int, ...]) -> Any:
             np.multiply(a[..., part[p]], b[..., part[q]], out=t)
             np.multiply(a[..., part[q]], b[..., part[p]], out=u)
             np.subtract(t, u, out=t)
-            if j == 0:
-                np.multiply(t, t, out=o)
-            else:
-                np.multiply(t, t, out=t)
-                np.add(o, t, out=o)
+            add_square(t, o, j == 0)
         np.multiply(na, nb, out=t)
         with np.errstate(divide="ignore"):  # an object at infinity: reported afterwards
             np.divide(o, t, out=o)

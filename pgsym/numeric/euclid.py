@@ -18,8 +18,8 @@ import numpy as np
 from ..errors import DimensionError, IdealPointError
 from ._arrays import NONFINITE, as_float_array, check_option, nonfinite_result, rowwise
 
-__all__ = ["IDEAL", "PART", "check_options", "either_point_ideal", "euclid_arrays", "flag_unsafe", "resolve", "run",
-           "scaled"]
+__all__ = ["IDEAL", "PART", "add_square", "check_options", "either_point_ideal", "euclid_arrays", "flag_unsafe",
+           "resolve", "run", "scaled"]
 
 IDEAL = ("raise", "mask")
 
@@ -30,6 +30,20 @@ PART = {3: (0, 1), 4: (0, 1, 2), 6: (2, 4, 5)}
 # a squared norm outside [2⁻⁹⁶⁸, 2⁹⁶⁸] has overflowed, underflowed, or is about to lose digits in the
 # division that follows; such rows are recomputed after scaling (well inside float64's 2^±1022)
 SQUARE_LO, SQUARE_HI = 2.0**-968, 2.0**968
+
+
+def add_square(t: np.ndarray, o: np.ndarray, first: bool) -> None:
+    """``o = t²`` for the first term of a sum of squares, else ``o += t²``; in place (``t`` is overwritten).
+
+    >>> o, t = np.zeros(2), np.array([3.0, 1.0])
+    >>> add_square(t, o, True); add_square(np.array([4.0, 1.0]), o, False); o
+    array([25.,  2.])
+    """
+    if first:
+        np.multiply(t, t, out=o)
+    else:
+        np.multiply(t, t, out=t)
+        np.add(o, t, out=o)
 
 
 def flag_unsafe(square: np.ndarray, o: np.ndarray) -> None:

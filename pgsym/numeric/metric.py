@@ -34,6 +34,7 @@ from ..errors import CoincidentLinesError, CoincidentPointsError
 from ._arrays import DEGENERATE, check_option
 from .euclid import (
     PART,
+    add_square,
     check_options,
     either_point_ideal,
     euclid_arrays,
@@ -157,18 +158,24 @@ def is_perpendicular(
 
 
 # -- distances --------------------------------------------------------------------------------------
+def _incidence_and_normal(x: np.ndarray, h: np.ndarray, dot: np.ndarray, nn: np.ndarray, t: np.ndarray) -> None:
+    """In place: ``dot = hᵀx`` over all k entries, and ``nn = |n|²`` for the normal ``n`` of h (its first k − 1)."""
+    k = x.shape[-1]
+    np.multiply(x[..., 0], h[..., 0], out=dot)
+    np.multiply(h[..., 0], h[..., 0], out=nn)
+    for i in range(1, k):
+        np.multiply(x[..., i], h[..., i], out=t)
+        np.add(dot, t, out=dot)
+        if i < k - 1:
+            np.multiply(h[..., i], h[..., i], out=t)
+            np.add(nn, t, out=nn)
+
+
 def _hyper_kernel(ins: list[np.ndarray], o: np.ndarray, ws: list[np.ndarray]) -> None:
     x, h = ins
     t, nn = ws
     k = x.shape[-1]
-    np.multiply(x[..., 0], h[..., 0], out=o)
-    np.multiply(h[..., 0], h[..., 0], out=nn)
-    for i in range(1, k):
-        np.multiply(x[..., i], h[..., i], out=t)
-        np.add(o, t, out=o)
-        if i < k - 1:
-            np.multiply(h[..., i], h[..., i], out=t)
-            np.add(nn, t, out=nn)
+    _incidence_and_normal(x, h, o, nn, t)
     np.sqrt(nn, out=t)
     np.multiply(t, x[..., k - 1], out=t)
     with np.errstate(divide="ignore"):  # an ideal point or a line at infinity: reported afterwards
@@ -225,11 +232,7 @@ def _point_kernel(ins: list[np.ndarray], o: np.ndarray, ws: list[np.ndarray]) ->
         np.multiply(x[..., i], rx, out=t)
         np.multiply(y[..., i], ry, out=u)
         np.subtract(t, u, out=t)
-        if i == 0:
-            np.multiply(t, t, out=o)
-        else:
-            np.multiply(t, t, out=t)
-            np.add(o, t, out=o)
+        add_square(t, o, i == 0)
     np.sqrt(o, out=o)
 
 
@@ -259,14 +262,7 @@ def _foot_kernel(factor: float) -> Callable[[list[np.ndarray], np.ndarray, list[
         x, h = ins
         t, s, d = ws
         k = x.shape[-1]
-        np.multiply(h[..., 0], h[..., 0], out=s)
-        np.multiply(x[..., 0], h[..., 0], out=d)
-        for i in range(1, k):
-            np.multiply(x[..., i], h[..., i], out=t)
-            np.add(d, t, out=d)
-            if i < k - 1:
-                np.multiply(h[..., i], h[..., i], out=t)
-                np.add(s, t, out=s)
+        _incidence_and_normal(x, h, d, s, t)
         if factor != 1.0:
             np.multiply(d, factor, out=d)
         for i in range(k - 1):  # s x_i − factor (h·x) n_i

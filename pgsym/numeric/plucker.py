@@ -297,6 +297,7 @@ def meet_lines(
     the meets of P² (:func:`pgsym.numeric.meet`) the default ``degenerate="zero"`` gives the zero vector,
     ``"raise"`` :class:`~pgsym.errors.CoincidentLinesError` (equal lines) or
     :class:`~pgsym.errors.DegenerateConfigurationError` (skew lines), ``"mask"`` NaN rows and a mask.
+    The exact construction is :func:`pgsym.plucker.meet_lines`.
 
     >>> x_axis = plucker_join([0.0, 0, 0, 1], [1.0, 0, 0, 1])
     >>> y_line = plucker_join([2.0, 0, 0, 1], [2.0, 1, 0, 1])     # x = 2 in the plane z = 0
@@ -315,7 +316,8 @@ def plane_through_lines(
 ) -> Any:
     """The planes spanned by pairs of meeting lines of P³: a row of ``L M* = X πᵀ``.
 
-    Equal and skew lines span no single plane: zeros, an error or a mask, as in :func:`meet_lines`.
+    Equal and skew lines span no single plane: zeros, an error or a mask, as in :func:`meet_lines`. The exact
+    construction is :func:`pgsym.plucker.plane_through_lines`.
 
     >>> x_axis = plucker_join([0.0, 0, 0, 1], [1.0, 0, 0, 1])
     >>> y_line = plucker_join([2.0, 0, 0, 1], [2.0, 1, 0, 1])

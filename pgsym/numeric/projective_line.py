@@ -187,7 +187,8 @@ def harmonic_conjugate(
     Points of P¹ (2 coordinates) use the formula of :func:`pgsym.projective_line.harmonic_conjugate`,
     ``D = [A C] B + [B C] A``, with the same numbers on the same data. Collinear points of P² (3 coordinates)
     use ``D = α A − β B`` for ``C = α A + β B``, read off the cross products ``C × B = α (A × B)`` and
-    ``A × C = β (A × B)`` and scaled by ``|A × B|²`` — no division, so ideal points are fine. Two equal
+    ``A × C = β (A × B)`` and scaled by ``|A × B|²`` — no division, so ideal points are fine (the exact
+    :func:`pgsym.projective_line.harmonic_conjugate` takes both kinds of input as well). Two equal
     points (exactly), or three points of P² that are not collinear (``|det[A B C]| > rtol |C| |A × B|``),
     have no conjugate: :class:`~pgsym.errors.UndefinedCrossRatioError`, or with ``degenerate="mask"``
     NaN rows and a mask. Complex arrays are accepted.

@@ -13,16 +13,12 @@ True
 
 from __future__ import annotations
 
-import functools
 from collections.abc import Callable, Iterable, Iterator
 from dataclasses import dataclass
-from typing import Any
 
 import sympy
-from sympy.polys.rings import ring
 
 from .. import ring as alg
-from ..errors import ObjectTypeError
 from ..hierarchy import (
     AFFINE_2D,
     AFFINE_3D,
@@ -37,6 +33,7 @@ from ..hierarchy import (
 from .claims import Claim
 from .engine import prove as _prove_claim
 from .errors import UnknownClaimError
+from .invariance import class_matrix
 from .verdicts import Verdict
 
 __all__ = ["CATALOGUE", "Entry", "UnknownClaimError", "catalogue_names", "get_claim", "prove", "prove_all"]
@@ -126,36 +123,6 @@ def _cross_ratio_p2(a: tuple, b: tuple, c: tuple, d: tuple, o: tuple) -> tuple:
 
 def _conic_value(c: tuple, x: tuple) -> object:
     return alg.dot(x, alg.matvec(c, x))
-
-
-def class_matrix(c: Claim, group: TransformationClass,
-                 names: str = "") -> tuple[sympy.Matrix, tuple[sympy.Symbol, ...]]:
-    """The generic element of a class of the hierarchy with denominators cleared, and its parameters.
-
-    The parametrisation is the hierarchy's own (:attr:`~pgsym.hierarchy.TransformationClass.builder`:
-    rotations by ``rotation_2d`` / ``rotation_3d``); its parameters are declared on the claim, under
-    ``names`` (space-separated, in the order of ``group.parameter_names``; default those names). The
-    rotations have rational entries, so the element is multiplied by their common denominator: the
-    same projective transformation, with polynomial entries as a claim needs.
-
-    >>> from pgsym.hierarchy import EUCLIDEAN_2D
-    >>> M, ps = class_matrix(Claim("x", "x"), EUCLIDEAN_2D)
-    >>> M.row(2), ps
-    (Matrix([[0, 0, t**2 + 1]]), (t, t_x, t_y))
-    """
-    params = c.params(names or " ".join(group.parameter_names))
-    if len(params) != group.n_parameters:
-        raise ObjectTypeError(f"{group.name} has {group.n_parameters} parameters, got the names {names!r}")
-    R, *gens = ring(params, sympy.ZZ)
-    entries = [[alg.Quotient.of(e) for e in row] for row in group.builder([alg.Quotient(g) for g in gens], 0)]
-    dens: list[Any] = []
-    for e in (e for row in entries for e in row):
-        if e.d != 1 and all(e.d != d for d in dens):
-            dens.append(e.d)
-    den = functools.reduce(lambda x, y: x * y, dens, R.one)
-    # entries without a denominator are taken as they are (most classes have none: no division at all)
-    rows = [[(R(e.n) * (den if e.d == 1 else den.exquo(R(e.d)))).as_expr() for e in row] for row in entries]
-    return sympy.Matrix(rows), params
 
 
 def _incident_to_both(c: Claim, free: Callable[[str], object], op: str, name: str, given: str) -> None:

@@ -12,16 +12,14 @@ from __future__ import annotations
 import os
 import re
 import resource
-import shutil
 import struct
 import subprocess
-import sys
 import zlib
 from pathlib import Path
 
 import pytest
+from _installed import run_pgsym
 
-PGSYM = shutil.which("pgsym", path=str(Path(sys.executable).parent))
 MEMORY_LIMIT = 2 * 1024**3  # bytes of address space; NumPy, OpenCV and SymPy load in a few hundred MB
 TIME_LIMIT = 30  # seconds per run; a good run takes one to three
 WORDS = "x" * 10_000
@@ -119,10 +117,8 @@ def snapshot(folder: Path) -> dict[str, tuple[bool, int, int]]:
 
 
 def run(work: Path, *args: str) -> subprocess.CompletedProcess[str]:
-    assert PGSYM is not None, "the pgsym console script is not installed next to this Python"
     env = {**os.environ, "TMPDIR": str(work / "tmp"), "COLUMNS": "200"}
-    return subprocess.run([PGSYM, *args], cwd=work, env=env, capture_output=True, text=True, timeout=TIME_LIMIT,
-                          stdin=subprocess.DEVNULL, preexec_fn=_limit_memory)
+    return run_pgsym(*args, cwd=work, env=env, timeout=TIME_LIMIT, preexec_fn=_limit_memory)
 
 
 def check(result: subprocess.CompletedProcess[str], code: int, message: str) -> None:

@@ -27,6 +27,7 @@ from pathlib import Path
 from xml.etree import ElementTree
 
 import pytest
+from _installed import run_pgsym
 from click.testing import CliRunner
 
 from pgsym.cli import main
@@ -41,7 +42,6 @@ from pgsym.exercises.sheets import build_sheets, load_manifest, read_roster
 from pgsym.exercises.template import load_template_folder
 from pgsym.limits import MAX_ANSWER_CHARS, MAX_NESTING
 
-PGSYM = shutil.which("pgsym", path=str(Path(sys.executable).parent))
 SECRET = "PGSYMSECRETTOKEN"  # the content of an instructor's file that must never reach a sheet
 
 
@@ -454,12 +454,6 @@ def test_grades_csv_neutralises_formulas(made):
 
 
 # ----------------------------------------------------------------------------------- readers
-
-def run_pgsym(*args: str, cwd: Path) -> subprocess.CompletedProcess[str]:
-    assert PGSYM is not None, "the pgsym console script is not installed next to this Python"
-    return subprocess.run([PGSYM, *args], capture_output=True, text=True, timeout=60, cwd=cwd,
-                          stdin=subprocess.DEVNULL)
-
 
 def test_fifo_answers_are_refused_at_once(made):
     base, _ = made
