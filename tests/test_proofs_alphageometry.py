@@ -27,6 +27,7 @@ from pgsym.proofs.alphageometry import (
     solve,
     translate,
 )
+from pgsym.proofs.engine import prove
 from pgsym.proofs.errors import AlphaGeometryError, StatementError, UnsupportedConstructionError
 from pgsym.proofs.language import parse_statement
 
@@ -341,6 +342,17 @@ def test_each_construction_means_what_defs_txt_says(problem: str, holds: bool) -
     assert p.error is None, p.error
     outcome = solve(p, timeout=60)
     assert outcome.status == ("proved" if holds else "refuted"), (p.statement, outcome.verdict)
+
+
+def test_a_point_at_infinity_of_a_random_instance_is_no_branch() -> None:
+    # JGEX E051-7: d on line ab reaches the point at infinity at some rational instance (seed 2); the bisector of
+    # ∠cbd has no named branch there, which the comparison with pgsym's core took for a mismatch
+    problem = ("a b c = triangle a b c; d = on_line d a b; e = angle_bisector e c b a, on_line e a c; "
+               "f = on_pline f e a b, on_line f b c; g = angle_bisector g c b d, on_line g e f ? cong e f f g")
+    [p] = read_alphageometry("E051-7\n" + problem)
+    for seed in range(4):
+        verdict = prove(parse_statement(p.statement, name=p.name), timeout=60, seed=seed)
+        assert verdict.status == "proved", (seed, verdict.reason)
 
 
 def test_a_known_common_point_gives_the_other_point_not_either():

@@ -757,8 +757,15 @@ def _algebraic_line(cur: _Line) -> bool:
         return False
     if toks[0].text != "rotate":
         return True
-    rest = [t for t in toks[1:] if t.kind != "end"]
-    return len(rest) in (3, 4) and rest[-1].kind == "number" and (len(rest) == 3 or rest[-2].text == "-")
+    # the arguments as the parser reads them (an inline object such as (midpoint A B) is one argument): the
+    # degree form has three, the last a number
+    args, rest = [], _Line(toks[1:])
+    try:
+        while rest.peek().kind != "end":
+            args.append(_parse_arg(rest, 0))
+    except StatementError:
+        return False  # not the degree form; the cosine-sine form reports the error
+    return len(args) == 3 and isinstance(args[2], _Token) and args[2].kind == "number"
 
 
 def _integer(cur: _Line, what: str) -> int:
