@@ -60,6 +60,18 @@ def test_second_intersection_matches_the_core():
     assert X.conditions[0].startswith("P ≠ Q")
 
 
+def test_similar_copies_a_triangle_for_any_representatives():
+    c = Claim("x", "x")
+    # A = (1, 2), B = (3, 3) (written with w = 2), D = (0, 0), E = (1, 1), F = (0, 2) (w = 3): in complex numbers
+    # (F − D)/(E − D) = 2i/(1 + i) = 1 + i, and X = A + (B − A)(1 + i) = (1 + 2i) + (2 + i)(1 + i) = 2 + 5i
+    pts = [c.point("A", 1, 2), c.point("B", 6, 6, 2), c.point("D", 0, 0), c.point("E", 1, 1), c.point("F", 0, 6, 3)]
+    X = c.similar("X", *pts)
+    assert _proportional(_values(c)["X"], (2, 5, 1))
+    core = OPERATIONS["similar"].core(X, [projective_plane.Point(*n.data) for n in pts], sympy.Rational)
+    assert core == projective_plane.Point(2, 5)
+    assert X.conditions[0] == "D ≠ E" and OPERATIONS["similar"].group == "similarity"
+
+
 def test_point_on_conic_matches_the_core():
     c = Claim("x", "x")
     c.point_on_conic("X", c.conic("K", CIRCLE), c.point("P", -1, 0), 1)
@@ -165,6 +177,10 @@ def _proved_and_refuted(true_text: str, false_text: str) -> None:
      "point O = (0, 0)\nline m = (1, 2, -3)\npoint A on line m\npoint B on line m\npoint C on line m\n"
      "prove equal (crossratio (join O A) (join O B) (join O C) (join O (harmonic A B C))) 2\n"),
     ("points A B C\nprove collinear A B (midpoint A B)\n", "points A B C\nprove collinear A C (midpoint A B)\n"),
+    # ∠(AB, AX) = ∠(DE, DF) and |AX|·|DE| = |AB|·|DF|; the angle the other way round is false
+    ("points A B D E F\npoint X = similar A B D E F\nprove equalangle B A X E D F\n"
+     "prove equal (mul (dist2 A X) (dist2 D E)) (mul (dist2 A B) (dist2 D F))\n",
+     "points A B D E F\npoint X = similar A B D E F\nprove equalangle X A B E D F\n"),
     ("points F\n" + _CIRCLE + "prove conconic U1 U2 U3 U4 U5 (second K U1 F)\n",
      "points F\n" + _CIRCLE + "prove conconic U1 U2 U3 U4 F (second K U1 F)\n"),
 ])
