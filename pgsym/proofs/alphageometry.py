@@ -257,7 +257,7 @@ class _Circle:
 
 @dataclass
 class _Locus:
-    kind: str  # "line" or "circle"
+    kind: str  # "line", "circle" or "conic"
     expr: str  # pgsym text of the line or circle (names already pgsym's)
     on: set[str]  # AG points known on it
     name: str  # the construction (for messages)
@@ -464,11 +464,16 @@ class _Translator:
             where = (f"{two[1]} {two[2]}" if two[0] == "join" and len(two) == 3
                      else two[0] if len(two) == 1 else f"({locus.expr})")
             self.emit(f"point {x} on line {where}")
+        elif locus.kind == "conic":
+            self.emit(f"point {x} on conic {locus.expr} through {locus.through}")
         else:
             self.emit(f"point {x} on circle ({locus.expr}) through {locus.through}")
         locus.add(ag)
 
     def intersect(self, ag: str, one: _Locus, two: _Locus) -> None:
+        if "conic" in (one.kind, two.kind):
+            raise self.unsupported(one.name if one.kind == "conic" else two.name,
+                                   "a conic met with another locus: its common points are not constructed")
         if one.kind == "circle" and two.kind == "line":
             one, two = two, one
         common = sorted((one.on & two.on) - {ag}, key=list(self.defined).index)
@@ -1018,16 +1023,106 @@ def _eqdia_quadrangle(t: _Translator, a: list[str]) -> None:
     t.free_on(t.define(s), s, _eqdistance(t, [s, q, p, r]))
 
 
+def _copy(t: _Translator, a: str, b: str, d: str, e: str, f: str) -> str:
+    """An auxiliary point X with abX directly similar to def (so ∠(ab, aX) = ∠(de, df)): its pgsym name."""
+    _distinct(t, "the angle", d, e)
+    _distinct(t, "the angle", d, f)
+    x = t.new_aux("sim")
+    t.emit(f"point {x} = similar {t.p(a)} {t.p(b)} {t.p(d)} {t.p(e)} {t.p(f)}")
+    return x
+
+
+@_construction("on_aline", 6)
+def _on_aline(t: _Translator, a: list[str]) -> _Locus:
+    _, p, q, c, d, e = a  # ∠(px, pq) = ∠(dc, de): x on the ray from p towards p + (q − p)(c − d)/(e − d)
+    _distinct(t, "on_aline", p, q)
+    x = _copy(t, p, q, d, e, c)
+    return t.keyed_locus(("aline", p, q, c, d, e), f"join {t.p(p)} {x}", p, "on_aline", ray=True)
+
+
+def _angle_circle(t: _Translator, p: str, q: str, d: str, e: str, f: str, name: str) -> _Locus:
+    """The circle of the points x with ∠(xp, xq) = ∠(de, df): through p, q and the X with Xpq directly similar
+    to def (an inscribed angle; the angles are of lines, modulo π, so the whole circle)."""
+    _distinct(t, name, p, q)
+    x = _copy(t, p, q, e, f, d)
+    rec = t.circle_record(None, {p, q})
+    expr = f"circle {t.p(p)} {t.p(q)} {x}"
+    return _Locus("circle", expr, set(rec.points), name, rec.points.add, centre=f"(centre ({expr}))", through=t.p(p))
+
+
+@_construction("eqangle3", 6)
+def _eqangle3(t: _Translator, a: list[str]) -> _Locus:
+    _, p, q, d, e, f = a  # ∠(xp, xq) = ∠(de, df)
+    return _angle_circle(t, p, q, d, e, f, "eqangle3")
+
+
+@_construction("on_aline2", 6)
+def _on_aline2(t: _Translator, a: list[str]) -> _Locus:
+    _, p, q, c, d, e = a  # ∠(xp, xq) = ∠(dc, de)
+    return _angle_circle(t, p, q, d, c, e, "on_aline2")
+
+
+@_construction("eqangle2", 4)
+def _eqangle2(t: _Translator, a: list[str]) -> _Locus:
+    _, p, q, r = a  # ∠(pq, px) = ∠(rx, rq): the directions of px and rx add up to those of pq and rq, so x runs on
+    # a conic through p and r (Steiner: two pencils in projective correspondence), also through q (px = pq,
+    # rx = rq), p + r − q (px ∥ rq, rx ∥ pq) and the meet of the perpendiculars to pq at p and to rq at r
+    _distinct(t, "eqangle2", p, q, r)
+    P, Q, R = t.p(p), t.p(q), t.p(r)
+    k = t.new_aux("con")
+    t.emit(f"conic {k} = conic {P} {Q} {R} (translate {P} {Q} {R}) "
+           f"(meet (perpendicular (join {P} {Q}) {P}) (perpendicular (join {R} {Q}) {R}))")
+    return _Locus("conic", k, {p, q, r}, "eqangle2", lambda x: None, through=Q)
+
+
+@_construction("trisegment", 4, 2)
+def _trisegment(t: _Translator, a: list[str]) -> None:
+    x, y, p, q = a  # x, y divide pq in three equal parts, x next to p: x = p + (q − p)/3, the foot on pq of the
+    # centroid of p, q and q turned by 90° about p (its offset from pq is perpendicular); y = p + q − x
+    _distinct(t, "trisegment", p, q)
+    P, Q = t.p(p), t.p(q)
+    r = t.new_aux("rot")
+    t.emit(f"point {r} = rotate {Q} {P} 0 1")
+    _point(t, x, f"foot (meet (join {P} (midpoint {Q} {r})) (join {Q} (midpoint {P} {r}))) (join {P} {Q})")
+    _point(t, y, f"reflect {t.p(x)} (midpoint {P} {Q})")
+    t.add_collinear(x, y, p, q)
+
+
+@_construction("3peq", 6, 3)
+def _3peq(t: _Translator, a: list[str]) -> None:
+    x, y, z, p, q, r = a  # z on qr; x on pq and y on pr with z the midpoint of xy: y is x turned about z, so x is
+    # on pq and on the line pr turned about z
+    _distinct(t, "3peq", p, q, r)
+    t.free_on(t.define(z), z, t.join_locus(q, r, "3peq"))
+    Z = t.p(z)
+    _point(t, x, f"meet (join {t.p(p)} {t.p(q)}) (join (reflect {t.p(p)} {Z}) (reflect {t.p(r)} {Z}))")
+    _point(t, y, f"reflect {t.p(x)} {Z}")
+    t.add_collinear(x, p, q)
+    t.add_collinear(y, p, r)
+    t.add_collinear(x, y, z)
+
+
+@_construction("e5128", 6, 2)
+def _e5128(t: _Translator, a: list[str]) -> None:
+    x, y, p, q, c, d = a  # |cq| = |cd|, qc ⟂ qp; x on the circle c through q, y on pq, x y d collinear,
+    # ∠(pq, pd) = ∠(xp, xy): as pq touches at p the circle through p and d that is tangent to pq, that angle is
+    # the one this circle's points x see pd under, so x is its second common point with circle c (besides d)
+    _distinct(t, "e5128", p, q, c, d)
+    P, Q, C, D = t.p(p), t.p(q), t.p(c), t.p(d)
+    v = t.numeric.values
+    if not (_close(abs(v[C] - v[Q]), abs(v[C] - v[D])) and _close(_perp_dot((v[C] - v[Q]) * 1j, v[P] - v[Q]), 0.0)):
+        raise t.fail(f"e5128 needs |{c}{q}| = |{c}{d}| and {q}{c} ⟂ {q}{p} (its preconditions)", "e5128")
+    touching = f"(circle (meet (perpendicular (join {P} {Q}) {P}) (bisector {P} {D})) {P})"
+    _point(t, x, f"second (circle {C} {Q}) {touching} {D}")
+    _point(t, y, f"meet (join {t.p(x)} {D}) (join {P} {Q})")
+    t.circle_record(c, {q, d, x})
+    t.add_collinear(x, y, d)
+    t.add_collinear(y, p, q)
+
+
 _UNSUPPORTED: dict[str, str] = {
-    "on_aline": "an angle copied from three points: no construction of pgsym's statement language",
-    "on_aline2": "an angle copied from three points: no construction of pgsym's statement language",
-    "eqangle2": "no construction of pgsym's statement language",
-    "eqangle3": "a circle of points seeing a segment under a given angle: no construction",
-    "trisect": "no construction of pgsym's statement language",
-    "trisegment": "no construction of pgsym's statement language",
+    "trisect": "the trisectors of an angle need cube roots; pgsym's constructions take square roots only",
     "2l1c": "a circle touching two lines and a circle: no construction",
-    "e5128": "no construction of pgsym's statement language",
-    "3peq": "no construction of pgsym's statement language",
     "cc_tangent": "common tangents of two circles: no construction",
     "cc_tangent0": "common tangents of two circles: no construction",
     "tangent": "needs a branch condition: the two tangent points from a point, told apart by AG numerically",
@@ -1093,6 +1188,9 @@ class _Numeric:
                 args = self._args(tokens)
                 line = args[0] if len(args) == 1 else self._op("join", args)
                 self.values[name] = line.p + self.rng.uniform(-1.5, 1.5) * line.d / max(abs(line.d), 1e-300)
+            elif what == "conic":
+                conic, through = (self.values[w] for w in statement.split(" on conic ", 1)[1].split(" through "))
+                self.values[name] = _conic_point(conic, through, self.rng.uniform(0, math.pi))
             else:
                 circle = self._args(tokens)[0]
                 angle = self.rng.uniform(0, 2 * math.pi)
@@ -1158,6 +1256,52 @@ class _Numeric:
         return [*known, *(ag for ag in near if ag not in known)]
 
 
+@dataclass(frozen=True)
+class _NConic:
+    m: tuple[tuple[float, ...], ...]  # symmetric: (x, y, 1) M (x, y, 1)ᵀ = 0
+
+
+def _conic_through(points: tuple[complex, ...]) -> tuple[tuple[float, ...], ...]:
+    """The conic through five points: a null vector of the 5×6 rows (x², xy, y², x, y, 1), by elimination."""
+    rows = [[z.real ** 2, z.real * z.imag, z.imag ** 2, z.real, z.imag, 1.0] for z in points]
+    pivots: list[int] = []
+    for col in range(6):
+        i = max(range(len(pivots), 5), key=lambda r: abs(rows[r][col]), default=None)
+        if i is None or abs(rows[i][col]) < 1e-12:
+            continue
+        r = len(pivots)
+        rows[r], rows[i] = rows[i], rows[r]
+        rows[r] = [v / rows[r][col] for v in rows[r]]
+        for j in range(5):
+            if j != r:
+                rows[j] = [v - rows[j][col] * w for v, w in zip(rows[j], rows[r], strict=True)]
+        pivots.append(col)
+        if len(pivots) == 5:
+            break
+    free = next((c for c in range(6) if c not in pivots), None)
+    if free is None or len(pivots) < 5:
+        raise _NoFigure  # five points on a line pair or fewer distinct points: no single conic
+    v = [0.0] * 6
+    v[free] = 1.0
+    for r, col in enumerate(pivots):
+        v[col] = -rows[r][free]
+    a, b, c, d, e, f = v
+    return ((a, b / 2, d / 2), (b / 2, c, e / 2), (d / 2, e / 2, f))
+
+
+def _conic_point(conic: _NConic, p: complex, angle: float) -> complex:
+    """The second point of the conic on the line through its point p with the given direction."""
+    m, q = conic.m, (math.cos(angle), math.sin(angle), 0.0)
+    pp = (p.real, p.imag, 1.0)
+
+    def form(u: tuple[float, ...], v: tuple[float, ...]) -> float:
+        return sum(u[i] * m[i][j] * v[j] for i in range(3) for j in range(3))
+
+    qq, pq = form(q, q), form(pp, q)
+    x = [qq * pi - 2 * pq * qi for pi, qi in zip(pp, q, strict=True)]  # (QᵀMQ) P − 2 (PᵀMQ) Q
+    return complex(x[0] / x[2], x[1] / x[2])
+
+
 def _foot(p: complex, line: _NLine) -> complex:
     d = line.d
     t = ((p - line.p) * d.conjugate()).real / abs(d) ** 2
@@ -1213,6 +1357,9 @@ _NUMERIC_OPS: dict[str, Callable[..., Any]] = {
                           else _NCircle(_circumcentre(*a), abs(a[0] - _circumcentre(*a)) ** 2)),
     "centre": lambda k: k.c,
     "translate": lambda x, a, b: x + b - a,
+    "similar": lambda a, b, d, e, f: a + (b - a) * (f - d) / (e - d),
+    "second": lambda k, m, a: _reflect(a, _NLine(k.c, m.c - k.c)),  # two circles through a
+    "conic": lambda *p: _NConic(_conic_through(p)),
     "rotate": lambda x, o, c, s: o + (x - o) * complex(c, s),
 }
 
