@@ -115,6 +115,12 @@ def _locus(name: str, v: list[complex]) -> tuple:
     raise KeyError(name)
 
 
+def _s_angle(c: list[str], pts: dict[str, complex]) -> tuple:
+    """s_angle a b x y: the ray from b turned counter-clockwise by y degrees from ba, as ("ray", b, direction)."""
+    a, b, _x, deg = c[1:]
+    return ("ray", pts[b], (pts[a] - pts[b]) * cmath.exp(1j * math.radians(int(deg))))
+
+
 def _inscribed(a: complex, b: complex, theta: float) -> tuple[complex, float]:
     """The circle (centre, squared radius) of the points x with ∠(xa, xb) = θ (mod π).
 
@@ -263,8 +269,14 @@ def figure(problem: str, branches: Branches, rng: random.Random) -> dict[str, co
             for n, value in zip([args[i] for i in positions], _point(name, given, rng), strict=True):
                 pts[n] = value
             continue
-        loci = [_locus(c[0], [pts[a] for a in c[2:]]) for c in cons]
+        loci = [_locus(c[0], [pts[a] for a in c[2:]]) if c[0] != "s_angle" else _s_angle(c, pts) for c in cons]
         x = news[0]
+        if len(loci) == 2 and "ray" in (loci[0][0], loci[1][0]):  # a ray from v meets a circle: the point on it
+            (_, v, u), (_, o, r2) = sorted(loci, key=lambda loc: loc[0] != "ray")
+            ahead = [z for z in _line_circle(v, u, o, r2) if ((z - v) * u.conjugate()).real > 0]
+            assert len(ahead) == 1, "the case's ray starts inside its circle"
+            pts[x] = ahead[0]
+            continue
         if len(loci) == 1:
             kind, p, q = loci[0]
             t = rng.uniform(-1.5, 1.5)
@@ -410,6 +422,10 @@ CASES = [
     ("a b = segment a b; x y = trisegment x y a b ? midp x a b", False),
     ("a b c = triangle a b c; x y z = 3peq x y z a b c ? midp z x y", True),
     ("a b c = triangle a b c; x y z = 3peq x y z a b c ? coll x y a", False),
+    # a ray from the centre of a circle meets it once, at the turned point (JGEX E056-33): abe is equilateral
+    ("a b = segment a b; e = s_angle b a e 60, on_circle e a b ? cong a b b e", True),
+    ("a b = segment a b; e = s_angle b a e 60, on_circle e a b ? perp a e a b", False),
+    ("a b = segment a b; e = s_angle b a e -90, on_circle e a b ? perp a e a b", True),
     # JGEX E051-28: ab touches the circle of centre c at b
     ("b c = segment b c; a = on_tline a b b c; d = on_circle d c b; x y = e5128 x y a b c d ? cong a y y b", True),
     ("b c = segment b c; a = on_tline a b b c; d = on_circle d c b; x y = e5128 x y a b c d ? cong a y a d", False),
@@ -443,6 +459,14 @@ def test_a_known_common_point_gives_the_other_point_not_either():
     # no point of the figure on both: either point, as AlphaGeometry takes one at random
     text = translate("a b c d = quadrangle a b c d; x = on_circle x a b, on_line x c d ? cong a x a b")
     assert "intersection" in text
+
+
+def test_two_touching_circles_meet_in_their_double_point():
+    # Feuerbach: the nine-point circle touches the incircle; their common point is constructed by nothing before,
+    # so it is pgsym's intersection, whose discriminant vanishes (either root is the one point)
+    text = translate("a b c = triangle a b c; x y z i = ninepoints x y z i a b c; p q r j = incenter2 p q r j a b c; "
+                     "t = on_circle t i x, on_circle t j p ? coll t i j")
+    assert text.splitlines()[-2:] == ["point t = intersection (circle i x) (circle j p)", "prove collinear t i j"]
 
 
 def test_a_ray_meeting_a_circle_needs_a_branch_condition():

@@ -230,9 +230,9 @@ def translate(problem: str, line: int = 0, title: str = "") -> str:
         if len({s for s, _ in truths}) >= _FIGURES:
             break
     if text is None:
-        raise UnsupportedConstructionError(f"unsupported: two loci that never met in two points in {_NUMERIC_TRIES} "
-                                           "random figures (they may touch), so their common points cannot be told "
-                                           "apart", line, construction="intersection")
+        raise UnsupportedConstructionError(f"unsupported: two loci that did not meet in {_NUMERIC_TRIES} random "
+                                           "figures (or a figure fell degenerate each time), so no figure of the "
+                                           "problem could be drawn", line, construction="intersection")
     if len({h for _, h in truths}) == 2:
         by_seed: dict[int, set[bool]] = {}
         for seed, holds in truths:
@@ -266,6 +266,8 @@ class _Locus:
     through: str = ""  # circle: pgsym text of a point on it (for a free point on the circle)
     ray: bool = False  # a half-line of AG: meeting a circle picks the point on the ray
     tail: str = ""  # the ray's origin
+    ahead: str = ""  # a point of the ray past its origin (pgsym text): the ray meets a circle about its origin there
+    # when that point is on the circle
 
 
 class _Translator:
@@ -389,10 +391,11 @@ class _Translator:
         return _Locus("line", f"join {self.p(a)} {self.p(b)}", self.on_join(a, b), name,
                       lambda x: self.add_collinear(a, b, x))
 
-    def keyed_locus(self, key: tuple, expr: str, through: str, name: str, ray: bool = False) -> _Locus:
+    def keyed_locus(self, key: tuple, expr: str, through: str, name: str, ray: bool = False,
+                    ahead: str = "") -> _Locus:
         pts = self.key_line(key, through)
         return _Locus("line", expr, set(pts), name, lambda x: (pts.add(x), self.add_collinear(*pts)), ray=ray,
-                      tail=through)
+                      tail=through, ahead=ahead)
 
     # -- a problem --------------------------------------------------------------------------------------------
     def run(self, problem: str, title: str) -> str:
@@ -482,6 +485,11 @@ class _Translator:
         if one.kind == "line" and two.kind == "line":
             x = self.define(ag)
             self.emit(f"point {x} = meet ({one.expr}) ({two.expr})")
+        elif (one.kind == "line" and one.ray and one.ahead and two.centre == self.p(one.tail)
+              and self.numeric.on_circle(one.ahead, two.expr)):
+            # a ray from the centre meets the circle once: at the point of the ray already on it
+            x = self.define(ag)
+            self.emit(f"point {x} = {one.ahead}")
         elif one.kind == "line" and one.ray and (not common or common[0] != one.tail):
             raise self.unsupported(one.name, "needs a branch condition: a ray meets the circle at the point on the "
                                    "ray, which pgsym cannot name")
@@ -682,8 +690,8 @@ def _angle_bisector(t: _Translator, a: list[str]) -> _Locus:
 def _angle_mirror(t: _Translator, a: list[str]) -> _Locus:
     _, p, v, q = a  # the ray from v that line vq bisects with line vp
     _distinct(t, "angle_mirror", p, v, q)
-    return t.keyed_locus(("amirror", p, v, q), f"join {t.p(v)} (reflect {t.p(p)} (join {t.p(v)} {t.p(q)}))", v,
-                         "angle_mirror", ray=True)
+    image = f"reflect {t.p(p)} (join {t.p(v)} {t.p(q)})"
+    return t.keyed_locus(("amirror", p, v, q), f"join {t.p(v)} ({image})", v, "angle_mirror", ray=True, ahead=image)
 
 
 @_construction("s_angle", 4)
@@ -695,7 +703,8 @@ def _s_angle(t: _Translator, a: list[str]) -> _Locus:
     _distinct(t, "s_angle", p, v)
     r = t.new_aux("rot")
     t.emit(f"point {r} = rotate {t.p(p)} {t.p(v)} {int(deg)}")
-    return t.keyed_locus(("sangle", p, v, deg), f"join {t.p(v)} {r}", v, "s_angle", ray=True)
+    return t.keyed_locus(("sangle", p, v, deg), f"join {t.p(v)} {r}", v, "s_angle", ray=True,
+                         ahead=f"rotate {t.p(p)} {t.p(v)} {int(deg)}")
 
 
 @_construction("midpoint", 3)
@@ -1245,6 +1254,11 @@ class _Numeric:
         return _NUMERIC_OPS[op](*a)
 
     # -- the check ----------------------------------------------------------------------------------------
+    def on_circle(self, point: str, circle: str) -> bool:
+        """Whether a point (pgsym text) lies on a circle (pgsym text) in the float figure."""
+        z, k = (self._expr(_TOKENS.findall(e), 0)[0] for e in (point, circle))
+        return _close(abs(z - k.c) ** 2, k.r2)
+
     def common(self, one: str, two: str, known: list[str], t: _Translator) -> list[str]:
         """The earlier points on both loci: those known by construction, then those the figure shows."""
         first, second = (self._expr(_TOKENS.findall(e), 0)[0] for e in (one, two))
@@ -1325,7 +1339,9 @@ def _meet(one: Any, two: Any) -> list[complex]:
     if isinstance(one, _NLine):
         f = _foot(two.c, one)
         h2 = two.r2 - abs(f - two.c) ** 2
-        if h2 < 1e-12 * two.r2:
+        if abs(h2) < 1e-9 * two.r2:  # touching (in every figure when a theorem says so): one double point, which
+            return [f, f]  # pgsym's intersection gives too (the discriminant is zero)
+        if h2 < 0:
             raise _NoFigure
         step = h2 ** 0.5 * one.d / abs(one.d)
         return [f + step, f - step]
@@ -1360,8 +1376,13 @@ _NUMERIC_OPS: dict[str, Callable[..., Any]] = {
     "similar": lambda a, b, d, e, f: a + (b - a) * (f - d) / (e - d),
     "second": lambda k, m, a: _reflect(a, _NLine(k.c, m.c - k.c)),  # two circles through a
     "conic": lambda *p: _NConic(_conic_through(p)),
-    "rotate": lambda x, o, c, s: o + (x - o) * complex(c, s),
+    "rotate": lambda x, o, c, s=None: o + (x - o) * (complex(c, s) if s is not None else _degrees(c)),
 }
+
+
+def _degrees(angle: float) -> complex:
+    """The turn by a whole number of degrees (rotate X O DEGREES)."""
+    return complex(math.cos(math.radians(angle)), math.sin(math.radians(angle)))
 
 
 def _close(x: float, y: float) -> bool:
