@@ -266,6 +266,7 @@ class _Locus:
     through: str = ""  # circle: pgsym text of a point on it (for a free point on the circle)
     ray: bool = False  # a half-line of AG: meeting a circle picks the point on the ray
     tail: str = ""  # the ray's origin
+    place: Callable[[str], None] | None = None  # writes a free point of a locus that is no line or circle
     ahead: str = ""  # a point of the ray past its origin (pgsym text): the ray meets a circle about its origin there
     # when that point is on the circle
 
@@ -467,8 +468,8 @@ class _Translator:
             where = (f"{two[1]} {two[2]}" if two[0] == "join" and len(two) == 3
                      else two[0] if len(two) == 1 else f"({locus.expr})")
             self.emit(f"point {x} on line {where}")
-        elif locus.kind == "conic":
-            self.emit(f"point {x} on conic {locus.expr} through {locus.through}")
+        elif locus.place is not None:
+            locus.place(x)
         else:
             self.emit(f"point {x} on circle ({locus.expr}) through {locus.through}")
         locus.add(ag)
@@ -1074,14 +1075,18 @@ def _on_aline2(t: _Translator, a: list[str]) -> _Locus:
 @_construction("eqangle2", 4)
 def _eqangle2(t: _Translator, a: list[str]) -> _Locus:
     _, p, q, r = a  # ∠(pq, px) = ∠(rx, rq): the directions of px and rx add up to those of pq and rq, so x runs on
-    # a conic through p and r (Steiner: two pencils in projective correspondence), also through q (px = pq,
-    # rx = rq), p + r − q (px ∥ rq, rx ∥ pq) and the meet of the perpendiculars to pq at p and to rq at r
+    # a conic through p and r (Steiner: two pencils in projective correspondence). A point of it: px through a
+    # point u of the line qr, and rx with the direction (q − r)(q − p)/(u − p) (complex numbers), which is
+    # similar r q p u q − r
     _distinct(t, "eqangle2", p, q, r)
     P, Q, R = t.p(p), t.p(q), t.p(r)
-    k = t.new_aux("con")
-    t.emit(f"conic {k} = conic {P} {Q} {R} (translate {P} {Q} {R}) "
-           f"(meet (perpendicular (join {P} {Q}) {P}) (perpendicular (join {R} {Q}) {R}))")
-    return _Locus("conic", k, {p, q, r}, "eqangle2", lambda x: None, through=Q)
+
+    def place(x: str) -> None:
+        u = t.new_aux("dir")
+        t.emit(f"point {u} on line {Q} {R}")
+        t.emit(f"point {x} = meet (join {P} {u}) (join {R} (similar {R} {Q} {P} {u} {Q}))")
+
+    return _Locus("conic", "", {p, q, r}, "eqangle2", lambda x: None, place=place)
 
 
 @_construction("trisegment", 4, 2)
@@ -1197,9 +1202,6 @@ class _Numeric:
                 args = self._args(tokens)
                 line = args[0] if len(args) == 1 else self._op("join", args)
                 self.values[name] = line.p + self.rng.uniform(-1.5, 1.5) * line.d / max(abs(line.d), 1e-300)
-            elif what == "conic":
-                conic, through = (self.values[w] for w in statement.split(" on conic ", 1)[1].split(" through "))
-                self.values[name] = _conic_point(conic, through, self.rng.uniform(0, math.pi))
             else:
                 circle = self._args(tokens)[0]
                 angle = self.rng.uniform(0, 2 * math.pi)
@@ -1270,52 +1272,6 @@ class _Numeric:
         return [*known, *(ag for ag in near if ag not in known)]
 
 
-@dataclass(frozen=True)
-class _NConic:
-    m: tuple[tuple[float, ...], ...]  # symmetric: (x, y, 1) M (x, y, 1)ᵀ = 0
-
-
-def _conic_through(points: tuple[complex, ...]) -> tuple[tuple[float, ...], ...]:
-    """The conic through five points: a null vector of the 5×6 rows (x², xy, y², x, y, 1), by elimination."""
-    rows = [[z.real ** 2, z.real * z.imag, z.imag ** 2, z.real, z.imag, 1.0] for z in points]
-    pivots: list[int] = []
-    for col in range(6):
-        i = max(range(len(pivots), 5), key=lambda r: abs(rows[r][col]), default=None)
-        if i is None or abs(rows[i][col]) < 1e-12:
-            continue
-        r = len(pivots)
-        rows[r], rows[i] = rows[i], rows[r]
-        rows[r] = [v / rows[r][col] for v in rows[r]]
-        for j in range(5):
-            if j != r:
-                rows[j] = [v - rows[j][col] * w for v, w in zip(rows[j], rows[r], strict=True)]
-        pivots.append(col)
-        if len(pivots) == 5:
-            break
-    free = next((c for c in range(6) if c not in pivots), None)
-    if free is None or len(pivots) < 5:
-        raise _NoFigure  # five points on a line pair or fewer distinct points: no single conic
-    v = [0.0] * 6
-    v[free] = 1.0
-    for r, col in enumerate(pivots):
-        v[col] = -rows[r][free]
-    a, b, c, d, e, f = v
-    return ((a, b / 2, d / 2), (b / 2, c, e / 2), (d / 2, e / 2, f))
-
-
-def _conic_point(conic: _NConic, p: complex, angle: float) -> complex:
-    """The second point of the conic on the line through its point p with the given direction."""
-    m, q = conic.m, (math.cos(angle), math.sin(angle), 0.0)
-    pp = (p.real, p.imag, 1.0)
-
-    def form(u: tuple[float, ...], v: tuple[float, ...]) -> float:
-        return sum(u[i] * m[i][j] * v[j] for i in range(3) for j in range(3))
-
-    qq, pq = form(q, q), form(pp, q)
-    x = [qq * pi - 2 * pq * qi for pi, qi in zip(pp, q, strict=True)]  # (QᵀMQ) P − 2 (PᵀMQ) Q
-    return complex(x[0] / x[2], x[1] / x[2])
-
-
 def _foot(p: complex, line: _NLine) -> complex:
     d = line.d
     t = ((p - line.p) * d.conjugate()).real / abs(d) ** 2
@@ -1375,7 +1331,6 @@ _NUMERIC_OPS: dict[str, Callable[..., Any]] = {
     "translate": lambda x, a, b: x + b - a,
     "similar": lambda a, b, d, e, f: a + (b - a) * (f - d) / (e - d),
     "second": lambda k, m, a: _reflect(a, _NLine(k.c, m.c - k.c)),  # two circles through a
-    "conic": lambda *p: _NConic(_conic_through(p)),
     "rotate": lambda x, o, c, s=None: o + (x - o) * (complex(c, s) if s is not None else _degrees(c)),
 }
 
