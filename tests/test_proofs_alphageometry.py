@@ -452,6 +452,21 @@ def test_a_point_at_infinity_of_a_random_instance_is_no_branch() -> None:
         assert verdict.status == "proved", (seed, verdict.reason)
 
 
+def test_two_lines_of_alphageometry_meet_in_a_finite_point() -> None:
+    # JGEX ex160_204: e on the circle abc, f = ab ∩ ce, g = ae ∩ bc; the internal bisectors of ∠afc and ∠agb are
+    # perpendicular, and where e makes them parallel instead (a = (−3, 0), b = (0, 2), c = (−1, 1), e near a) their
+    # meet j, a point of the problem, is at infinity: AlphaGeometry's j exists, so that figure is none of its own
+    problem = ("a b c = triangle a b c; d = circumcenter d a b c; e = on_circle e d a; "
+               "f = on_line f a b, on_line f c e; h = on_line h b c, angle_bisector h a f c; "
+               "g = on_line g a e, on_line g b c; i = on_line i a b, angle_bisector i a g b; "
+               "j = on_line j f h, on_line j g i ? perp g i f h")
+    [p] = read_alphageometry("ex160_204\n" + problem)
+    assert "reflect j a  # j is a finite point" in p.statement
+    outcome = solve(p, timeout=60)
+    assert outcome.status == "proved", outcome.verdict.reason
+    assert "j is a finite point" in [c.text for c in outcome.verdict.conditions]
+
+
 def test_a_known_common_point_gives_the_other_point_not_either():
     # x = the second point of line ab on the circle of centre o through a: rational, no square root
     text = translate("a b = segment a b; o = free o; x = on_line x a b, on_circle x o a ? cong o a o x")

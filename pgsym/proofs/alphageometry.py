@@ -486,6 +486,11 @@ class _Translator:
         if one.kind == "line" and two.kind == "line":
             x = self.define(ag)
             self.emit(f"point {x} = meet ({one.expr}) ({two.expr})")
+            # AlphaGeometry's lines meet in the plane (npara): pgsym's meet of parallel lines is their point at
+            # infinity, so a construction that needs x finite carries that hypothesis (a branch of square roots
+            # on which the lines are always parallel is then no counterexample)
+            self.emit(f"point {self.new_aux('fin')} = reflect {x} {next(iter(self.defined.values()))}  "
+                      f"# {x} is a finite point")
         elif (one.kind == "line" and one.ray and one.ahead and two.centre == self.p(one.tail)
               and self.numeric.on_circle(one.ahead, two.expr)):
             # a ray from the centre meets the circle once: at the point of the ray already on it
@@ -1136,9 +1141,13 @@ def _e5128(t: _Translator, a: list[str]) -> None:
 
 _UNSUPPORTED: dict[str, str] = {
     "trisect": "the trisectors of an angle need cube roots; pgsym's constructions take square roots only",
-    "2l1c": "a circle touching two lines and a circle: no construction",
-    "cc_tangent": "common tangents of two circles: no construction",
-    "cc_tangent0": "common tangents of two circles: no construction",
+    "2l1c": "a circle touching two lines and a circle: its centre needs square roots, and AlphaGeometry picks one "
+            "of the circles that touch all three numerically, a choice pgsym cannot name",
+    "cc_tangent": "common tangents of two circles: AlphaGeometry takes the two external ones, through the homothety "
+                  "centre o + (w − o)·r₁/(r₁ − r₂) with the radii as square roots, a choice among four tangents that "
+                  "pgsym cannot name",
+    "cc_tangent0": "a common tangent of two circles: AlphaGeometry takes an external one, a choice among four "
+                   "tangents that pgsym cannot name",
     "tangent": "needs a branch condition: the two tangent points from a point, told apart by AG numerically",
     "on_opline": "a ray: no construction of pgsym's statement language",
     "acircle": "no construction of pgsym's statement language",
@@ -1184,7 +1193,7 @@ class _Numeric:
     # -- statements --------------------------------------------------------------------------------------
     def run(self, statement: str) -> None:
         try:
-            self._run(statement)
+            self._run(statement.split("#", 1)[0].strip())
         except (ZeroDivisionError, OverflowError):
             raise _NoFigure from None  # two points fell together in the random figure
 
