@@ -11,6 +11,9 @@ from fractions import Fraction
 
 import pytest
 import sympy
+from hypothesis import assume, given
+from hypothesis import strategies as st
+from strategies import nonzero_rationals, rationals
 
 from pgsym import conics, plucker, projective_line, projective_plane, space
 from pgsym.errors import InputLimitError, ObjectTypeError, PgsymError
@@ -42,6 +45,31 @@ def _values(claim: Claim) -> dict[str, object]:
     return vals
 
 
+class ComplexFraction:
+    """x + iy with exact fractions (complex numbers of Python are floats)."""
+
+    def __init__(self, x: Fraction, y: Fraction) -> None:
+        self.x, self.y = Fraction(x), Fraction(y)
+
+    def __add__(self, o: ComplexFraction) -> ComplexFraction:
+        return ComplexFraction(self.x + o.x, self.y + o.y)
+
+    def __sub__(self, o: ComplexFraction) -> ComplexFraction:
+        return ComplexFraction(self.x - o.x, self.y - o.y)
+
+    def __mul__(self, o: ComplexFraction) -> ComplexFraction:
+        return ComplexFraction(self.x * o.x - self.y * o.y, self.x * o.y + self.y * o.x)
+
+    def __truediv__(self, o: ComplexFraction) -> ComplexFraction:
+        n = o.x * o.x + o.y * o.y
+        return self * ComplexFraction(o.x / n, -o.y / n)
+
+    def __eq__(self, o: object) -> bool:
+        return isinstance(o, ComplexFraction) and (self.x, self.y) == (o.x, o.y)
+
+    __hash__ = None  # type: ignore[assignment]
+
+
 def _proportional(u, v) -> bool:
     u, v = [Fraction(str(x)) for x in u], [Fraction(str(x)) for x in v]
     return any(u) and all(u[i] * v[j] == u[j] * v[i] for i in range(len(u)) for j in range(len(u)))
@@ -70,6 +98,16 @@ def test_similar_copies_a_triangle_for_any_representatives():
     core = OPERATIONS["similar"].core(X, [projective_plane.Point(*n.data) for n in pts], sympy.Rational)
     assert core == projective_plane.Point(2, 5)
     assert X.conditions[0] == "D ≠ E" and OPERATIONS["similar"].group == "similarity"
+
+
+@given(st.lists(st.tuples(rationals(9, 5), rationals(9, 5), nonzero_rationals(4, 3)), min_size=5, max_size=5))
+def test_similar_is_the_complex_formula_for_any_representatives(points):
+    # X = A + (B − A)(F − D)/(E − D) with complex fractions, whatever the scale w of each point's representative
+    za, zb, zd, ze, zf = (ComplexFraction(x, y) for x, y, _ in points)
+    assume(ze != zd)
+    want = za + (zb - za) * (zf - zd) / (ze - zd)
+    x, y, w = OPERATIONS["similar"].formula(None, [(x * w, y * w, w) for x, y, w in points], Fraction)
+    assert w != 0 and ComplexFraction(x / w, y / w) == want
 
 
 def test_point_on_conic_matches_the_core():
