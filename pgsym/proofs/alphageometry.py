@@ -284,11 +284,13 @@ class _Translator:
         self.keyed: dict[tuple, set[str]] = {}  # non-join lines: ("perp", P, {B, C}) -> points on it
         self.circles: list[_Circle] = []
         self.aux = 0
+        self.branches = False  # a square root with two signs is written (a bisector, a common point, a tangent)
 
     def emit(self, statement: str) -> None:
         """Write a statement, and evaluate it on the numeric figure."""
         self.out.append(statement)
         self.numeric.run(statement)
+        self.branches = self.branches or bool(_BRANCHING.search(statement))
 
     # -- errors and names ---------------------------------------------------------------------------------
     def fail(self, message: str, construction: str = "") -> AlphaGeometryError:
@@ -486,11 +488,13 @@ class _Translator:
         if one.kind == "line" and two.kind == "line":
             x = self.define(ag)
             self.emit(f"point {x} = meet ({one.expr}) ({two.expr})")
-            # AlphaGeometry's lines meet in the plane (npara): pgsym's meet of parallel lines is their point at
-            # infinity, so a construction that needs x finite carries that hypothesis (a branch of square roots
-            # on which the lines are always parallel is then no counterexample)
-            self.emit(f"point {self.new_aux('fin')} = reflect {x} {next(iter(self.defined.values()))}  "
-                      f"# {x} is a finite point")
+            if self.branches:
+                # AlphaGeometry's lines meet in the plane (npara), pgsym's meet of parallel lines is their point
+                # at infinity: a construction that needs x finite carries that hypothesis, so a branch of the
+                # square roots on which the lines are always parallel is no counterexample (rational lines are
+                # parallel at no generic figure, so they need none)
+                self.emit(f"point {self.new_aux('fin')} = reflect {x} {next(iter(self.defined.values()))}  "
+                          f"# {x} is a finite point")
         elif (one.kind == "line" and one.ray and one.ahead and two.centre == self.p(one.tail)
               and self.numeric.on_circle(one.ahead, two.expr)):
             # a ray from the centre meets the circle once: at the point of the ray already on it
@@ -576,6 +580,8 @@ def _printable(text: str) -> str:
 # -- the constructions of defs.txt ------------------------------------------------------------------------------
 # name -> (number of arguments, how many of them are the new points, builder(translator, arguments)); a builder
 # returns a locus for a one-parameter construction, or writes the definitions of fully determined points.
+
+_BRANCHING = re.compile(r"= (anglebisector|exbisector|intersections?|tangentsfrom|tangentfrom) ")
 
 _Build = Callable[[_Translator, list[str]], "_Locus | None"]
 _CONSTRUCTIONS: dict[str, tuple[int, int, _Build]] = {}
