@@ -1058,13 +1058,15 @@ def _on_aline(t: _Translator, a: list[str]) -> _Locus:
     _, p, q, c, d, e = a  # ∠(px, pq) = ∠(dc, de): x on the ray from p towards p + (q − p)(c − d)/(e − d)
     _distinct(t, "on_aline", p, q)
     x = _copy(t, p, q, d, e, c)
-    return t.keyed_locus(("aline", p, q, c, d, e), f"join {t.p(p)} {x}", p, "on_aline", ray=True)
+    return t.keyed_locus(("aline", p, q, c, d, e), f"join {t.p(p)} {x}", p, "on_aline", ray=True,
+                         ahead=f"similar {t.p(p)} {t.p(q)} {t.p(d)} {t.p(e)} {t.p(c)}")
 
 
 def _angle_circle(t: _Translator, p: str, q: str, d: str, e: str, f: str, name: str) -> _Locus:
     """The circle of the points x with ∠(xp, xq) = ∠(de, df): through p, q and the X with Xpq directly similar
     to def (an inscribed angle; the angles are of lines, modulo π, so the whole circle)."""
     _distinct(t, name, p, q)
+    _distinct(t, name, d, e, f)
     x = _copy(t, p, q, e, f, d)
     rec = t.circle_record(None, {p, q})
     expr = f"circle {t.p(p)} {t.p(q)} {x}"
