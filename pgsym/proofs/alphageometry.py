@@ -15,8 +15,19 @@ numerically: a point already in the figure is avoided, otherwise either is taken
   line and circle), the new point is the other one, which is rational: ``reflect P (foot O l)`` for a line
   l and a circle of centre O through P, ``reflect P (join O O')`` for two circles;
 * otherwise either point is meant, which is pgsym's ``intersection`` (a conclusion must hold for both);
-* a choice pgsym cannot name (a ray meeting a circle picks the point on the ray) is refused with
-  :class:`~pgsym.proofs.errors.UnsupportedConstructionError` ("needs a branch condition"), never guessed.
+* two circles that touch in every figure meet in their double point, which ``intersection`` gives too (the
+  discriminant vanishes, so both roots are that point);
+* a ray from the centre of a circle meets it at the ray's own point when that point is on the circle (an
+  angle turned or copied from a radius); any other choice pgsym cannot name (a ray meeting a circle picks
+  the point on the ray) is refused with :class:`~pgsym.proofs.errors.UnsupportedConstructionError` ("needs a
+  branch condition"), never guessed.
+
+Two lines of a problem meet in the plane (AlphaGeometry's ``npara``), while pgsym's ``meet`` of parallel lines
+is their point at infinity: once a square root with two signs is in the statement, each meet is followed by a
+point that needs it finite (``# x is a finite point``), so a branch on which the lines are always parallel is
+no counterexample. Angles are copied with ``similar`` (``on_aline``; ``eqangle3`` and ``on_aline2``: the
+circle of an inscribed angle), ``eqangle2`` is a point of a conic through two pencils in correspondence, and
+``trisegment``, ``3peq``, ``e5128`` are rational.
 
 The tracked incidences are exact but incomplete, so the translator also draws the figure in floats (at
 random, as AlphaGeometry does) while it writes the statement: an earlier point found on both loci gives the
@@ -37,7 +48,7 @@ prove collinear a b d
 >>> translate("a b c = triangle a b c; x y = trisect x y a b c ? coll a b x")
 Traceback (most recent call last):
 ...
-pgsym.proofs.errors.UnsupportedConstructionError: unsupported: trisect (no construction of pgsym's statement language)
+pgsym.proofs.errors.UnsupportedConstructionError: unsupported: trisect (the trisectors of an angle need cube roots; ...
 """
 
 from __future__ import annotations
