@@ -11,6 +11,9 @@ from fractions import Fraction
 
 import pytest
 import sympy
+from hypothesis import assume, given
+from hypothesis import strategies as st
+from strategies import nonzero_rationals, rationals
 
 from pgsym import conics, plucker, projective_line, projective_plane, space
 from pgsym.errors import InputLimitError, ObjectTypeError, PgsymError
@@ -42,6 +45,31 @@ def _values(claim: Claim) -> dict[str, object]:
     return vals
 
 
+class ComplexFraction:
+    """x + iy with exact fractions (complex numbers of Python are floats)."""
+
+    def __init__(self, x: Fraction, y: Fraction) -> None:
+        self.x, self.y = Fraction(x), Fraction(y)
+
+    def __add__(self, o: ComplexFraction) -> ComplexFraction:
+        return ComplexFraction(self.x + o.x, self.y + o.y)
+
+    def __sub__(self, o: ComplexFraction) -> ComplexFraction:
+        return ComplexFraction(self.x - o.x, self.y - o.y)
+
+    def __mul__(self, o: ComplexFraction) -> ComplexFraction:
+        return ComplexFraction(self.x * o.x - self.y * o.y, self.x * o.y + self.y * o.x)
+
+    def __truediv__(self, o: ComplexFraction) -> ComplexFraction:
+        n = o.x * o.x + o.y * o.y
+        return self * ComplexFraction(o.x / n, -o.y / n)
+
+    def __eq__(self, o: object) -> bool:
+        return isinstance(o, ComplexFraction) and (self.x, self.y) == (o.x, o.y)
+
+    __hash__ = None  # type: ignore[assignment]
+
+
 def _proportional(u, v) -> bool:
     u, v = [Fraction(str(x)) for x in u], [Fraction(str(x)) for x in v]
     return any(u) and all(u[i] * v[j] == u[j] * v[i] for i in range(len(u)) for j in range(len(u)))
@@ -58,6 +86,28 @@ def test_second_intersection_matches_the_core():
     first, second = conics.Conic(sympy.Matrix(CIRCLE)).intersections(projective_plane.Line(2, 1, -2))
     assert {first, second} == {projective_plane.Point(1, 0), projective_plane.Point(3, 4, 5)}
     assert X.conditions[0].startswith("P ≠ Q")
+
+
+def test_similar_copies_a_triangle_for_any_representatives():
+    c = Claim("x", "x")
+    # A = (1, 2), B = (3, 3) (written with w = 2), D = (0, 0), E = (1, 1), F = (0, 2) (w = 3): in complex numbers
+    # (F − D)/(E − D) = 2i/(1 + i) = 1 + i, and X = A + (B − A)(1 + i) = (1 + 2i) + (2 + i)(1 + i) = 2 + 5i
+    pts = [c.point("A", 1, 2), c.point("B", 6, 6, 2), c.point("D", 0, 0), c.point("E", 1, 1), c.point("F", 0, 6, 3)]
+    X = c.similar("X", *pts)
+    assert _proportional(_values(c)["X"], (2, 5, 1))
+    core = OPERATIONS["similar"].core(X, [projective_plane.Point(*n.data) for n in pts], sympy.Rational)
+    assert core == projective_plane.Point(2, 5)
+    assert X.conditions[0] == "D ≠ E" and OPERATIONS["similar"].group == "similarity"
+
+
+@given(st.lists(st.tuples(rationals(9, 5), rationals(9, 5), nonzero_rationals(4, 3)), min_size=5, max_size=5))
+def test_similar_is_the_complex_formula_for_any_representatives(points):
+    # X = A + (B − A)(F − D)/(E − D) with complex fractions, whatever the scale w of each point's representative
+    za, zb, zd, ze, zf = (ComplexFraction(x, y) for x, y, _ in points)
+    assume(ze != zd)
+    want = za + (zb - za) * (zf - zd) / (ze - zd)
+    x, y, w = OPERATIONS["similar"].formula(None, [(x * w, y * w, w) for x, y, w in points], Fraction)
+    assert w != 0 and ComplexFraction(x / w, y / w) == want
 
 
 def test_point_on_conic_matches_the_core():
@@ -165,6 +215,10 @@ def _proved_and_refuted(true_text: str, false_text: str) -> None:
      "point O = (0, 0)\nline m = (1, 2, -3)\npoint A on line m\npoint B on line m\npoint C on line m\n"
      "prove equal (crossratio (join O A) (join O B) (join O C) (join O (harmonic A B C))) 2\n"),
     ("points A B C\nprove collinear A B (midpoint A B)\n", "points A B C\nprove collinear A C (midpoint A B)\n"),
+    # ∠(AB, AX) = ∠(DE, DF) and |AX|·|DE| = |AB|·|DF|; the angle the other way round is false
+    ("points A B D E F\npoint X = similar A B D E F\nprove equalangle B A X E D F\n"
+     "prove equal (mul (dist2 A X) (dist2 D E)) (mul (dist2 A B) (dist2 D F))\n",
+     "points A B D E F\npoint X = similar A B D E F\nprove equalangle X A B E D F\n"),
     ("points F\n" + _CIRCLE + "prove conconic U1 U2 U3 U4 U5 (second K U1 F)\n",
      "points F\n" + _CIRCLE + "prove conconic U1 U2 U3 U4 F (second K U1 F)\n"),
 ])

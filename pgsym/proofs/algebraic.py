@@ -182,7 +182,8 @@ class _Branch:
 
 
 def _branches(claim: Claim, tower: _Tower, values: dict[Node, Any], point: dict[sympy.Symbol, Any]):
-    """Every real choice of the square roots at a rational point: their exact values and which branch it is."""
+    """Every real choice of the square roots at a rational point: their exact values and which branch it is
+    (none where a length has no principal sign: a point at infinity, w = 0)."""
     roots = roots_of(claim)
     quadratic = [r for r in roots if r.kind != "unity"]
     base = {r.symbol: _zeta_value(r.modulus) for r in roots if r.kind == "unity"}
@@ -201,6 +202,8 @@ def _branches(claim: Claim, tower: _Tower, values: dict[Node, Any], point: dict[
             if r.orient is not None:
                 o = _sympy_value(R, tower.reduce(r.orient(values)), sub)
                 principal = exact_sign(o)
+                if principal == 0:  # a point at infinity (w = 0): no principal root, so no named branch here
+                    return
             sub[r.symbol] = sgn[r.symbol] * principal * sympy.sqrt(q)
         if not real:
             continue

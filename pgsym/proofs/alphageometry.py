@@ -15,8 +15,19 @@ numerically: a point already in the figure is avoided, otherwise either is taken
   line and circle), the new point is the other one, which is rational: ``reflect P (foot O l)`` for a line
   l and a circle of centre O through P, ``reflect P (join O O')`` for two circles;
 * otherwise either point is meant, which is pgsym's ``intersection`` (a conclusion must hold for both);
-* a choice pgsym cannot name (a ray meeting a circle picks the point on the ray) is refused with
-  :class:`~pgsym.proofs.errors.UnsupportedConstructionError` ("needs a branch condition"), never guessed.
+* two circles that touch in every figure meet in their double point, which ``intersection`` gives too (the
+  discriminant vanishes, so both roots are that point);
+* a ray from the centre of a circle meets it at the ray's own point when that point is on the circle (an
+  angle turned or copied from a radius); any other choice pgsym cannot name (a ray meeting a circle picks
+  the point on the ray) is refused with :class:`~pgsym.proofs.errors.UnsupportedConstructionError` ("needs a
+  branch condition"), never guessed.
+
+Two lines of a problem meet in the plane (AlphaGeometry's ``npara``), while pgsym's ``meet`` of parallel lines
+is their point at infinity: once a square root with two signs is in the statement, each meet is followed by a
+point that needs it finite (``# x is a finite point``), so a branch on which the lines are always parallel is
+no counterexample. Angles are copied with ``similar`` (``on_aline``; ``eqangle3`` and ``on_aline2``: the
+circle of an inscribed angle), ``eqangle2`` is a point of a conic through two pencils in correspondence, and
+``trisegment``, ``3peq``, ``e5128`` are rational.
 
 The tracked incidences are exact but incomplete, so the translator also draws the figure in floats (at
 random, as AlphaGeometry does) while it writes the statement: an earlier point found on both loci gives the
@@ -37,7 +48,7 @@ prove collinear a b d
 >>> translate("a b c = triangle a b c; x y = trisect x y a b c ? coll a b x")
 Traceback (most recent call last):
 ...
-pgsym.proofs.errors.UnsupportedConstructionError: unsupported: trisect (no construction of pgsym's statement language)
+pgsym.proofs.errors.UnsupportedConstructionError: unsupported: trisect (the trisectors of an angle need cube roots; ...
 """
 
 from __future__ import annotations
@@ -230,9 +241,9 @@ def translate(problem: str, line: int = 0, title: str = "") -> str:
         if len({s for s, _ in truths}) >= _FIGURES:
             break
     if text is None:
-        raise UnsupportedConstructionError(f"unsupported: two loci that never met in two points in {_NUMERIC_TRIES} "
-                                           "random figures (they may touch), so their common points cannot be told "
-                                           "apart", line, construction="intersection")
+        raise UnsupportedConstructionError(f"unsupported: two loci that did not meet in {_NUMERIC_TRIES} random "
+                                           "figures (or a figure fell degenerate each time), so no figure of the "
+                                           "problem could be drawn", line, construction="intersection")
     if len({h for _, h in truths}) == 2:
         by_seed: dict[int, set[bool]] = {}
         for seed, holds in truths:
@@ -257,7 +268,7 @@ class _Circle:
 
 @dataclass
 class _Locus:
-    kind: str  # "line" or "circle"
+    kind: str  # "line", "circle" or "conic"
     expr: str  # pgsym text of the line or circle (names already pgsym's)
     on: set[str]  # AG points known on it
     name: str  # the construction (for messages)
@@ -266,6 +277,9 @@ class _Locus:
     through: str = ""  # circle: pgsym text of a point on it (for a free point on the circle)
     ray: bool = False  # a half-line of AG: meeting a circle picks the point on the ray
     tail: str = ""  # the ray's origin
+    place: Callable[[str], None] | None = None  # writes a free point of a locus that is no line or circle
+    ahead: str = ""  # a point of the ray past its origin (pgsym text): the ray meets a circle about its origin there
+    # when that point is on the circle
 
 
 class _Translator:
@@ -281,11 +295,13 @@ class _Translator:
         self.keyed: dict[tuple, set[str]] = {}  # non-join lines: ("perp", P, {B, C}) -> points on it
         self.circles: list[_Circle] = []
         self.aux = 0
+        self.branches = False  # a square root with two signs is written (a bisector, a common point, a tangent)
 
     def emit(self, statement: str) -> None:
         """Write a statement, and evaluate it on the numeric figure."""
         self.out.append(statement)
         self.numeric.run(statement)
+        self.branches = self.branches or bool(_BRANCHING.search(statement))
 
     # -- errors and names ---------------------------------------------------------------------------------
     def fail(self, message: str, construction: str = "") -> AlphaGeometryError:
@@ -389,10 +405,11 @@ class _Translator:
         return _Locus("line", f"join {self.p(a)} {self.p(b)}", self.on_join(a, b), name,
                       lambda x: self.add_collinear(a, b, x))
 
-    def keyed_locus(self, key: tuple, expr: str, through: str, name: str, ray: bool = False) -> _Locus:
+    def keyed_locus(self, key: tuple, expr: str, through: str, name: str, ray: bool = False,
+                    ahead: str = "") -> _Locus:
         pts = self.key_line(key, through)
         return _Locus("line", expr, set(pts), name, lambda x: (pts.add(x), self.add_collinear(*pts)), ray=ray,
-                      tail=through)
+                      tail=through, ahead=ahead)
 
     # -- a problem --------------------------------------------------------------------------------------------
     def run(self, problem: str, title: str) -> str:
@@ -464,11 +481,16 @@ class _Translator:
             where = (f"{two[1]} {two[2]}" if two[0] == "join" and len(two) == 3
                      else two[0] if len(two) == 1 else f"({locus.expr})")
             self.emit(f"point {x} on line {where}")
+        elif locus.place is not None:
+            locus.place(x)
         else:
             self.emit(f"point {x} on circle ({locus.expr}) through {locus.through}")
         locus.add(ag)
 
     def intersect(self, ag: str, one: _Locus, two: _Locus) -> None:
+        if "conic" in (one.kind, two.kind):
+            raise self.unsupported(one.name if one.kind == "conic" else two.name,
+                                   "a conic met with another locus: its common points are not constructed")
         if one.kind == "circle" and two.kind == "line":
             one, two = two, one
         common = sorted((one.on & two.on) - {ag}, key=list(self.defined).index)
@@ -477,6 +499,18 @@ class _Translator:
         if one.kind == "line" and two.kind == "line":
             x = self.define(ag)
             self.emit(f"point {x} = meet ({one.expr}) ({two.expr})")
+            if self.branches:
+                # AlphaGeometry's lines meet in the plane (npara), pgsym's meet of parallel lines is their point
+                # at infinity: a construction that needs x finite carries that hypothesis, so a branch of the
+                # square roots on which the lines are always parallel is no counterexample (rational lines are
+                # parallel at no generic figure, so they need none)
+                self.emit(f"point {self.new_aux('fin')} = reflect {x} {next(iter(self.defined.values()))}  "
+                          f"# {x} is a finite point")
+        elif (one.kind == "line" and one.ray and one.ahead and two.centre == self.p(one.tail)
+              and self.numeric.on_circle(one.ahead, two.expr)):
+            # a ray from the centre meets the circle once: at the point of the ray already on it
+            x = self.define(ag)
+            self.emit(f"point {x} = {one.ahead}")
         elif one.kind == "line" and one.ray and (not common or common[0] != one.tail):
             raise self.unsupported(one.name, "needs a branch condition: a ray meets the circle at the point on the "
                                    "ray, which pgsym cannot name")
@@ -557,6 +591,8 @@ def _printable(text: str) -> str:
 # -- the constructions of defs.txt ------------------------------------------------------------------------------
 # name -> (number of arguments, how many of them are the new points, builder(translator, arguments)); a builder
 # returns a locus for a one-parameter construction, or writes the definitions of fully determined points.
+
+_BRANCHING = re.compile(r"= (anglebisector|exbisector|intersections?|tangentsfrom|tangentfrom) ")
 
 _Build = Callable[[_Translator, list[str]], "_Locus | None"]
 _CONSTRUCTIONS: dict[str, tuple[int, int, _Build]] = {}
@@ -677,8 +713,8 @@ def _angle_bisector(t: _Translator, a: list[str]) -> _Locus:
 def _angle_mirror(t: _Translator, a: list[str]) -> _Locus:
     _, p, v, q = a  # the ray from v that line vq bisects with line vp
     _distinct(t, "angle_mirror", p, v, q)
-    return t.keyed_locus(("amirror", p, v, q), f"join {t.p(v)} (reflect {t.p(p)} (join {t.p(v)} {t.p(q)}))", v,
-                         "angle_mirror", ray=True)
+    image = f"reflect {t.p(p)} (join {t.p(v)} {t.p(q)})"
+    return t.keyed_locus(("amirror", p, v, q), f"join {t.p(v)} ({image})", v, "angle_mirror", ray=True, ahead=image)
 
 
 @_construction("s_angle", 4)
@@ -690,7 +726,8 @@ def _s_angle(t: _Translator, a: list[str]) -> _Locus:
     _distinct(t, "s_angle", p, v)
     r = t.new_aux("rot")
     t.emit(f"point {r} = rotate {t.p(p)} {t.p(v)} {int(deg)}")
-    return t.keyed_locus(("sangle", p, v, deg), f"join {t.p(v)} {r}", v, "s_angle", ray=True)
+    return t.keyed_locus(("sangle", p, v, deg), f"join {t.p(v)} {r}", v, "s_angle", ray=True,
+                         ahead=f"rotate {t.p(p)} {t.p(v)} {int(deg)}")
 
 
 @_construction("midpoint", 3)
@@ -1018,18 +1055,118 @@ def _eqdia_quadrangle(t: _Translator, a: list[str]) -> None:
     t.free_on(t.define(s), s, _eqdistance(t, [s, q, p, r]))
 
 
+def _copy(t: _Translator, a: str, b: str, d: str, e: str, f: str) -> str:
+    """An auxiliary point X with abX directly similar to def (so ∠(ab, aX) = ∠(de, df)): its pgsym name."""
+    _distinct(t, "the angle", d, e)
+    _distinct(t, "the angle", d, f)
+    x = t.new_aux("sim")
+    t.emit(f"point {x} = similar {t.p(a)} {t.p(b)} {t.p(d)} {t.p(e)} {t.p(f)}")
+    return x
+
+
+@_construction("on_aline", 6)
+def _on_aline(t: _Translator, a: list[str]) -> _Locus:
+    _, p, q, c, d, e = a  # ∠(px, pq) = ∠(dc, de): x on the ray from p towards p + (q − p)(c − d)/(e − d)
+    _distinct(t, "on_aline", p, q)
+    x = _copy(t, p, q, d, e, c)
+    return t.keyed_locus(("aline", p, q, c, d, e), f"join {t.p(p)} {x}", p, "on_aline", ray=True,
+                         ahead=f"similar {t.p(p)} {t.p(q)} {t.p(d)} {t.p(e)} {t.p(c)}")
+
+
+def _angle_circle(t: _Translator, p: str, q: str, d: str, e: str, f: str, name: str) -> _Locus:
+    """The circle of the points x with ∠(xp, xq) = ∠(de, df): through p, q and the X with Xpq directly similar
+    to def (an inscribed angle; the angles are of lines, modulo π, so the whole circle)."""
+    _distinct(t, name, p, q)
+    _distinct(t, name, d, e, f)
+    x = _copy(t, p, q, e, f, d)
+    rec = t.circle_record(None, {p, q})
+    expr = f"circle {t.p(p)} {t.p(q)} {x}"
+    return _Locus("circle", expr, set(rec.points), name, rec.points.add, centre=f"(centre ({expr}))", through=t.p(p))
+
+
+@_construction("eqangle3", 6)
+def _eqangle3(t: _Translator, a: list[str]) -> _Locus:
+    _, p, q, d, e, f = a  # ∠(xp, xq) = ∠(de, df)
+    return _angle_circle(t, p, q, d, e, f, "eqangle3")
+
+
+@_construction("on_aline2", 6)
+def _on_aline2(t: _Translator, a: list[str]) -> _Locus:
+    _, p, q, c, d, e = a  # ∠(xp, xq) = ∠(dc, de)
+    return _angle_circle(t, p, q, d, c, e, "on_aline2")
+
+
+@_construction("eqangle2", 4)
+def _eqangle2(t: _Translator, a: list[str]) -> _Locus:
+    _, p, q, r = a  # ∠(pq, px) = ∠(rx, rq): the directions of px and rx add up to those of pq and rq, so x runs on
+    # a conic through p and r (Steiner: two pencils in projective correspondence). A point of it: px through a
+    # point u of the line qr, and rx with the direction (q − r)(q − p)/(u − p) (complex numbers), which is
+    # similar r q p u q − r
+    _distinct(t, "eqangle2", p, q, r)
+    P, Q, R = t.p(p), t.p(q), t.p(r)
+
+    def place(x: str) -> None:
+        u = t.new_aux("dir")
+        t.emit(f"point {u} on line {Q} {R}")
+        t.emit(f"point {x} = meet (join {P} {u}) (join {R} (similar {R} {Q} {P} {u} {Q}))")
+
+    return _Locus("conic", "", {p, q, r}, "eqangle2", lambda x: None, place=place)
+
+
+@_construction("trisegment", 4, 2)
+def _trisegment(t: _Translator, a: list[str]) -> None:
+    x, y, p, q = a  # x, y divide pq in three equal parts, x next to p: x = p + (q − p)/3, the foot on pq of the
+    # centroid of p, q and q turned by 90° about p (its offset from pq is perpendicular); y = p + q − x
+    _distinct(t, "trisegment", p, q)
+    P, Q = t.p(p), t.p(q)
+    r = t.new_aux("rot")
+    t.emit(f"point {r} = rotate {Q} {P} 0 1")
+    _point(t, x, f"foot (meet (join {P} (midpoint {Q} {r})) (join {Q} (midpoint {P} {r}))) (join {P} {Q})")
+    _point(t, y, f"reflect {t.p(x)} (midpoint {P} {Q})")
+    t.add_collinear(x, y, p, q)
+
+
+@_construction("3peq", 6, 3)
+def _3peq(t: _Translator, a: list[str]) -> None:
+    x, y, z, p, q, r = a  # z on qr; x on pq and y on pr with z the midpoint of xy: y is x turned about z, so x is
+    # on pq and on the line pr turned about z
+    _distinct(t, "3peq", p, q, r)
+    t.free_on(t.define(z), z, t.join_locus(q, r, "3peq"))
+    Z = t.p(z)
+    _point(t, x, f"meet (join {t.p(p)} {t.p(q)}) (join (reflect {t.p(p)} {Z}) (reflect {t.p(r)} {Z}))")
+    _point(t, y, f"reflect {t.p(x)} {Z}")
+    t.add_collinear(x, p, q)
+    t.add_collinear(y, p, r)
+    t.add_collinear(x, y, z)
+
+
+@_construction("e5128", 6, 2)
+def _e5128(t: _Translator, a: list[str]) -> None:
+    x, y, p, q, c, d = a  # |cq| = |cd|, qc ⟂ qp; x on the circle c through q, y on pq, x y d collinear,
+    # ∠(pq, pd) = ∠(xp, xy): as pq touches at p the circle through p and d that is tangent to pq, that angle is
+    # the one this circle's points x see pd under, so x is its second common point with circle c (besides d)
+    _distinct(t, "e5128", p, q, c, d)
+    P, Q, C, D = t.p(p), t.p(q), t.p(c), t.p(d)
+    v = t.numeric.values
+    if not (_close(abs(v[C] - v[Q]), abs(v[C] - v[D])) and _close(_perp_dot((v[C] - v[Q]) * 1j, v[P] - v[Q]), 0.0)):
+        raise t.fail(f"e5128 needs |{c}{q}| = |{c}{d}| and {q}{c} ⟂ {q}{p} (its preconditions)", "e5128")
+    touching = f"(circle (meet (perpendicular (join {P} {Q}) {P}) (bisector {P} {D})) {P})"
+    _point(t, x, f"second (circle {C} {Q}) {touching} {D}")
+    _point(t, y, f"meet (join {t.p(x)} {D}) (join {P} {Q})")
+    t.circle_record(c, {q, d, x})
+    t.add_collinear(x, y, d)
+    t.add_collinear(y, p, q)
+
+
 _UNSUPPORTED: dict[str, str] = {
-    "on_aline": "an angle copied from three points: no construction of pgsym's statement language",
-    "on_aline2": "an angle copied from three points: no construction of pgsym's statement language",
-    "eqangle2": "no construction of pgsym's statement language",
-    "eqangle3": "a circle of points seeing a segment under a given angle: no construction",
-    "trisect": "no construction of pgsym's statement language",
-    "trisegment": "no construction of pgsym's statement language",
-    "2l1c": "a circle touching two lines and a circle: no construction",
-    "e5128": "no construction of pgsym's statement language",
-    "3peq": "no construction of pgsym's statement language",
-    "cc_tangent": "common tangents of two circles: no construction",
-    "cc_tangent0": "common tangents of two circles: no construction",
+    "trisect": "the trisectors of an angle need cube roots; pgsym's constructions take square roots only",
+    "2l1c": "a circle touching two lines and a circle: its centre needs square roots, and AlphaGeometry picks one "
+            "of the circles that touch all three numerically, a choice pgsym cannot name",
+    "cc_tangent": "common tangents of two circles: AlphaGeometry takes the two external ones, through the homothety "
+                  "centre o + (w − o)·r₁/(r₁ − r₂) with the radii as square roots, a choice among four tangents that "
+                  "pgsym cannot name",
+    "cc_tangent0": "a common tangent of two circles: AlphaGeometry takes an external one, a choice among four "
+                   "tangents that pgsym cannot name",
     "tangent": "needs a branch condition: the two tangent points from a point, told apart by AG numerically",
     "on_opline": "a ray: no construction of pgsym's statement language",
     "acircle": "no construction of pgsym's statement language",
@@ -1075,7 +1212,7 @@ class _Numeric:
     # -- statements --------------------------------------------------------------------------------------
     def run(self, statement: str) -> None:
         try:
-            self._run(statement)
+            self._run(statement.split("#", 1)[0].strip())
         except (ZeroDivisionError, OverflowError):
             raise _NoFigure from None  # two points fell together in the random figure
 
@@ -1147,6 +1284,11 @@ class _Numeric:
         return _NUMERIC_OPS[op](*a)
 
     # -- the check ----------------------------------------------------------------------------------------
+    def on_circle(self, point: str, circle: str) -> bool:
+        """Whether a point (pgsym text) lies on a circle (pgsym text) in the float figure."""
+        z, k = (self._expr(_TOKENS.findall(e), 0)[0] for e in (point, circle))
+        return _close(abs(z - k.c) ** 2, k.r2)
+
     def common(self, one: str, two: str, known: list[str], t: _Translator) -> list[str]:
         """The earlier points on both loci: those known by construction, then those the figure shows."""
         first, second = (self._expr(_TOKENS.findall(e), 0)[0] for e in (one, two))
@@ -1181,7 +1323,9 @@ def _meet(one: Any, two: Any) -> list[complex]:
     if isinstance(one, _NLine):
         f = _foot(two.c, one)
         h2 = two.r2 - abs(f - two.c) ** 2
-        if h2 < 1e-12 * two.r2:
+        if abs(h2) < 1e-9 * two.r2:  # touching (in every figure when a theorem says so): one double point, which
+            return [f, f]  # pgsym's intersection gives too (the discriminant is zero)
+        if h2 < 0:
             raise _NoFigure
         step = h2 ** 0.5 * one.d / abs(one.d)
         return [f + step, f - step]
@@ -1213,8 +1357,15 @@ _NUMERIC_OPS: dict[str, Callable[..., Any]] = {
                           else _NCircle(_circumcentre(*a), abs(a[0] - _circumcentre(*a)) ** 2)),
     "centre": lambda k: k.c,
     "translate": lambda x, a, b: x + b - a,
-    "rotate": lambda x, o, c, s: o + (x - o) * complex(c, s),
+    "similar": lambda a, b, d, e, f: a + (b - a) * (f - d) / (e - d),
+    "second": lambda k, m, a: _reflect(a, _NLine(k.c, m.c - k.c)),  # two circles through a
+    "rotate": lambda x, o, c, s=None: o + (x - o) * (complex(c, s) if s is not None else _degrees(c)),
 }
+
+
+def _degrees(angle: float) -> complex:
+    """The turn by a whole number of degrees (rotate X O DEGREES)."""
+    return complex(math.cos(math.radians(angle)), math.sin(math.radians(angle)))
 
 
 def _close(x: float, y: float) -> bool:

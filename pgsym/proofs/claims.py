@@ -620,6 +620,16 @@ class Claim(SquareRootConstructions):
         """
         return self._construct("translate", name, (x, a, b))
 
+    def similar(self, name: str, a: Any, b: Any, d: Any, e: Any, f: Any) -> Node:
+        """The point X that makes the triangle ABX directly similar to DEF: ``A + (B − A)(F − D)/(E − D)`` in
+        complex numbers, rational (a spiral similarity). It copies an angle: ∠(AB, AX) = ∠(DE, DF); needs D ≠ E.
+
+        >>> c = Claim("x", "x")
+        >>> c.similar("X", *(c.free_point(n) for n in "ABDEF")).description
+        'the point X with ABX directly similar to DEF'
+        """
+        return self._construct("similar", name, (a, b, d, e, f))
+
     def circle(self, name: str, o: Any, a: Any) -> Node:
         """The circle with centre O through A; needs ``O ≠ A`` (a nonzero radius).
 

@@ -64,6 +64,8 @@ any homogeneous representative; each states its non-degeneracy condition in word
 ``rotate``         X O c s → X rotated about O by the angle with cos c, sin s (numbers with
                    c² + s² = 1, checked; or parameter names, then c² + s² = 1 is a hypothesis)
 ``translate``      X A B → X moved by the vector from A to B
+``similar``        A B D E F → the point X with ABX directly similar to DEF (an angle copied:
+                   ∠(AB, AX) = ∠(DE, DF); rational)
 ``circle``         O A → centre O through A; A B C → through three points; O r → centre O, squared
                    radius r (a number or a parameter name)
 ``centre``         circle (or conic) → its centre, the pole of l∞
@@ -150,8 +152,8 @@ _OPERATIONS = ("join", "meet", "plane", "conic", "tangent", "polar", "second", "
                "midpoint", "apply", "dual")
 _PREDICATES = ("collinear", "concurrent", "coplanar", "on", "tangent", "meet", "conconic", "equal", "harmonic")
 # Euclidean constructions and predicates (relative to the absolute)
-_OPERATIONS += ("parallel", "perpendicular", "bisector", "foot", "reflect", "rotate", "translate", "circle",
-                "centre", "invert", "dist2", "area", "segratio", "add", "sub", "mul")
+_OPERATIONS += ("parallel", "perpendicular", "bisector", "foot", "reflect", "rotate", "translate", "similar",
+                "circle", "centre", "invert", "dist2", "area", "segratio", "add", "sub", "mul")
 _PREDICATES += ("perpendicular", "parallel", "equallength", "equalangle", "concyclic", "equalarea")
 KEYWORDS = frozenset({"title", "expect", "params", "prove", "on", "through", *_PLURALS, *_KINDS, *_OPERATIONS,
                       *_PREDICATES})
@@ -380,6 +382,7 @@ _BUILD.update({
                          (_P, _L): lambda c, n, a: c.reflect_line(n, *a)}),
     "rotate": _by_kind({(_P, _P, x, y): (lambda c, n, a: c.rotate(n, *a)) for x in _N for y in _N}),
     "translate": _by_kind({(_P, _P, _P): lambda c, n, a: c.translate(n, *a)}),
+    "similar": _by_kind({(_P,) * 5: lambda c, n, a: c.similar(n, *a)}),
     "circle": _by_kind({(_P, _P): lambda c, n, a: c.circle(n, *a), (_P, _P, _P): lambda c, n, a: c.circle3(n, *a),
                         **{(_P, x): (lambda c, n, a: c.circle_radius(n, *a)) for x in _N}}),
     "centre": _by_kind({(_C,): lambda c, n, a: c.centre(n, *a)}),
@@ -757,8 +760,15 @@ def _algebraic_line(cur: _Line) -> bool:
         return False
     if toks[0].text != "rotate":
         return True
-    rest = [t for t in toks[1:] if t.kind != "end"]
-    return len(rest) in (3, 4) and rest[-1].kind == "number" and (len(rest) == 3 or rest[-2].text == "-")
+    # the arguments as the parser reads them (an inline object such as (midpoint A B) is one argument): the
+    # degree form has three, the last a number
+    args, rest = [], _Line(toks[1:])
+    try:
+        while rest.peek().kind != "end":
+            args.append(_parse_arg(rest, 0))
+    except StatementError:
+        return False  # not the degree form; the cosine-sine form reports the error
+    return len(args) == 3 and isinstance(args[2], _Token) and args[2].kind == "number"
 
 
 def _integer(cur: _Line, what: str) -> int:
@@ -867,6 +877,8 @@ _MEANINGS: dict[str, tuple[str, str]] = {  # keyword -> (group, meaning)
     "rotate": ("Euclidean operations", "X O c s → X rotated about O by the angle with cosine c and sine s; "
                                        "X O DEGREES → by a whole number of degrees (square roots)"),
     "translate": ("Euclidean operations", "X A B → X moved by the vector from A to B"),
+    "similar": ("Euclidean operations", "A B D E F → the point X with ABX directly similar to DEF (copies the "
+                                        "angle EDF to AB)"),
     "circle": ("Euclidean operations", "O A → centre O through A; A B C → through three points; O r → centre O, "
                                        "squared radius r"),
     "centre": ("Euclidean operations", "circle (or conic) → its centre"),

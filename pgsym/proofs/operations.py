@@ -645,6 +645,27 @@ def _translate(node: Any, v: list[Any], scalar: Scalar) -> tuple[Any, ...]:
     return (x * a[2] * b[2] + w * u, y * a[2] * b[2] + w * t, w * a[2] * b[2])
 
 
+def _similar(node: Any, v: list[Any], scalar: Scalar) -> tuple[Any, ...]:
+    # X = A + (B − A)(F − D)/(E − D) in complex numbers (ABX directly similar to DEF). With U = w_A w_B (B − A),
+    # T = w_D w_F (F − D), S = w_D w_E (E − D): (F − D)/(E − D) = T S̄ w_E / (|S|² w_F), so
+    # X = (w_B w_F |S|² (x_A, y_A) + w_E U T S̄, w_A w_B w_F |S|²), right for any representatives
+    a, b, d, e, f = v
+    (u0, u1), (t0, t1), (s0, s1) = affine_vector(a, b), affine_vector(d, f), affine_vector(d, e)
+    ut0, ut1 = u0 * t0 - u1 * t1, u0 * t1 + u1 * t0
+    p0, p1 = (ut0 * s0 + ut1 * s1) * e[2], (ut1 * s0 - ut0 * s1) * e[2]
+    k = b[2] * f[2] * (s0 * s0 + s1 * s1)
+    return (k * a[0] + p0, k * a[1] + p1, k * a[2])
+
+
+def _similar_core(node: Any, a: list[Any], exact: Scalar) -> Any:
+    # the same point with complex numbers: A + (B − A)(F − D)/(E − D)
+    za, zb, zd, ze, zf = (x + sympy.I * y for x, y in (p.dehomogenize() for p in a))
+    if is_zero(sympy.expand(ze - zd)):
+        raise CoreDegenerate("D = E at this point: the triangle DEF has no shape")
+    z = sympy.expand(za + (zb - za) * sympy.radsimp((zf - zd) / (ze - zd)))
+    return projective_plane.Point(*z.as_real_imag())
+
+
 def _circle_centre_point(node: Any, v: list[Any], scalar: Scalar) -> Any:
     # x² + y² − 2 (O·X) w + (2 A·O − |A|²) w² with O = o/w_o, A = a/w_a, times w_o w_a²
     (ox, oy, ow), (ax, ay, aw) = v
@@ -834,6 +855,10 @@ _EUCLIDEAN = (
          lambda node, a, exact: metric.translation(*(q - p for p, q in zip(a[1].dehomogenize(),
                                                                             a[2].dehomogenize(), strict=True)))(a[0]),
          group="affine"),
+    _sim("similar", (_POINT,) * 5, "point", _similar,
+         lambda n, d: f"the point X with {n[0]}{n[1]}X directly similar to {n[2]}{n[3]}{n[4]}",
+         lambda n, name, d: [f"{n[2]} ≠ {n[3]}", *(f"{x} is a finite point" for x in n)],
+         lambda node, value, a: [_distinct(a[2], a[3]), *_finite(*a)], _similar_core),
     _sim("circle", (_POINT, _POINT), "conic", _circle_centre_point,
          lambda n, d: f"circle with centre {n[0]} through {n[1]}",
          lambda n, name, d: [f"{name} has nonzero radius ({n[0]} ≠ {n[1]})", f"{n[0]} is a finite point",

@@ -18,6 +18,7 @@ statement names).
 from __future__ import annotations
 
 import math
+import re
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 from fractions import Fraction
@@ -64,6 +65,7 @@ class Root:
     orient: Callable[[dict[Node, Any]], Any] | None = None
     modulus: int | None = None
     words: tuple[str, str] = ("+", "−")
+    key: Any = None  # what the root is of (a length: the pair of its points), to share it between constructions
 
 
 @dataclass
@@ -92,15 +94,30 @@ def roots_of(claim: Claim) -> list[Root]:
     return [] if claim.square_roots is None else claim.square_roots.roots
 
 
+def _symbol_name(claim: Claim, name: str) -> str:
+    """A name for a new root: the readable ``name`` with every character but letters, digits, ``_`` and ``'``
+    replaced (an object written inline is named by its text, ``midpoint A C``), made unique among the claim's
+    parameters and objects, so that no two roots, and no root and parameter, ever share a symbol."""
+    base = re.sub(r"[^A-Za-z0-9_']+", "_", name).strip("_") or "root"
+    taken = {str(p) for p in claim.parameters}
+    out, n = base, 1
+    while out in taken or f"_{out}" in claim.nodes:
+        n += 1
+        out = f"{base}_{n}"
+    return out
+
+
 def _new_root(claim: Claim, name: str, kind: str, text: str, named: bool, **kw: Any) -> Root:
     data = _data(claim)
     if len([r for r in data.roots if r.kind != "unity"]) >= MAX_ROOTS and kind != "unity":
         raise ObjectTypeError(f"claim {claim.name!r} would need more than {MAX_ROOTS} square roots; "
                               "the exact evaluation visits every choice of their signs")
-    (sym,) = claim.params(name)
+    name = _symbol_name(claim, name)
+    sym = sympy.Symbol(name)
+    claim.parameters.append(sym)
     node = claim._free(f"_{name}", "scalar", (sym,))
     node.root = True  # normalisation: not a free object, fixed by its equation
-    root = Root(sym, node, kind, text, named, **kw)
+    root = Root(sym, node, kind, text.replace("{name}", name), named, **kw)
     data.roots.append(root)
     return root
 
@@ -118,15 +135,16 @@ def _similar(node: Node) -> Node:
 # -- coordinates --------------------------------------------------------------------------------------------
 
 def _length_root(claim: Claim, a: Node, b: Node) -> Root:
-    """The shared root d with d² = (w_A w_B)²|AB|², principal d = +w_A w_B |AB|."""
-    x, y = sorted((a.name, b.name))
-    name = f"d_{x}_{y}"
+    """The shared root d with d² = (w_A w_B)²|AB|², principal d = +w_A w_B |AB| (one root per pair of points)."""
+    a, b = sorted((a, b), key=lambda n: n.name)
+    key = ("length", a.name, b.name)  # names are unique in a claim
     for r in roots_of(claim):
-        if str(r.symbol) == name:
+        if r.key == key:
             return r
-    return _new_root(claim, name, "length", f"{name}² = (w_{x} w_{y})²·|{x}{y}|²", True,
+    x, y = a.label, b.label
+    return _new_root(claim, f"d_{x}_{y}", "length", f"{{name}}² = (w_{x} w_{y})²·|{x}{y}|²", True,
                      square=lambda v: alg.squared_distance_fraction(v[a], v[b])[0], orient=lambda v: v[a][2] * v[b][2],
-                     words=(f"+|{x}{y}|", f"−|{x}{y}|"))
+                     words=(f"+|{x}{y}|", f"−|{x}{y}|"), key=key)
 
 
 def _bisector(claim: Claim, name: str, a: Any, b: Any, c: Any, internal: bool) -> Node:
@@ -205,7 +223,7 @@ def _meet_points(claim: Claim, names: Sequence[str], l: Node | None, k: Node, m:
     def values(v: dict[Node, Any]) -> tuple[Any, Any, Any]:
         return (v[l] if l is not None else None, v[k], v[m] if m is not None else None)
 
-    root = _new_root(claim, f"e_{key}", "intersection", f"e_{key}² = discriminant of {what}", False,
+    root = _new_root(claim, f"e_{key}", "intersection", f"{{name}}² = discriminant of {what}", False,
                      square=lambda v: _discriminant(line_of(*values(v)), v[k]),
                      words=("+", "−"))
     out = []
@@ -254,12 +272,11 @@ def _tangents(claim: Claim, names: Sequence[str], p: Any, k: Any) -> list[Node]:
 # -- roots of unity: rotations and regular polygons ---------------------------------------------------------
 
 def _zeta(claim: Claim, modulus: int) -> Root:
-    name = f"zeta_{modulus}"
     for r in roots_of(claim):
-        if str(r.symbol) == name:
+        if r.key == ("unity", modulus):
             return r
-    return _new_root(claim, name, "unity", f"Φ_{modulus}({name}) = 0 (principal: {name} = e^(2πi/{modulus}))",
-                     True, modulus=modulus)
+    return _new_root(claim, f"zeta_{modulus}", "unity", f"Φ_{modulus}({{name}}) = 0 (principal: {{name}} = "
+                     f"e^(2πi/{modulus}))", True, modulus=modulus, key=("unity", modulus))
 
 
 def _cyclotomic_combination(modulus: int, exponents: Sequence[int], imaginary: bool) -> list[tuple[int, int]]:
