@@ -277,7 +277,9 @@ class _PointEvaluator:
                 if node in by_node:
                     tower.add(by_node[node], values)
 
-            values = evaluate(self.claim, scalar, tower.reduce, deadline, R, after)
+            # with no parameter kept, the values are polynomials in the roots alone, each of degree < 2 (a root of
+            # unity: < φ(M)): small, so the budget's estimate is for the kept variables only
+            values = evaluate(self.claim, scalar, tower.reduce, deadline, R if self.kept else None, after)
         return values, (lambda p: p == 0), R
 
 
