@@ -303,11 +303,14 @@ def identity_by_evaluation(claim: Claim, substitution: dict[sympy.Symbol, Any], 
         raise TooLarge(f"{why}; proof by evaluation covers neither equation hypotheses nor rank conclusions")
     gens = _parameters(claim, substitution)
     n = len(gens)
-    stand_ins = _stand_in_values(claim, gens, substitution)
-    polys = conclusion_polynomials(claim, stand_ins)
+    try:
+        stand_ins = _stand_in_values(claim, gens, substitution)
+        polys = conclusion_polynomials(claim, stand_ins)
+        requirements = _requirements(claim, stand_ins)
+    except Exception as err:  # a formula that compares or converts its values: no degree bound, no proof here
+        raise TooLarge(f"{why}; no degree bound for proof by evaluation ({type(err).__name__})") from err
     degree = [max((_bound(p, n)[i] for _, p in polys), default=0) for i in range(n)]
-    requirement_bounds = [[max((_bound(p, n)[i] for p in ps), default=0) for i in range(n)]
-                          for _, ps in _requirements(claim, stand_ins)]
+    requirement_bounds = [[max((_bound(p, n)[i] for p in ps), default=0) for i in range(n)] for _, ps in requirements]
     order = sorted(range(n), key=lambda i: -degree[i])
     plan = _choose(claim, gens, substitution, degree, order, tower, backend, deadline, why)
     kept_count, evaluator = plan
@@ -330,7 +333,7 @@ def identity_by_evaluation(claim: Claim, substitution: dict[sympy.Symbol, Any], 
                 if k not in witnessed and any(not is_zero(p) for p in ps):
                     witnessed.add(k)
     total = count
-    for k, (text, _ps) in enumerate(_requirements(claim, stand_ins)):
+    for k, (text, _ps) in enumerate(requirements):
         if k in witnessed:
             continue
         if all(requirement_bounds[k][i] <= degree[i] for i in varying):
