@@ -375,27 +375,38 @@ def _choose(claim: Claim, gens: Sequence[sympy.Symbol], substitution: dict[sympy
     best: tuple[float, int, _PointEvaluator] | None = None
     notes = []
     terms: dict[Any, Any] = {}
-    warm_up = _PointEvaluator(claim, gens, substitution, [], tower, backend, terms)
-    warm_up.run(dict.fromkeys(gens, 0), deadline)  # parses every datum once, so the timings below compare
+    numbers = _PointEvaluator(claim, gens, substitution, [], tower, backend, terms)
+    numbers.run(dict.fromkeys(gens, 0), deadline)  # parses every datum once, so that the timings below compare
+    started = time.perf_counter()
+    numbers.run({g: d - d // 2 for g, d in zip(gens, degree, strict=True)}, deadline)
+    fastest = time.perf_counter() - started  # a point with every parameter a number: the cheapest kind of point
+    left = math.inf if deadline.end is None else deadline.end - time.perf_counter()
+    started_all = time.perf_counter()
     for keep in _KEEP_CHOICES:
         if keep > len(gens):
             break
         points = math.prod(degree[i] + 1 for i in order[keep:])
+        if points > MAX_POINTS or points * fastest > left:  # hopeless without timing it
+            notes.append(f"{keep} kept: {points} points")
+            continue
         kept = [gens[i] for i in order[:keep]]
-        evaluator = _PointEvaluator(claim, gens, substitution, kept, tower, backend, terms)
+        evaluator = _PointEvaluator(claim, gens, substitution, kept, tower, backend, terms) if keep else numbers
         first = {gens[i]: degree[i] - degree[i] // 2 for i in order[keep:]}  # a grid corner: not a special point
+        cap = (left - (time.perf_counter() - started_all)) / points  # the most one point may take for the grid to fit
         started = time.perf_counter()
         try:
-            evaluator.run(first, deadline)
+            evaluator.run(first, Deadline(cap))
         except TooLarge:
             notes.append(f"{keep} kept: too large")
             continue
         except Timeout:
-            break
+            deadline.check()
+            notes.append(f"{keep} kept: {points} points × more than {cap:.2g} s")
+            continue
         seconds = time.perf_counter() - started
         estimate = seconds * points
         notes.append(f"{keep} kept: {points} points × {seconds:.2g} s")
-        if points <= MAX_POINTS and (best is None or estimate < best[0]):
+        if best is None or estimate < best[0]:
             best = (estimate, keep, evaluator)
         if points == 1:
             break
