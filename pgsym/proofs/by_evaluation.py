@@ -51,6 +51,7 @@ from typing import Any
 
 import sympy
 
+from . import budget
 from .budget import Deadline, Timeout, TooLarge
 from .claims import Claim, Node
 from .evaluation import conclusion_values, evaluate, nonzero_requirements, objects_to_check
@@ -67,6 +68,9 @@ MAX_POINTS = 200_000
 
 _KEEP_CHOICES = (0, 1, 2, 3)
 """How many parameters may be kept as variables at each grid point (the rest are numbers)."""
+
+_PRODUCTS_PER_SECOND = 10**9
+"""Term products a second at python-flint's best (see :data:`~pgsym.proofs.budget.MAX_WORK`)."""
 
 
 class _Degree:
@@ -240,7 +244,7 @@ class _PointEvaluator:
             out = self.terms[expr] = [(Fraction(int(c.p), int(c.q)), m) for m, c in poly.terms()]
         return out
 
-    def run(self, point: dict[sympy.Symbol, int], deadline: Deadline
+    def run(self, point: dict[sympy.Symbol, int], deadline: Deadline, max_work: int | None = None
             ) -> tuple[dict[Node, Any], Callable[[Any], bool], PolynomialRing | None]:
         """The values at the point, a zero test for them, and the ring they live in (None: exact rationals)."""
         tower = self.tower(self.kept) if self.tower is not None else None
@@ -269,7 +273,7 @@ class _PointEvaluator:
             return out
 
         if tower is None:
-            values = evaluate(self.claim, scalar, deadline=deadline, ring=R)
+            values = evaluate(self.claim, scalar, deadline=deadline, ring=R, max_work=max_work)
         else:
             by_node = {r.node: r for r in roots_of(self.claim)}
 
@@ -279,7 +283,7 @@ class _PointEvaluator:
 
             # with no parameter kept, the values are polynomials in the roots alone, each of degree < 2 (a root of
             # unity: < φ(M)): small, so the budget's estimate is for the kept variables only
-            values = evaluate(self.claim, scalar, tower.reduce, deadline, R if self.kept else None, after)
+            values = evaluate(self.claim, scalar, tower.reduce, deadline, R if self.kept else None, after, max_work)
         return values, (lambda p: p == 0), R
 
 
@@ -395,7 +399,8 @@ def _choose(claim: Claim, gens: Sequence[sympy.Symbol], substitution: dict[sympy
         cap = (left - (time.perf_counter() - started_all)) / points  # the most one point may take for the grid to fit
         started = time.perf_counter()
         try:
-            evaluator.run(first, Deadline(cap))
+            # one product in C cannot be stopped: none may need more than the cap allows at flint's best speed
+            evaluator.run(first, Deadline(cap), max_work=max(1, min(budget.MAX_WORK, int(cap * _PRODUCTS_PER_SECOND))))
         except TooLarge:
             notes.append(f"{keep} kept: too large")
             continue
