@@ -340,10 +340,18 @@ def identity_by_evaluation(claim: Claim, substitution: dict[sympy.Symbol, Any], 
     for k, (text, _ps) in enumerate(requirements):
         if k in witnessed:
             continue
-        if all(requirement_bounds[k][i] <= degree[i] for i in varying):
+        # zero at every point so far: its own grid (its own degree bounds) decides whether it is identically zero
+        if math.prod(requirement_bounds[k][i] + 1 for i in varying) > MAX_POINTS:
+            raise TooLarge(f"{why}; by evaluation, the condition {text} was zero at all {total} grid points, and its "
+                           "own grid is too large")
+        for numbers in itertools.product(*_grid([requirement_bounds[k][i] for i in varying])):
+            deadline.check(f"evaluating the condition {text}")
+            values, is_zero, _ = evaluator.run({gens[i]: x for i, x in zip(varying, numbers, strict=True)}, deadline)
+            total += 1
+            if any(not is_zero(p) for p in _requirements(claim, values)[k][1]):
+                break
+        else:
             return Evaluation("degenerate", label=text, points=total)
-        raise TooLarge(f"{why}; by evaluation, the condition {text} was zero at all {total} grid points, and its "
-                       "degree bound exceeds the grid")
     shown = ", ".join(f"{gens[i]}: {degree[i]}" for i in order)
     steps = [f"the expansion was not attempted ({why})",
              f"degree bounds propagated through the {len(claim.nodes)} constructions without expanding "
@@ -363,7 +371,7 @@ def identity_by_evaluation(claim: Claim, substitution: dict[sympy.Symbol, Any], 
                  "roots; induction on the number of variables): so each conclusion polynomial is the zero polynomial"
                  + ("; specialising the parameters commutes with division by the monic defining equations, so the "
                     "remainder modulo them is zero" if tower is not None else ""))
-    steps.append(f"every one of the {len(requirement_bounds)} non-degeneracy conditions is nonzero at some grid "
+    steps.append(f"every one of the {len(requirement_bounds)} non-degeneracy conditions is nonzero at some evaluated "
                  "point, so none is violated identically")
     conditions = [text for text, _ in nonzero_requirements(claim, stand_ins)]
     where = (f"{'ℚ' if tower is None else 'ℚ[roots]'}{'[' + ', '.join(map(str, kept)) + ']' if kept else ''} at "
