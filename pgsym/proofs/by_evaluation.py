@@ -336,7 +336,7 @@ def identity_by_evaluation(claim: Claim, substitution: dict[sympy.Symbol, Any], 
             for k, (_text, ps) in enumerate(_requirements(claim, values)):
                 if k not in witnessed and any(not is_zero(p) for p in ps):
                     witnessed.add(k)
-    total = count
+    total = grid_points = count
     for k, (text, _ps) in enumerate(requirements):
         if k in witnessed:
             continue
@@ -355,8 +355,8 @@ def identity_by_evaluation(claim: Claim, substitution: dict[sympy.Symbol, Any], 
     shown = ", ".join(f"{gens[i]}: {degree[i]}" for i in order)
     steps = [f"the expansion was not attempted ({why})",
              f"degree bounds propagated through the {len(claim.nodes)} constructions without expanding "
-             "(deg(a·b) ≤ deg a + deg b, deg(a ± b) ≤ max(deg a, deg b)"
-             + (", a root r with r² = q counted with degree ⌈deg q / 2⌉" if tower is not None else "")
+             "(the degree of a product is at most the sum of the degrees, that of a sum at most the larger"
+             + ("; a root r with r² = q counts as half the degree of q, rounded up" if tower is not None else "")
              + f"): every conclusion polynomial has degree at most {shown or 'zero'} in these parameters"]
     if kept:
         where = (f"ℚ[{', '.join(str(s) for s in kept)}]" if tower is None else
@@ -364,11 +364,11 @@ def identity_by_evaluation(claim: Claim, substitution: dict[sympy.Symbol, Any], 
         steps.append(f"{', '.join(str(s) for s in kept)} kept as variables: at each grid point of the others the "
                      f"conclusion is expanded in {where} and is the zero polynomial")
     sizes = " × ".join(str(len(a)) for a in axes) or "1"
-    steps.append(f"grid of {sizes} = {total} points (degree bound + 1 consecutive integers per parameter): "
+    steps.append(f"grid of {sizes} = {grid_points} points (degree bound + 1 consecutive integers per parameter): "
                  "every conclusion polynomial vanishes at each of them, exactly")
-    steps.append("a nonzero polynomial of degree ≤ dᵢ in each xᵢ cannot vanish on a grid with dᵢ + 1 values of "
-                 "each xᵢ (a nonzero polynomial of degree ≤ d in one variable, over an integral domain, has at most d "
-                 "roots; induction on the number of variables): so each conclusion polynomial is the zero polynomial"
+    steps.append("a nonzero polynomial of degree at most d in each parameter cannot vanish on a grid with d + 1 values "
+                 "of each parameter (a nonzero polynomial of degree at most d in one variable, over an integral domain, "
+                 "has at most d roots; induction on the number of variables): so each conclusion polynomial is the zero polynomial"
                  + ("; specialising the parameters commutes with division by the monic defining equations, so the "
                     "remainder modulo them is zero" if tower is not None else ""))
     steps.append(f"every one of the {len(requirement_bounds)} non-degeneracy conditions is nonzero at some evaluated "
