@@ -367,8 +367,9 @@ def identity_by_evaluation(claim: Claim, substitution: dict[sympy.Symbol, Any], 
     steps.append(f"grid of {sizes} = {grid_points} points (degree bound + 1 consecutive integers per parameter): "
                  "every conclusion polynomial vanishes at each of them, exactly")
     steps.append("a nonzero polynomial of degree at most d in each parameter cannot vanish on a grid with d + 1 values "
-                 "of each parameter (a nonzero polynomial of degree at most d in one variable, over an integral domain, "
-                 "has at most d roots; induction on the number of variables): so each conclusion polynomial is the zero polynomial"
+                 "of each parameter (a nonzero polynomial of degree at most d in one variable, over an integral "
+                 "domain, has at most d roots; induction on the number of variables): so each conclusion polynomial "
+                 "is the zero polynomial"
                  + ("; specialising the parameters commutes with division by the monic defining equations, so the "
                     "remainder modulo them is zero" if tower is not None else ""))
     steps.append(f"every one of the {len(requirement_bounds)} non-degeneracy conditions is nonzero at some evaluated "
