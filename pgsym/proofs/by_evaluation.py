@@ -210,6 +210,7 @@ class Evaluation:
     points: int = 0
     conditions: list[str] = field(default_factory=list)
     where: str = ""
+    largest_terms: int = 0
     largest_degree: int = 0
     method: str = ("polynomial identity by exact evaluation on a grid (degree bounds from the constructions, "
                    "then one exact evaluation per grid point: proving by example, Hong 1986, Zhang, Yang and "
@@ -217,8 +218,8 @@ class Evaluation:
 
     def certificate(self, ring: str, normalisation: str = "", backend: str = "") -> Certificate:
         """The certificate of an identity: the method, the ring, and why the grid decides."""
-        return Certificate(self.method, ring, self.steps, 0, normalisation=normalisation, backend=backend,
-                           largest_degree=self.largest_degree)
+        return Certificate(self.method, ring, self.steps, self.largest_terms, normalisation=normalisation,
+                           backend=backend, largest_degree=self.largest_degree)
 
 
 class _PointEvaluator:
@@ -323,11 +324,15 @@ def identity_by_evaluation(claim: Claim, substitution: dict[sympy.Symbol, Any], 
     axes = _grid([degree[i] for i in varying])
     witnessed: set[int] = set()
     count = 0
+    largest = (1, 0)  # (terms, total degree) of the largest value at a grid point: a number when nothing is kept
     for numbers in itertools.product(*axes):
         deadline.check(f"evaluating the constructions at grid point {count + 1}")
         point = {gens[i]: x for i, x in zip(varying, numbers, strict=True)}
         values, is_zero, R = evaluator.run(point, deadline)
         count += 1
+        if R is not None:  # the size of what was expanded at a grid point, for the certificate
+            entries = [x for v in values.values() for x in flat(v) if not isinstance(x, (int, Fraction))]
+            largest = max([largest, *((R.nterms(x), R.degree(x)) for x in entries)])
         for label, p in conclusion_polynomials(claim, values):
             if not is_zero(p):
                 return Evaluation("nonzero", label=label, point={s: Fraction(x) for s, x in point.items()},
@@ -377,7 +382,8 @@ def identity_by_evaluation(claim: Claim, substitution: dict[sympy.Symbol, Any], 
     conditions = [text for text, _ in nonzero_requirements(claim, stand_ins)]
     where = (f"{'ℚ' if tower is None else 'ℚ[roots]'}{'[' + ', '.join(map(str, kept)) + ']' if kept else ''} at "
              f"{total} grid points of {', '.join(str(gens[i]) for i in varying) or 'no parameter'}")
-    return Evaluation("identity", steps=steps, points=total, conditions=conditions, largest_degree=sum(degree),
+    return Evaluation("identity", steps=steps, points=total, conditions=conditions, largest_terms=largest[0],
+                      largest_degree=largest[1],
                       where=where)
 
 
