@@ -112,6 +112,24 @@ def test_a_degenerate_claim_is_degenerate_never_proved(no_expansion):
     assert v.status == "degenerate" and "A ≠ A" in v.reason
 
 
+def test_a_degenerate_claim_with_a_false_conclusion_is_degenerate_as_by_expansion(monkeypatch):
+    # P = l × l is the zero vector for every s, t, while C = (1, s, 1) is off l = A × B in general: the expansion
+    # checks the conditions first and says degenerate; so must the grid, not "false" for a point that is undefined
+    def make() -> Claim:
+        c = Claim("degenerate and false", "l meets itself, and C lies on l")
+        s, t = c.params("s t")
+        A, B, C = c.point("A", s, t, 1), c.point("B", t, 1, s), c.point("C", 1, s, 1)
+        l = c.join("l", A, B)
+        c.meet("P", l, l)
+        c.conclude_incident(C, l)
+        return c
+
+    assert prove(make(), normalise_coordinates=False).status == "degenerate"
+    monkeypatch.setattr(budget, "MAX_WORK", 0)
+    v = prove(make(), normalise_coordinates=False)
+    assert v.status == "degenerate" and "l ≠ l" in v.reason
+
+
 def test_a_grid_that_would_not_fit_in_the_time_left_leaves_the_claim_unknown(monkeypatch):
     monkeypatch.setattr(budget, "MAX_WORK", 0)
     monkeypatch.setattr("pgsym.proofs.by_evaluation.MAX_POINTS", 3)  # 16 points are needed (see above)

@@ -324,6 +324,7 @@ def identity_by_evaluation(claim: Claim, substitution: dict[sympy.Symbol, Any], 
     axes = _grid([degree[i] for i in varying])
     witnessed: set[int] = set()
     count = 0
+    failing: Evaluation | None = None
     largest = (1, 0)  # (terms, total degree) of the largest value at a grid point: a number when nothing is kept
     for numbers in itertools.product(*axes):
         deadline.check(f"evaluating the constructions at grid point {count + 1}")
@@ -333,14 +334,18 @@ def identity_by_evaluation(claim: Claim, substitution: dict[sympy.Symbol, Any], 
         if R is not None:  # the size of what was expanded at a grid point, for the certificate
             entries = [x for v in values.values() for x in flat(v) if not isinstance(x, (int, Fraction))]
             largest = max([largest, *((R.nterms(x), R.degree(x)) for x in entries)])
-        for label, p in conclusion_polynomials(claim, values):
-            if not is_zero(p):
-                return Evaluation("nonzero", label=label, point={s: Fraction(x) for s, x in point.items()},
-                                  value=p, ring=R, points=count)
+        if failing is None:
+            for label, p in conclusion_polynomials(claim, values):
+                if not is_zero(p):
+                    failing = Evaluation("nonzero", label=label, point={s: Fraction(x) for s, x in point.items()},
+                                         value=p, ring=R)
+                    break
         if len(witnessed) < len(requirement_bounds):
             for k, (_text, ps) in enumerate(_requirements(claim, values)):
                 if k not in witnessed and any(not is_zero(p) for p in ps):
                     witnessed.add(k)
+        if failing is not None and len(witnessed) == len(requirement_bounds):
+            break  # not an identity, and no condition fails identically (those come first, as in the expansion)
     total = grid_points = count
     for k, (text, _ps) in enumerate(requirements):
         if k in witnessed:
@@ -357,6 +362,9 @@ def identity_by_evaluation(claim: Claim, substitution: dict[sympy.Symbol, Any], 
                 break
         else:
             return Evaluation("degenerate", label=text, points=total)
+    if failing is not None:
+        failing.points = total
+        return failing
     shown = ", ".join(f"{gens[i]}: {degree[i]}" for i in order)
     steps = [f"the expansion was not attempted ({why})",
              f"degree bounds propagated through the {len(claim.nodes)} constructions without expanding "
