@@ -247,8 +247,18 @@ def test_both_backends_multiply_alike(f_terms, g_terms):
 
 
 def test_an_expansion_beyond_the_term_limit_is_unknown(monkeypatch):
+    from pgsym.proofs import budget, by_evaluation
+
+    monkeypatch.setattr(budget, "MAX_TERMS", 3)
+    monkeypatch.setattr(by_evaluation, "MAX_POINTS", 0)  # and no grid either
+    v = prove("pappus")  # its meets have more than three terms per coordinate
+    assert v.status == "unknown" and "too large" in v.reason
+
+
+def test_beyond_the_term_limit_the_identity_is_decided_by_evaluation(monkeypatch):
     from pgsym.proofs import budget
 
     monkeypatch.setattr(budget, "MAX_TERMS", 3)
-    v = prove("pappus")  # its meets have more than three terms per coordinate
-    assert v.status == "unknown" and "too large" in v.reason
+    v = prove("pappus")  # its method: "rational parametrisation (…), then polynomial identity by exact evaluation …"
+    assert v.proved and "then polynomial identity by exact evaluation on a grid" in v.method
+    assert [c.text for c in v.conditions] == [c.text for c in prove("pappus").conditions]

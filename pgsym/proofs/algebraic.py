@@ -70,6 +70,7 @@ from ..exact import is_zero
 from ..exact import sign as exact_sign
 from ..projective_plane import Line, Point
 from .budget import Deadline, Timeout, TooLarge, alarm
+from .by_evaluation import identity_by_evaluation
 from .claims import Claim, Node
 from .evaluation import claim_rng, conclusion_polys, evaluate, nonzero_requirements, objects_to_check
 from .normalisation import normalise
@@ -375,7 +376,21 @@ def prove_algebraic(claim: Claim, timeout: float | None = 10.0, seed: int = 0, i
                     cache[e] = R(sympy.sympify(e).xreplace(sub) if sub else e)
                 return cache[e]
 
-            values = _evaluate(claim, conv, tower, deadline, estimate=True)
+            try:
+                values = _evaluate(claim, conv, tower, deadline, estimate=True)
+            except TooLarge as err:  # too large to expand: the same membership decided by exact evaluation on a grid
+                found = identity_by_evaluation(claim, sub, deadline, err.args[0], partial(_Tower, claim,
+                                               backend=backend), backend)
+                if found.outcome == "nonzero":
+                    return _sample(claim, (found.label, found.value), found.ring, rng=claim_rng(claim, seed),
+                                   instances=instances, deadline=deadline, done=done, counterexample=Counterexample)
+                if found.outcome == "degenerate":
+                    return done(Status.DEGENERATE, reason=f"the condition {found.label} fails identically (zero on a "
+                                "grid its degree bound makes conclusive)", branches="no decision")
+                conditions = [Condition(t) for t in found.conditions] + (
+                    [Condition(f"{norm.condition} (frame)")] if norm is not None and norm.condition else [])
+                return proved(found.certificate(found.where, "" if norm is None else norm.describe(), R.backend),
+                              _every_root(roots))
             reqs = _requirements(claim, values)
             conditions = []
             for text, polys in reqs:

@@ -48,6 +48,7 @@ import sympy
 from .. import ring as alg
 from ..errors import ObjectTypeError, PgsymError
 from ..exact import is_zero
+from . import by_evaluation
 from .algebraic import prove_algebraic
 from .budget import Deadline, Timeout, TooLarge, alarm
 from .claims import Claim, Node
@@ -694,7 +695,12 @@ def prove(claim: Claim, *, timeout: float | None = 10.0, seed: int = 0, core_che
                                    elapsed=time.perf_counter() - start, **base)
                 rank_witness = data[1] if outcome == _Outcome.HOLDS else []
             norm, _why = normalise(claim) if normalise_coordinates else (None, "")
-            status, data = _exact_pass(claim, deadline, rank_witness, backend, norm)
+            try:
+                status, data = _exact_pass(claim, deadline, rank_witness, backend, norm)
+            except TooLarge as err:  # too large to expand: the same identity decided by exact evaluation on a grid
+                status, data = by_evaluation.exact_pass(claim, deadline, norm, err.args[0], partial(
+                    _general_position, claim, norm, backend), backend)
+                status = _Outcome(status)
             if status is _Outcome.PROVED:
                 certificate, conditions = data
                 core = _core_check(claim, rng, deadline) if core_check else "not requested"

@@ -34,13 +34,14 @@ __all__ = ["claim_rng", "conclusion_polys", "conclusion_values", "evaluate", "no
 
 def evaluate(claim: Claim, scalar: Callable[[Any], Any], reduce: Callable[[Any], Any] | None = None,
              deadline: Deadline | None = None, ring: PolynomialRing | None = None,
-             after: Callable[[Node, dict[Node, Any]], None] | None = None) -> dict[Node, Any]:
+             after: Callable[[Node, dict[Node, Any]], None] | None = None, max_work: int | None = None
+             ) -> dict[Node, Any]:
     """Every object's value, in the order of construction, with the claim's parameters mapped by ``scalar``.
 
     ``reduce`` is applied to each entry as it is made (a remainder modulo equations, a residue modulo a prime);
     with ``ring`` a construction that would need more than :data:`~pgsym.proofs.budget.MAX_WORK` term products
     raises :class:`~pgsym.proofs.budget.TooLarge` before it starts; ``after(node, values)`` runs once each value
-    is known (the square-root prover adds a root's defining equation there).
+    is known (the square-root prover adds a root's defining equation there); ``max_work`` replaces MAX_WORK.
 
     >>> from pgsym.proofs.claims import Claim
     >>> c = Claim("x", "x")
@@ -55,7 +56,7 @@ def evaluate(claim: Claim, scalar: Callable[[Any], Any], reduce: Callable[[Any],
         args = [values[a] for a in node.args if isinstance(a, Node)]
         if ring is not None:
             work = estimate(lambda v, node=node: node.operation.formula(node, v, scalar), args, ring)
-            if work is not None and work > budget.MAX_WORK:
+            if work is not None and work > (budget.MAX_WORK if max_work is None else max_work):
                 raise TooLarge(f"{node.name} would need about {work:.1e} term products")
         value = node.operation.formula(node, args, scalar)
         if reduce is not None:
