@@ -333,6 +333,25 @@ def test_python_starts_while_the_page_loads_and_hidden_cells_have_no_controls(ch
     assert problems.items == [] and offline.blocked == [] and outside(offline, server) == []
 
 
+def test_python_waits_for_the_reader_when_the_browser_saves_data(offline_browser, server):
+    """With Save-Data on, the page loads nothing for Python until the reader points at a live cell."""
+    context = offline_browser.new_context()
+    context.add_init_script("Object.defineProperty(navigator, 'connection', {value: {saveData: true}})")
+    offline = Offline(context, server)
+    page = context.new_page()
+    problems = PageProblems(page)
+    page.goto(f"{server}/book/points-and-lines.html", wait_until="load")
+    page.wait_for_load_state("networkidle")
+    assert not [u for u in offline.requests if "/_static/live/pyodide/" in u or u.endswith("/worker.js")]
+    assert page.evaluate("document.documentElement.dataset.livePython") is None
+    index = first_cell("points-and-lines", shown)
+    live_cell(page, index).hover()
+    page.wait_for_function("() => document.documentElement.dataset.livePython === 'ready'", timeout=RUN_TIMEOUT_MS)
+    assert any(u.endswith("/_static/live/pyodide/snapshot.bin") for u in offline.requests)
+    context.close()
+    assert problems.items == [] and offline.blocked == [] and outside(offline, server) == []
+
+
 def marks(page: Page) -> list[str]:
     """The names of the start-up's moments the page recorded (performance marks ``live:*``)."""
     return page.evaluate("performance.getEntriesByType('mark').map((m) => m.name)")

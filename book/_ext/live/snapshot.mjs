@@ -32,8 +32,7 @@ for name in pgsym.__all__:
         getattr(pgsym, name)
     except ImportError:
         pass
-del name
-live_kernel.Kernel().run("""
+outputs = live_kernel.Kernel().run("""
 from fractions import Fraction
 import sympy as sp
 from IPython.display import display
@@ -43,6 +42,10 @@ X = meet(Line(a, 0, -1), Line(0, b, Fraction(-1, 2)))
 display(X, join(Point(1, 2), X), sp.Matrix([[a, 1], [2, b]]).det())
 print(X.dehomogenize(), X == Point(1, 1))
 """)
+failed = [o for o in outputs if o["type"] == "error"]
+if failed:
+    raise RuntimeError(f"the warm-up cell failed: {failed}")
+del name, outputs, failed
 `);
 const snapshot = pyodide.makeMemorySnapshot();
 // A quarter of the memory is pages of zeros (free space): only the other pages are stored, in order,
