@@ -14,6 +14,7 @@ import re
 import subprocess
 import sys
 from collections.abc import Iterator
+from importlib.metadata import version
 from urllib.parse import urlparse
 
 import pytest
@@ -309,13 +310,15 @@ def stream_text(cell: Locator) -> str:
     return "".join(cell.locator(".live-output .live-stream").all_text_contents())
 
 
-def test_python_starts_when_the_page_is_idle_and_hidden_cells_have_no_controls(chapter_page, server):
+def test_python_starts_while_the_page_loads_and_hidden_cells_have_no_controls(chapter_page, server):
     page, problems, offline = chapter_page("index.html")
     page.wait_for_load_state("networkidle")
     assert not [u for u in offline.requests if "/_static/live/" in u]  # a page without code cells
     page.goto(f"{server}/book/points-and-lines.html", wait_until="load")
-    # Python (and the book's pure modules) load once the page is idle, before any Run
+    # Python (and the book's pure modules) load with the page, before any Run, from the book's snapshot
     page.wait_for_function("() => document.documentElement.dataset.livePython === 'ready'", timeout=RUN_TIMEOUT_MS)
+    assert page.evaluate("document.documentElement.dataset.livePythonStart") == "snapshot"
+    assert any(u.endswith("/_static/live/pyodide/snapshot.bin") for u in offline.requests)
     assert any(u.endswith("/_static/live/modules/_show.py") for u in offline.requests)
     assert not [u for u in offline.requests if "editor.js" in u]  # the editor waits for Edit
     # the chapter's hidden import cell runs with the others but shows no controls
@@ -328,6 +331,98 @@ def test_python_starts_when_the_page_is_idle_and_hidden_cells_have_no_controls(c
     shown = next(i for i, c in enumerate(cells) if i not in hidden)
     assert live_cell(page, shown).locator(".live-toolbar button").count() == 3
     assert problems.items == [] and offline.blocked == [] and outside(offline, server) == []
+
+
+def test_python_waits_for_the_reader_when_the_browser_saves_data(offline_browser, server):
+    """With Save-Data on, the page loads nothing for Python until the reader points at a live cell."""
+    context = offline_browser.new_context()
+    context.add_init_script("Object.defineProperty(navigator, 'connection', {value: {saveData: true}})")
+    offline = Offline(context, server)
+    page = context.new_page()
+    problems = PageProblems(page)
+    page.goto(f"{server}/book/points-and-lines.html", wait_until="load")
+    page.wait_for_load_state("networkidle")
+    assert not [u for u in offline.requests if "/_static/live/pyodide/" in u or u.endswith("/worker.js")]
+    assert page.evaluate("document.documentElement.dataset.livePython") is None
+    index = first_cell("points-and-lines", shown)
+    live_cell(page, index).hover()
+    page.wait_for_function("() => document.documentElement.dataset.livePython === 'ready'", timeout=RUN_TIMEOUT_MS)
+    assert any(u.endswith("/_static/live/pyodide/snapshot.bin") for u in offline.requests)
+    context.close()
+    assert problems.items == [] and offline.blocked == [] and outside(offline, server) == []
+
+
+def marks(page: Page) -> list[str]:
+    """The names of the start-up's moments the page recorded (performance marks ``live:*``)."""
+    return page.evaluate("performance.getEntriesByType('mark').map((m) => m.name)")
+
+
+def test_a_run_at_the_load_event_shows_the_result_from_the_snapshot(offline_browser, server):
+    """The reader clicks Run as soon as the page has loaded: the cell waits for Python, which the page
+    restores from the book's snapshot (SymPy and pgsym already imported), then shows the cell's result."""
+    context = offline_browser.new_context()
+    offline = Offline(context, server)
+    page = context.new_page()
+    problems = PageProblems(page)
+    page.goto(f"{server}/book/points-and-lines.html", wait_until="load")
+    cells = code_cells("points-and-lines")
+    index = next(i for i, c in enumerate(cells) if shown(c) and classified("points-and-lines")[i]["live"])
+    cell = run(page, index)
+    assert cell.get_attribute("data-live-state") == "done", cell.inner_text()
+    # the cell displays a line as LaTeX (typeset by the page's MathJax), as its stored output does
+    assert "text/latex" in cells[index]["outputs"][0]["data"]
+    assert cell.locator(".live-output mjx-container").count() == len(cells[index]["outputs"])
+    seen = marks(page)
+    assert "live:python-restored" in seen and "live:sympy-imported" not in seen
+    assert seen.index("live:python-restored") < seen.index("live:ready") < seen.index("live:shown")
+    context.close()
+    assert problems.items == [] and offline.blocked == [] and outside(offline, server) == []
+
+
+def test_modules_the_snapshot_did_not_import_load_from_the_wheels(chapter_page):
+    """After a restore the packages' files are still there: a SymPy module nobody imported yet loads,
+    the installed versions are those of this checkout's environment, and `random` differs per page."""
+    chapter = "points-and-lines"
+    values = []
+    for _ in range(2):
+        page, problems, _ = chapter_page(f"book/{chapter}.html")
+        index = first_cell(chapter, lambda c: shown(c))
+        edit(page, index, "from sympy.combinatorics.graycode import GrayCode\n"
+                          "from importlib.metadata import version\nimport random\n"
+                          "print(list(GrayCode(2).generate_gray()), version('sympy'), version('pgsym'))\n"
+                          "print(random.random())")
+        cell = run(page, index)
+        assert cell.get_attribute("data-live-state") == "done", cell.inner_text()
+        assert page.evaluate("document.documentElement.dataset.livePythonStart") == "snapshot"
+        codes, value = stream_text(cell).splitlines()
+        # the binary reflected Gray code of length 2: 00, 01, 11, 10
+        assert codes == f"['00', '01', '11', '10'] {version('sympy')} {version('pgsym')}"
+        values.append(float(value))
+        assert problems.items == []
+    # the snapshot fixed the generator's state; the page seeds it afresh
+    assert values[0] != values[1]
+
+
+def test_without_a_usable_snapshot_python_starts_in_full(offline_browser, server):
+    """A snapshot the page cannot use (here: its bytes replaced) is reported on the console and Python
+    starts in full, importing SymPy in the page; the cell's result is the same."""
+    context = offline_browser.new_context()
+    offline = Offline(context, server)
+    context.route("**/pyodide/snapshot.bin", lambda route: route.fulfill(status=200, body=b"\0" * 65536))
+    page = context.new_page()
+    warnings: list[str] = []
+    page.on("console", lambda msg: msg.type == "warning" and warnings.append(msg.text))
+    page.goto(f"{server}/book/points-and-lines.html", wait_until="load")
+    chapter = "points-and-lines"
+    index = first_cell(chapter, lambda c: stored_stdout(c) and "meet(Line(" in source(c))
+    cell = run(page, index)
+    assert cell.get_attribute("data-live-state") == "done", cell.inner_text()
+    assert stream_text(cell) == stored_stdout(code_cells(chapter)[index])
+    assert page.evaluate("document.documentElement.dataset.livePythonStart") == "full"
+    assert "live:sympy-imported" in marks(page) and "live:python-restored" not in marks(page)
+    assert any("the Python snapshot did not load" in w for w in warnings), warnings
+    context.close()
+    assert offline.blocked == [] and outside(offline, server) == []
 
 
 def test_a_cell_after_a_plot_uses_the_sympy_of_the_import_cell(chapter_page):

@@ -439,8 +439,11 @@ def _page(app: Any, pagename: str, templatename: str, context: dict[str, Any], d
     context["body"] = context.get("body", "") + (
         f'<script type="application/json" id="live-cells-data">{payload}</script>'
     )
+    if any(cell["live"] for cell in cells):
+        # read in the head by live-cells.js, which starts Python before the body is parsed
+        context["metatags"] = context.get("metatags", "") + '<meta name="live-cells-python" content="start" />'
     app.add_css_file("live/live-cells.css")
-    app.add_js_file("live/live-cells.js", type="module")
+    app.add_js_file("live/live-cells.js", type="module", **{"async": "async"})
 
 
 def _copy_assets(app: Any, exception: Exception | None) -> None:

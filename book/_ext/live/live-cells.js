@@ -1,10 +1,11 @@
 // Live cells: Edit / Run / Reset controls on the book's code cells. Python runs in a Web Worker
-// (worker.js, Pyodide). It starts loading when the reader points at or focuses a live cell, or when
-// the page is idle after loading (not when the browser asks to save data), so that the first Run
-// rarely waits for it; the editor (editor.js, CodeMirror) loads on the first Edit. Which cells can run
-// was decided when the book was built (book/_ext/live_cells.py).
+// (worker.js, Pyodide). It starts loading as soon as this script has loaded (when the browser asks to
+// save data, only once the reader points at or focuses a live cell, or clicks Edit or Run), so that a
+// Run right after the page loads waits as little as possible; the editor (editor.js, CodeMirror)
+// loads on the first Edit. Which cells can run was decided when the book was built
+// (book/_ext/live_cells.py).
+performance.mark("live:script");
 const here = new URL(".", import.meta.url);
-const data = JSON.parse(document.getElementById("live-cells-data").textContent);
 
 let worker = null;
 let nextId = 1;
@@ -15,8 +16,15 @@ let lastProgress = null; // what the worker is doing while Python starts; null o
 function startWorker() {
   worker = new Worker(new URL("worker.js", here), { type: "module" });
   worker.onmessage = ({ data: message }) => {
+    if (message.type === "mark") {
+      // the worker's start-up on the page's timeline (performance.getEntriesByType("mark"))
+      performance.mark(`live:${message.name}`, { startTime: message.time - performance.timeOrigin });
+      return;
+    }
     if (message.type === "ready") {
       document.documentElement.dataset.livePython = "ready";
+      // how Python started: from the book's snapshot, or in full when the page could not use it
+      document.documentElement.dataset.livePythonStart = message.snapshot ? "snapshot" : "full";
       lastProgress = null;
       return;
     }
@@ -49,7 +57,7 @@ function startWorker() {
   };
 }
 
-// Pointing at a cell, Edit or an idle page announce a Run: Python starts loading then.
+// A page with live cells, pointing at a cell or Edit announce a Run: Python starts loading then.
 function warmUp() {
   if (worker) return;
   startWorker();
@@ -202,6 +210,7 @@ class LiveCell {
 
   async run() {
     if (this.node.dataset.liveState === "running") return;
+    performance.mark("live:run");
     // The first time, the earlier cells run in order, so that their imports and names exist.
     const batch = cells.filter((c) => (c.live || c.quiet) && c.index < this.index && !c.ran);
     batch.push(this);
@@ -234,6 +243,7 @@ class LiveCell {
     await Promise.all(nodes.filter((n) => n.matches(".live-latex, .live-html")).map(typeset));
     this.node.dataset.liveState = outputs.some((o) => o.type === "error") ? "error" : "done";
     this.node.dataset.liveRuns = String(Number(this.node.dataset.liveRuns ?? 0) + 1);
+    performance.mark("live:shown");
   }
 
   reset() {
@@ -245,17 +255,19 @@ class LiveCell {
   }
 }
 
+// Python takes a while to start: begin at once (this module runs as soon as it has loaded, usually
+// before the page is parsed; the worker runs beside the page) when the page has a live cell (the
+// build marks it in the head), unless the reader asked to save data.
+if (document.querySelector('meta[name="live-cells-python"]') && !navigator.connection?.saveData) warmUp();
+
+// The controls need the cells and their description, at the end of the page.
+if (document.readyState === "loading") {
+  await new Promise((resolve) => document.addEventListener("DOMContentLoaded", resolve, { once: true }));
+}
+const data = JSON.parse(document.getElementById("live-cells-data").textContent);
 const cells = [];
 for (const [index, info] of data.cells.entries()) {
   const node = document.querySelector(`.live-cell-${index}`);
   if (node) cells.push(new LiveCell(index, info, node));
 }
 
-// Python takes seconds to start: begin once the page has loaded and is idle (at most half a second
-// later; the worker runs beside the page), unless the reader asked to save data.
-if (cells.some((c) => c.live) && !navigator.connection?.saveData) {
-  const idle = window.requestIdleCallback ?? ((callback) => setTimeout(callback, 100));
-  const start = () => idle(() => warmUp(), { timeout: 500 });
-  if (document.readyState === "complete") start();
-  else window.addEventListener("load", start, { once: true });
-}
