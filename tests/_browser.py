@@ -85,8 +85,17 @@ class PageProblems:
         page.on("response", lambda res: res.status >= 400 and self.items.append(f"HTTP {res.status}: {res.url}"))
 
 
-def open_page(browser: Browser, url: str) -> tuple[Page, PageProblems]:
+# A page with live cells starts Python as soon as it opens unless the reader asked to save data (the
+# Save-Data preference). Tests of the page's text, figures and layout say so, so that each page does not
+# boot Python in the background while it is measured; tests/test_live_cells.py opens pages without it.
+SAVE_DATA = "Object.defineProperty(navigator, 'connection', {value: {saveData: true}})"
+
+
+def open_page(browser: Browser, url: str, python: bool = False) -> tuple[Page, PageProblems]:
+    """A page of the book, loaded, with MathJax done; ``python=True`` lets its live cells start Python."""
     page = browser.new_page()
+    if not python:
+        page.add_init_script(SAVE_DATA)
     problems = PageProblems(page)
     page.goto(url, wait_until="load")
     # MathJax typesets asynchronously; wait until its startup promise has settled. Sphinx loads MathJax only

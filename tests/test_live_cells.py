@@ -18,7 +18,7 @@ from importlib.metadata import version
 from urllib.parse import urlparse
 
 import pytest
-from _browser import CHROMIUM, CHROMIUM_ARGS, HTML, ROOT, PageProblems
+from _browser import CHROMIUM, CHROMIUM_ARGS, HTML, ROOT, SAVE_DATA, PageProblems
 from playwright.sync_api import Browser, BrowserContext, Locator, Page, sync_playwright
 
 import pgsym
@@ -336,7 +336,7 @@ def test_python_starts_while_the_page_loads_and_hidden_cells_have_no_controls(ch
 def test_python_waits_for_the_reader_when_the_browser_saves_data(offline_browser, server):
     """With Save-Data on, the page loads nothing for Python until the reader points at a live cell."""
     context = offline_browser.new_context()
-    context.add_init_script("Object.defineProperty(navigator, 'connection', {value: {saveData: true}})")
+    context.add_init_script(SAVE_DATA)
     offline = Offline(context, server)
     page = context.new_page()
     problems = PageProblems(page)
