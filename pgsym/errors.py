@@ -25,6 +25,7 @@ __all__ = [
     "DependentPlanesError",
     "DimensionError",
     "IdealPointError",
+    "InconsistentDataError",
     "InputLimitError",
     "InvalidCoordinatesError",
     "LineOnQuadricError",
@@ -151,6 +152,15 @@ class NotAPencilError(DegenerateConfigurationError):
 
 class NotOnConicError(DegenerateConfigurationError):
     """A point that must lie on a conic (e.g. for a tangent line) does not."""
+
+
+class InconsistentDataError(DegenerateConfigurationError):
+    """Measured data that no configuration can produce, e.g. image line pairs that are perpendicular in no world.
+
+    Not a special case of a valid configuration: the data contradict the model (a
+    measurement error or a wrong assumption). A subclass of
+    :class:`DegenerateConfigurationError`, so code that caught that error keeps working.
+    """
 
 
 class OptionError(PgsymError, ValueError):

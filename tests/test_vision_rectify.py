@@ -13,6 +13,7 @@ from pgsym.errors import (
     CollinearPointsError,
     DegenerateConfigurationError,
     DimensionError,
+    InconsistentDataError,
     SingularTransformationError,
 )
 from pgsym.vision.errors import ImageError
@@ -172,9 +173,13 @@ def test_degenerate_inputs():
     # two pairs with the same directions give one constraint only
     with pytest.raises(DegenerateConfigurationError, match="one independent"):
         metric_upgrade([([1, 0, 0], [0, 1, 0]), ([1, 0, 5], [0, 1, 7])])
-    # "orthogonal" pairs that no affinity can make orthogonal: both pairs are the same two directions swapped
-    with pytest.raises(DegenerateConfigurationError):
+    # "orthogonal" pairs that no affinity can make orthogonal: both pairs are the same two directions swapped.
+    # Rows (l1 m1, l1 m2 + l2 m1, l2 m2) of the unit normals: (1, 1, 0)/√2 and (0, 1, -1)/√2; null vector
+    # (1, -1, -1), so S = [[1, -1], [-1, -1]] with det S = -2 < 0: no S = K Kᵀ. The data are inconsistent,
+    # not a special case, and the error says so (and is still a DegenerateConfigurationError for old callers)
+    with pytest.raises(InconsistentDataError, match="inconsistent"):
         metric_upgrade([([1, 0, 0], [1, 1, 0]), ([1, -1, 0], [0, 1, 0])])
+    assert issubclass(InconsistentDataError, DegenerateConfigurationError)
     with pytest.raises(DimensionError):
         metric_upgrade([([1, 0, 0], [0, 1, 0])])
     with pytest.raises(CollinearPointsError):

@@ -15,7 +15,7 @@ import pytest
 from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
-from pgsym.errors import DegenerateConfigurationError, DimensionError
+from pgsym.errors import DegenerateConfigurationError, DimensionError, InconsistentDataError
 from pgsym.vision.homography import apply_homography
 from pgsym.vision.rectify import (
     dual_conic_from_orthogonal_pairs,
@@ -100,8 +100,16 @@ def test_too_few_or_dependent_or_inconsistent_pairs_raise():
     # "right angles" that are not: a row against itself shifted, five times
     line = line_through((0, 0), (1, 0.2))
     bad = [(line, line_through((0, t), (1, 0.2 + t * 1.1))) for t in (1, 2, 3, 4, 5, 6)]
-    with pytest.raises(DegenerateConfigurationError):
+    with pytest.raises(DegenerateConfigurationError, match="independent"):
         metric_rectification_from_orthogonal_pairs(bad)
+    # pairs l = (a, b, c), m = (b, a, d) satisfy l1 m1 - l2 m2 = ab - ba = 0: the null vector of the system is
+    # diag(1, -1, 0) (eigenvalues 1, 0, -1), indefinite, while the image of C*∞ is positive semi-definite for
+    # every real camera. No world has these right angles: inconsistent data, not a degenerate configuration
+    abcd = [(1, 2, 3, 5), (2, -1, 1, 4), (3, 1, -2, 1), (1, 4, 2, -3), (2, 3, -1, 2)]
+    hyperbolic = [((a, b, c), (b, a, d)) for a, b, c, d in abcd]
+    with pytest.raises(InconsistentDataError, match="inconsistent"):
+        metric_rectification_from_orthogonal_pairs(hyperbolic)
+    assert issubclass(InconsistentDataError, DegenerateConfigurationError)
 
 
 # -- the chapter's photograph ---------------------------------------------------------------------------

@@ -46,6 +46,7 @@ from ..errors import (
     CoincidentPointsError,
     DegenerateConfigurationError,
     DimensionError,
+    InconsistentDataError,
 )
 from ..numeric.conditioning import require_finite
 from ..numeric.plane import join, meet
@@ -191,7 +192,7 @@ def metric_upgrade(orthogonal_pairs: Sequence[Any]) -> np.ndarray:
     if S[0, 0] < 0:
         S = -S
     if np.linalg.det(S) <= 1e-12 * np.trace(S) ** 2:
-        raise DegenerateConfigurationError(
+        raise InconsistentDataError(
             "the orthogonal line pairs are inconsistent: the image of the dual conic C*∞ they give is not "
             "positive definite (check that each pair really is orthogonal in the world, after affine rectification)"
         )
@@ -297,7 +298,7 @@ def metric_rectification_from_orthogonal_pairs(
     ``C*∞′ ≈ G C*∞ Gᵀ`` with ``G = U diag(√λ1, √λ2, 1)``, and ``H = G⁻¹ = diag(1/√λ1, 1/√λ2, 1) Uᵀ``.
     ``H`` is oriented so that the reference point stays on the positive side (``w > 0``) and the
     image is not mirrored there. Pairs whose ``C*∞′`` is not positive semi-definite (``λ2 ≤ 0``:
-    the lines are not orthogonal in any world) raise :class:`~pgsym.errors.DegenerateConfigurationError`.
+    the lines are not orthogonal in any world) raise :class:`~pgsym.errors.InconsistentDataError`.
 
     >>> Hw = np.array([[1.0, 0.3, 0], [0.1, 1.2, 0], [0.001, 0.002, 1]])   # world → image
     >>> img = lambda *pts: apply_homography(Hw, pts)
@@ -325,7 +326,7 @@ def metric_rectification_from_orthogonal_pairs(
     C = dual_conic_from_orthogonal_pairs(conditioned)
     lam, U = np.linalg.eigh(C)  # ascending: λ3 ≈ 0 first, then λ2, λ1
     if lam[1] <= 1e-9 * lam[2]:
-        raise DegenerateConfigurationError(
+        raise InconsistentDataError(
             "the orthogonal line pairs are inconsistent: the image of the dual conic C*∞ they give is not "
             f"positive semi-definite of rank 2 (eigenvalues {np.round(lam / lam[2], 6).tolist()}); check that each "
             "pair really is orthogonal in the world"
