@@ -576,7 +576,7 @@ def _square4(matrix: Any, what: str) -> ImmutableMatrix:
     m = exact_matrix(matrix, shape=(4, 4), what=f"a {what}")
     if not all(is_zero(m[i, j] + m[j, i]) for i in range(4) for j in range(i, 4)):
         raise NotSkewSymmetricError(
-            f"a {what} is skew-symmetric (its transpose is its negative), and this one is not:\n{m}\n"
+            f"a {what} is skew-symmetric (its transpose is its negative), and this one is not:\n{m};\n"
             f"build it as A*B.T - B*A.T from two points (or P*Q.T - Q*P.T from two planes)"
         )
     if all_zero(m):

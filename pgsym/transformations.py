@@ -21,6 +21,7 @@ True
 from __future__ import annotations
 
 import numbers
+import warnings
 from itertools import combinations
 from typing import Any, ClassVar
 
@@ -298,6 +299,24 @@ class Transformation(Kind, kind="transformation"):
         (5, 0, 1)
         """
         return Action(self._matrix.tolist(), self.cofactor.tolist())
+
+    def map_vector(self, coords: Any, covariant: bool = False) -> tuple[Expr, ...]:
+        """Deprecated: ``H x`` (``covariant``: ``adj(H)ᵀ l``) of bare coordinates. Transform the object itself
+        (``H(Point(...))``, ``H(Line(...))``), or use :attr:`action` (``H.action.point``, ``.hyperplane``)."""
+        warnings.warn("Transformation.map_vector is deprecated: transform the object (H(obj)) or use "
+                      "H.action.point / H.action.hyperplane", DeprecationWarning, stacklevel=2)
+        act = self.action
+        return tuple(expanded(Matrix(act.hyperplane(coords) if covariant else act.point(coords))))
+
+    def map_form(self, m: Any, covariant: bool = False) -> ImmutableMatrix:
+        """Deprecated: ``H M Hᵀ`` (``covariant``: ``adj(H)ᵀ M adj(H)``) of a bare matrix. Transform the object
+        itself (``H(DualQuadric(M))``, ``H(Conic(M))``), or use :attr:`action` (``.hyperplane_form``,
+        ``.point_form``)."""
+        warnings.warn("Transformation.map_form is deprecated: transform the object (H(DualConic(M)), H(Quadric(M)), "
+                      "...) or use H.action.hyperplane_form / H.action.point_form", DeprecationWarning, stacklevel=2)
+        rows = Matrix(m).tolist()
+        act = self.action
+        return ImmutableMatrix(expanded(Matrix(act.point_form(rows) if covariant else act.hyperplane_form(rows))))
 
     # -- rendering -----------------------------------------------------------------------------
     def __repr__(self) -> str:

@@ -545,3 +545,16 @@ def test_the_plucker_rule_maps_a_join_to_the_join_of_the_images():
     image = Line3.image(line.coords, Action(h))
     assert image == Line3.join(space.Point3(1, 0, 0, 1), space.Point3(1, 1, 0, 1)).coords
     assert Transformation(h)(line).coords == image
+
+
+def test_the_old_bare_coordinate_methods_warn_and_keep_their_values():
+    """map_vector / map_form were public: they stay, deprecated, with the values they always had."""
+    H = Transformation([[2, 0, 0], [0, 1, 0], [0, 0, 1]])
+    with pytest.warns(DeprecationWarning, match="H.action.point"):
+        assert H.map_vector((1, 2, 3)) == (2, 2, 3)  # (2·1, 2, 3)
+    with pytest.warns(DeprecationWarning):
+        assert H.map_vector((1, 2, 3), covariant=True) == (1, 4, 6)  # adj(H)ᵀ = diag(1, 2, 2)
+    with pytest.warns(DeprecationWarning, match="hyperplane_form"):
+        assert H.map_form(sympy.eye(3)) == sympy.diag(4, 1, 1)  # H I Hᵀ = diag(4, 1, 1)
+    with pytest.warns(DeprecationWarning):
+        assert H.map_form(sympy.eye(3), covariant=True) == sympy.diag(1, 4, 4)  # diag(1, 2, 2)²
