@@ -647,12 +647,21 @@ def recheck_ordered(claim: Claim, values: dict[str, Any], branch: dict[str, str]
     return _selected(claim, tower, vals, _Branch({}, sub, True, ""))
 
 
+_MAX_FACTOR_TERMS = 2000
+"""The largest polynomial whose sign is looked for by factoring (a larger one is left undecided)."""
+
+
 def _signed_factors(expr: sympy.Expr, gens: Sequence[sympy.Symbol], known: dict[sympy.Expr, int]) -> int | None:
     """The sign that ``expr`` has wherever it is not zero, when its factors show it: even powers, factors with
     even exponents and coefficients of one sign, factors whose sign an order condition fixes (``known``); else
     None."""
     if expr == 0:
         return 0
+    s = _evident_sign(expr, gens)
+    if s is not None:
+        return s
+    if len(sympy.Add.make_args(expr)) > _MAX_FACTOR_TERMS:
+        return None
     coeff, factors = sympy.factor_list(expr, *gens) if gens else (expr, [])
     total = 1 if coeff > 0 else -1
     for f, k in factors:
@@ -696,7 +705,8 @@ def _known_signs(conditions: list[tuple[str, sympy.Expr]], gens: Sequence[sympy.
     return known
 
 
-def _selected_branch_proof(claim: Claim, deadline: Any, backend: str | None) -> tuple[list[str], str] | str:
+def _selected_branch_proof(claim: Claim, deadline: Any, backend: str | None
+                           ) -> tuple[list[str], list[Condition], str] | str:
     """Prove the conclusion on the branch the order conditions select, for one intersection root e (e² = Δ).
 
     Each conclusion polynomial reduces to g = g₀ + g₁e. (1) Its norm over the two branches, g₀² − g₁²Δ, is 0
@@ -704,7 +714,8 @@ def _selected_branch_proof(claim: Claim, deadline: Any, backend: str | None) -> 
     an order condition c = c₀ + c₁e > 0, T = g₁e·(c₀·g₁e + c₁e·g₀) = Δ·g₁(c₀g₁ + c₁g₀) is root-free; where the
     conclusion fails on a branch, it holds on the other, so g₁e = g₀ there and c = (c₀g₁ + c₁g₀)/g₁ has the sign
     of T. When T ≤ 0 wherever it is defined (its factors show it), the condition excludes every branch where
-    the conclusion fails. Returns the certificate's lines and the branch words, or why it does not apply."""
+    the conclusion fails. Returns the certificate's lines, the non-degeneracy conditions and the branch words, or
+    why it does not apply."""
     roots = roots_of(claim)
     free = [r for r in roots if not r.named]
     if len(free) != 1 or free[0].kind == "unity":
@@ -722,58 +733,66 @@ def _selected_branch_proof(claim: Claim, deadline: Any, backend: str | None) -> 
     values = _evaluate(claim, lambda x: R(sympy.sympify(x).xreplace(sub) if sub else x), tower, deadline,
                        estimate=True)
     others = {r.symbol for r in roots} - {e}
+    conditions = []
+    for text, polys in _requirements(claim, values):
+        if all(p == 0 for p in polys):
+            return f"the condition {text} fails identically"
+        if not text.endswith("is not the zero vector"):
+            conditions.append(Condition(text, raw=[p for p in polys if p != 0][:3]))
 
-    def split(p: Any) -> tuple[sympy.Expr, sympy.Expr] | None:
-        x = sympy.expand(R.to_expr(tower.reduce(p)))
-        if x.free_symbols & others:
-            return None
-        return x.coeff(e, 0), x.coeff(e, 1)
+    def split(p: Any) -> tuple[Any, Any]:  # p = p₀ + p₁·e modulo the defining equations, in the ring
+        x = R.to_expr(tower.reduce(p))
+        return R(x.coeff(e, 0)), R(x.coeff(e, 1))
 
-    delta = sympy.expand(R.to_expr(tower.reduce(root.square(values))))
-    if delta.free_symbols & others:
-        return f"the discriminant of {e} involves other roots"
+    def reduced(x: Any) -> sympy.Expr:  # modulo the defining equations (the other roots' too), as an expression
+        return sympy.expand(R.to_expr(tower.reduce(x)))
+
+    delta = tower.reduce(root.square(values))
+    at = [i for i, x in enumerate(R.symbols) if x in others]
+
+    def involves_others(p: Any) -> bool:
+        return not isinstance(p, int) and any(m[i] for m, _ in R.terms(p) for i in at)
     conds = []
     for text, poly in condition_values(claim, values):
         deadline.check("splitting the order conditions by branch")
-        parts = split(poly)
-        if parts is None:
-            return f"the condition '{text}' involves roots other than {e}"
-        conds.append((text, *parts))
-    known = _known_signs([(t, c0) for t, c0, c1 in conds if c1 == 0], params)
+        conds.append((text, *split(poly)))
+    known = _known_signs([(t, x) for t, c0, c1 in conds if c1 == 0
+                          for x in [reduced(c0)] if not x.free_symbols & others], params)
     lines = [f"{e}² = Δ (the branches ±{e}); the order conditions, each > 0: "
              + "; ".join(t for t, _, _ in conds)]
     if norm is not None:
         lines.append(norm.describe() + " (similarities keep every order condition)")
     for label, poly in conclusion_polys(claim, values):
         deadline.check("the conclusion on the selected branch")
-        parts = split(poly)
-        if parts is None:
-            return f"{label} involves roots other than {e}"
-        g0, g1 = parts
+        g0, g1 = split(poly)
         if g1 == 0 and g0 == 0:
             lines.append(f"{label} reduces to 0 modulo the defining equations (on both branches)")
             continue
         if g1 == 0:
             return f"{label} does not depend on the branch of {e}, and it is not in the ideal"
-        if sympy.expand(g0 ** 2 - g1 ** 2 * delta) != 0:
+        if tower.reduce(g0 * g0 - g1 * g1 * delta) != 0:
             return f"the norm of {label} over the two branches of {e} is not 0: it fails on both somewhere"
         for text, c0, c1 in conds:
             if c1 == 0:
                 continue
-            t = sympy.expand(g1 * (c0 * g1 + c1 * g0) * delta)
-            s = _signed_factors(t, params, known)
+            t = tower.reduce(g1 * (c0 * g1 + c1 * g0))
+            if involves_others(t):  # times Δ ≥ 0 (a real branch), the other roots may cancel
+                t = tower.reduce(t * delta)
+            if involves_others(t) or R.nterms(t) > _MAX_FACTOR_TERMS:
+                continue  # its sign would depend on the other roots' values, or it is too large to factor
+            s = _signed_factors(reduced(t), params, known)
             if s is not None and s <= 0:
                 why = ("it is 0" if s == 0 else "its factors are squares and factors of one sign"
                        + (" (some fixed by the order conditions without roots)" if known else ""))
                 lines.append(f"{label} = g₀ + g₁·{e}: the norm g₀² − g₁²·Δ reduces to 0 (one branch satisfies it at "
                              f"every point); on a branch where it fails, '{text}' has the sign of "
-                             f"T = Δ·g₁·(c₀g₁ + c₁g₀), and T ≤ 0 everywhere ({why}): the condition excludes that "
-                             "branch")
+                             f"T = g₁·(c₀g₁ + c₁g₀) (or Δ·T, Δ ≥ 0), and it is ≤ 0 everywhere ({why}): the condition "
+                             "excludes that branch")
                 break
         else:
             return (f"no order condition's sign on the failing branch of {label} is fixed by its factors (a "
                     "condition selects the branch only where a polynomial keeps its sign)")
-    return lines, f"the branch of {e} the order conditions select"
+    return lines, conditions, f"the sign of {e} at which they hold"
 
 
 def prove_ordered(claim: Claim, plain: Callable[[Claim], Any], timeout: float | None = 10.0, seed: int = 0,
@@ -806,6 +825,10 @@ def prove_ordered(claim: Claim, plain: Callable[[Claim], Any], timeout: float | 
     verdict.hypotheses = [*verdict.hypotheses, *(f"order condition: {w.text}" for w in claim.order_conditions)]
 
     def done(status: Any, **kw: Any) -> Any:
+        if status != Status.FALSE:
+            kw.setdefault("counterexample", None)
+        if status != Status.PROVED:
+            kw.setdefault("certificate", None)
         for k, v in kw.items():
             setattr(verdict, k, v)
         verdict.status = Status(status)
@@ -835,7 +858,7 @@ def prove_ordered(claim: Claim, plain: Callable[[Claim], Any], timeout: float | 
             if roots_of(claim):
                 found = _selected_branch_proof(claim, deadline, backend)
                 if not isinstance(found, str):
-                    lines, branch = found
+                    lines, conditions, branch = found
                     witness = _ordered_witness(claim, rng, deadline)
                     if witness is not None:
                         certificate = Certificate("the norm over the conjugate branches is 0, and the order "
@@ -844,7 +867,7 @@ def prove_ordered(claim: Claim, plain: Callable[[Claim], Any], timeout: float | 
                         core = _core_check(claim, rng, deadline)
                         if not core.startswith("MISMATCH"):
                             return done(Status.PROVED, certificate=certificate, method=certificate.method,
-                                        counterexample=None, reason="", core_check=core,
+                                        counterexample=None, reason="", core_check=core, conditions=conditions,
                                         branches=f"proved on the branch the order conditions select: {branch} "
                                                  f"({words}); they hold e.g. at {witness}")
                     why = "no random instance satisfies the order conditions"
@@ -893,7 +916,7 @@ def _sample_ordered(claim: Claim, rng: random.Random, instances: int, deadline: 
             continue
         for b, (kind, residuals) in results:
             if kind == "fails":
-                b.text += _coordinates(claim, tower, values, b)
+                b.text = (b.text + _coordinates(claim, tower, values, b)) if roots_of(claim) else "no square roots"
                 at = {str(s): Fraction(int(v.p), int(v.q)) for s, v in point.items()}
                 roots = {str(s): str(v) for s, v in b.values.items()}
                 ce = Counterexample(at, residuals, claim, branch=roots,
@@ -902,8 +925,8 @@ def _sample_ordered(claim: Claim, rng: random.Random, instances: int, deadline: 
                             method="exact evaluation at a rational instance on each branch the order conditions "
                                    "select",
                             reason=f"the conclusion fails on a branch the order conditions select ({words}): "
-                                   f"{b.text or 'the only branch'}",
-                            branches=f"fails on the selected branch: {b.text or 'the only branch'}")
+                                   f"{b.text}",
+                            branches=f"fails on the selected branch: {b.text}")
         seen += 1
         if seen >= instances:
             break
