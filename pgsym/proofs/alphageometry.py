@@ -87,6 +87,7 @@ class Problem:
     source: str
     statement: str | None = None
     error: StatementError | None = None
+    held: bool = False  # the goal held in every random float figure of the translation
 
 
 def read_alphageometry(text: str, source: str = "") -> list[Problem]:
@@ -122,8 +123,8 @@ def read_alphageometry(text: str, source: str = "") -> list[Problem]:
         try:
             if bad is not None:
                 raise AlphaGeometryError(f"a control character {bad!r}; a problem is plain text", lineno)
-            statement = translate(line, lineno, title=this)
-            problems.append(Problem(this, lineno, source, statement=statement))
+            statement, held = _translate(line, lineno, title=this)
+            problems.append(Problem(this, lineno, source, statement=statement, held=held))
         except StatementError as err:
             err.line, err.source = err.line or lineno, source
             problems.append(Problem(this, lineno, source, error=err))
@@ -177,6 +178,15 @@ def solve(problem: Problem, timeout: float | None = 10.0) -> Outcome:
     except PgsymError as err:
         return Outcome(problem, "error", message=str(err), elapsed=time.perf_counter() - start)
     status = {"proved": "proved", "false": "refuted"}.get(str(verdict.status), "unknown")
+    if status == "refuted" and problem.held:
+        # AlphaGeometry draws its figure again until the goal holds: a goal that held in every random figure yet
+        # fails at an exact counterexample holds in part of the figures only, selected by an order condition the
+        # problem does not state (which arc, which side) — not a refutation of the problem as AlphaGeometry reads it
+        return Outcome(problem, "unsupported", verdict=verdict, elapsed=time.perf_counter() - start,
+                       message=f"unsupported: the goal held in {_FIGURES} random figures but fails at an exact "
+                               "counterexample: it holds in part of the figures only (AlphaGeometry draws its figure "
+                               "again until the goal holds), and the problem states no order condition that selects "
+                               "them")
     return Outcome(problem, status, verdict=verdict, elapsed=time.perf_counter() - start)
 
 
@@ -192,6 +202,11 @@ def translate(problem: str, line: int = 0, title: str = "") -> str:
     point c = reflect b (foot a (join a b))
     prove equallength a b a c
     """
+    return _translate(problem, line, title)[0]
+
+
+def _translate(problem: str, line: int = 0, title: str = "") -> tuple[str, bool]:
+    """The statement text, and whether the goal held in every random figure (else it held in none)."""
     if len(problem) > MAX_AG_LINE_CHARS:
         raise AlphaGeometryError(f"a problem of {len(problem)} characters; at most {MAX_AG_LINE_CHARS}", line)
     # Random float figures, on every choice of the points AlphaGeometry takes at random (at most 2³ choices):
@@ -216,12 +231,17 @@ def translate(problem: str, line: int = 0, title: str = "") -> str:
                 if other != out:
                     raise first.branch(first.either, "the translation depends on the choice")
                 results[flip, bits] = holds
+                first.ray_twice = first.ray_twice or t.ray_twice
                 if flip and (False, bits) in results and holds != results[False, bits]:
                     raise UnsupportedConstructionError(
                         f"unsupported: {first.flippable} needs a branch condition (AlphaGeometry draws it mirrored at "
                         "random, and the goal holds in one orientation only)", line, construction=first.flippable)
         except _NoFigure:
             continue  # the random figure had no real intersection: another one, as AlphaGeometry does
+        if first.ray_twice:
+            raise first.unsupported(first.ray_twice.split("/")[0], "needs a branch condition: in some figures the ray "
+                                    f"({first.ray_twice}) meets the circle twice, and AlphaGeometry then takes one "
+                                    "by the order of its own computation")
         if text is None:
             text, either = out, first.either
         elif out != text:
@@ -242,7 +262,7 @@ def translate(problem: str, line: int = 0, title: str = "") -> str:
         raise UnsupportedConstructionError("unsupported: the goal holds in some random figures only (AlphaGeometry's "
                                            "figure fixes an order or a side that pgsym's language cannot state)",
                                            line, construction="figure")
-    return text
+    return text, all(h for _, h in truths)
 
 
 # -- the figure: which points are known on which lines and circles ------------------------------------------
@@ -265,7 +285,8 @@ class _Locus:
     centre: str = ""  # circle: pgsym text of its centre
     through: str = ""  # circle: pgsym text of a point on it (for a free point on the circle)
     ray: bool = False  # a half-line of AG: meeting a circle picks the point on the ray
-    tail: str = ""  # the ray's origin
+    tail: str = ""  # the ray's origin (an AG point)
+    head: str = ""  # a second point of the ray (pgsym text)
 
 
 class _Translator:
@@ -274,6 +295,7 @@ class _Translator:
         self.flip, self.flippable = flip, ""  # the mirrored figure of a shape AG mirrors at random
         self.numeric = _Numeric(seed, bits)
         self.either: list[str] = []  # the constructions of the points AG takes at random (either common point)
+        self.ray_twice = ""  # a ray that met its circle twice in this figure (AG then takes one by its own order)
         self.goal_words: list[str] = []
         self.out: list[str] = []
         self.defined: dict[str, str] = {}  # AG name -> pgsym name (in definition order)
@@ -294,7 +316,10 @@ class _Translator:
     def branch(self, either: list[str], why: str) -> UnsupportedConstructionError:
         name = either[0] if either else "intersection"
         return UnsupportedConstructionError(f"unsupported: {name} needs a branch condition ({why}; AlphaGeometry "
-                                            "takes either point at random)", self.line, construction=name.split()[0])
+                                            "takes either point at random and draws its figure again until the goal "
+                                            "holds, so the problem does not say which point it means: no order "
+                                            "condition of its figure selects it)", self.line,
+                                            construction=name.split()[0])
 
     def goal_holds(self) -> bool:
         """Whether the goal holds in the float figure."""
@@ -389,10 +414,10 @@ class _Translator:
         return _Locus("line", f"join {self.p(a)} {self.p(b)}", self.on_join(a, b), name,
                       lambda x: self.add_collinear(a, b, x))
 
-    def keyed_locus(self, key: tuple, expr: str, through: str, name: str, ray: bool = False) -> _Locus:
+    def keyed_locus(self, key: tuple, expr: str, through: str, name: str, head: str = "") -> _Locus:
         pts = self.key_line(key, through)
-        return _Locus("line", expr, set(pts), name, lambda x: (pts.add(x), self.add_collinear(*pts)), ray=ray,
-                      tail=through)
+        return _Locus("line", expr, set(pts), name, lambda x: (pts.add(x), self.add_collinear(*pts)), ray=bool(head),
+                      tail=through, head=head)
 
     # -- a problem --------------------------------------------------------------------------------------------
     def run(self, problem: str, title: str) -> str:
@@ -478,8 +503,13 @@ class _Translator:
             x = self.define(ag)
             self.emit(f"point {x} = meet ({one.expr}) ({two.expr})")
         elif one.kind == "line" and one.ray and (not common or common[0] != one.tail):
-            raise self.unsupported(one.name, "needs a branch condition: a ray meets the circle at the point on the "
-                                   "ray, which pgsym cannot name")
+            # AlphaGeometry's half-line meets the circle at its point on the ray (numericals.HalfLine.intersect):
+            # an order condition of the figure, not a random choice
+            x = self.define(ag)
+            self.out.append(f"point {x} = intersection ({one.expr}) ({two.expr})")
+            self.out.append(f"where onray {x} {self.p(one.tail)} {one.head}")
+            if self.numeric.on_ray(x, one.expr, two.expr, self.p(one.tail), one.head):
+                self.ray_twice = f"{one.name}/{two.name} of {ag}"
         elif one.kind == "line" and common:
             x = self.define(ag)
             self.emit(f"point {x} = reflect {self.p(common[0])} (foot {two.centre} ({one.expr}))")
@@ -677,8 +707,8 @@ def _angle_bisector(t: _Translator, a: list[str]) -> _Locus:
 def _angle_mirror(t: _Translator, a: list[str]) -> _Locus:
     _, p, v, q = a  # the ray from v that line vq bisects with line vp
     _distinct(t, "angle_mirror", p, v, q)
-    return t.keyed_locus(("amirror", p, v, q), f"join {t.p(v)} (reflect {t.p(p)} (join {t.p(v)} {t.p(q)}))", v,
-                         "angle_mirror", ray=True)
+    head = f"(reflect {t.p(p)} (join {t.p(v)} {t.p(q)}))"
+    return t.keyed_locus(("amirror", p, v, q), f"join {t.p(v)} {head}", v, "angle_mirror", head=head)
 
 
 @_construction("s_angle", 4)
@@ -690,7 +720,7 @@ def _s_angle(t: _Translator, a: list[str]) -> _Locus:
     _distinct(t, "s_angle", p, v)
     r = t.new_aux("rot")
     t.emit(f"point {r} = rotate {t.p(p)} {t.p(v)} {int(deg)}")
-    return t.keyed_locus(("sangle", p, v, deg), f"join {t.p(v)} {r}", v, "s_angle", ray=True)
+    return t.keyed_locus(("sangle", p, v, deg), f"join {t.p(v)} {r}", v, "s_angle", head=r)
 
 
 @_construction("midpoint", 3)
@@ -1145,6 +1175,19 @@ class _Numeric:
 
     def _op(self, op: str, a: list[Any]) -> Any:
         return _NUMERIC_OPS[op](*a)
+
+    def on_ray(self, name: str, line: str, circle: str, tail: str, head: str) -> bool:
+        """The common point of the ray from ``tail`` through ``head`` (on ``line``) and the circle, as AlphaGeometry
+        takes it (not the tail itself); True when both common points lie on the ray (then AlphaGeometry takes one
+        by the order of its own computation)."""
+        one, two = (self._expr(_TOKENS.findall(e), 0)[0] for e in (line, circle))
+        t, h = self.values[tail], self._arg(_TOKENS.findall(head), 0)[0]
+        scale = 1 + abs(h - t)
+        on = [p for p in _meet(one, two) if abs(p - t) > 1e-9 * scale and ((p - t) * (h - t).conjugate()).real > 0]
+        if not on:
+            raise _NoFigure  # the ray misses the circle: AlphaGeometry draws again
+        self.values[name] = on[0]
+        return len(on) == 2
 
     # -- the check ----------------------------------------------------------------------------------------
     def common(self, one: str, two: str, known: list[str], t: _Translator) -> list[str]:
