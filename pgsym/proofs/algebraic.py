@@ -340,7 +340,6 @@ def prove_algebraic(claim: Claim, timeout: float | None = 10.0, seed: int = 0, i
     start = time.perf_counter()
     deadline = Deadline(timeout)
     roots = roots_of(claim)
-    rootsyms = {r.symbol for r in roots}
     base = dict(name=claim.name, title=claim.title, statement=claim.statement, expected=claim.expected,
                 constructions=[(n.name, n.kind, n.description) for k, n in claim.nodes.items()
                                if not k.startswith("_")],
@@ -365,18 +364,8 @@ def prove_algebraic(claim: Claim, timeout: float | None = 10.0, seed: int = 0, i
     try:
         with alarm(timeout):
             norm, _why = normalise(claim)
-            sub = norm.substitution if norm is not None else {}
-            params = [p for p in claim.parameters if p not in rootsyms and p not in sub]
-            tower = _Tower(claim, params, backend)
+            norm, tower, values = _framed_values(claim, norm, deadline, backend)
             R = tower.R
-            cache: dict[Any, Any] = {}
-
-            def conv(e: Any) -> Any:
-                if e not in cache:
-                    cache[e] = R(sympy.sympify(e).xreplace(sub) if sub else e)
-                return cache[e]
-
-            values = _evaluate(claim, conv, tower, deadline, estimate=True)
             reqs = _requirements(claim, values)
             conditions = []
             for text, polys in reqs:
@@ -429,6 +418,54 @@ def prove_algebraic(claim: Claim, timeout: float | None = 10.0, seed: int = 0, i
         return done(Status.UNKNOWN, reason=f"timed out after {timeout} s while {stage}", branches="no decision")
     except PgsymError as err:
         return done(Status.UNKNOWN, reason=f"the exact evaluation could not decide: {err}", branches="no decision")
+
+
+def _framed_values(claim: Claim, norm: Any, deadline: Any, backend: str | None) -> tuple[Any, _Tower, dict]:
+    """The tower and the values of every object in the frame ``norm`` (None: the claim's own coordinates) — or in
+    the claim's own coordinates when the frame breaks a formula (:func:`_frame_breaks`)."""
+    rootsyms = {r.symbol for r in roots_of(claim)}
+    while True:
+        sub = norm.substitution if norm is not None else {}
+        params = [p for p in claim.parameters if p not in rootsyms and p not in sub]
+        tower = _Tower(claim, params, backend)
+        R = tower.R
+        cache: dict[Any, Any] = {}
+
+        def conv(e: Any, R: Any = R, sub: Any = sub, cache: Any = cache) -> Any:
+            if e not in cache:
+                cache[e] = R(sympy.sympify(e).xreplace(sub) if sub else e)
+            return cache[e]
+
+        values = _evaluate(claim, conv, tower, deadline, estimate=True)
+        if norm is None or not _frame_breaks(claim, values, tower):
+            return norm, tower, values
+        norm = None
+
+
+def _frame_breaks(claim: Claim, values: dict[Node, Any], tower: _Tower) -> bool:
+    """Whether a common point of a line and a conic is the zero vector on one branch in these coordinates.
+
+    Its formula ``(−β ± e)·P + α·Q`` starts from the foot P of the origin on the line; when P lies on the conic (the
+    frame put a point of both at the origin, e.g. A = (0, 0) on the line AB and the circle through A), α = 0 and one
+    branch collapses to 0 while the other is P: the second common point would be lost, and a claim about it
+    'proved' of P. Detected as the discriminant being a square s² with the point's coordinates 0 at e = ±s."""
+    R = tower.R
+    rootsyms = {r.symbol for r in roots_of(claim)}
+    gens = [g for g in R.symbols if g not in rootsyms]
+    for r in roots_of(claim):
+        if r.kind != "intersection":
+            continue
+        s = _rational_root(R.to_expr(tower.reduce(r.square(values))), gens)
+        if s is None:
+            continue
+        for node in claim.nodes.values():
+            if node.kind != "point" or r.node not in node.args:
+                continue
+            coords = [R.to_expr(tower.reduce(c)) if not isinstance(c, int) else sympy.Integer(c)
+                      for c in flat(values[node])]
+            if any(all(sympy.expand(c.xreplace({r.symbol: sign * s})) == 0 for c in coords) for sign in (1, -1)):
+                return True
+    return False
 
 
 def _evidently_positive(e: sympy.Expr, gens: Sequence[sympy.Symbol]) -> bool:
@@ -726,12 +763,9 @@ def _selected_branch_proof(claim: Claim, deadline: Any, backend: str | None
     norm, _why = normalise(claim)
     if norm is not None and norm.group not in ("similarity", "euclidean"):
         norm = None  # the order conditions are kept by similarities, not by affine maps or homographies
-    sub = norm.substitution if norm is not None else {}
-    params = [p for p in claim.parameters if p not in {r.symbol for r in roots} and p not in sub]
-    tower = _Tower(claim, params, backend)
+    norm, tower, values = _framed_values(claim, norm, deadline, backend)
     R = tower.R
-    values = _evaluate(claim, lambda x: R(sympy.sympify(x).xreplace(sub) if sub else x), tower, deadline,
-                       estimate=True)
+    params = [g for g in R.symbols if g not in {r.symbol for r in roots}]
     others = {r.symbol for r in roots} - {e}
     conditions = []
     for text, polys in _requirements(claim, values):
