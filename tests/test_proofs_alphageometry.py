@@ -27,6 +27,7 @@ from pgsym.proofs.alphageometry import (
     solve,
     translate,
 )
+from pgsym.proofs.engine import prove
 from pgsym.proofs.errors import AlphaGeometryError, StatementError, UnsupportedConstructionError
 from pgsym.proofs.language import parse_statement
 
@@ -352,10 +353,34 @@ def test_a_known_common_point_gives_the_other_point_not_either():
     assert "intersection" in text
 
 
-def test_a_ray_meeting_a_circle_needs_a_branch_condition():
-    with pytest.raises(UnsupportedConstructionError, match=r"angle_mirror.*needs a branch condition") as err:
+def test_a_ray_meeting_a_circle_twice_needs_a_branch_condition():
+    # the ray from b may meet a circle of free centre o twice; AlphaGeometry then takes one by its own order
+    with pytest.raises(UnsupportedConstructionError, match=r"angle_mirror.*needs a branch condition.*twice") as err:
         translate("a b c = triangle a b c; o = free o; x = angle_mirror x a b c, on_circle x o a ? coll a b x")
     assert err.value.construction == "angle_mirror"
+
+
+def test_a_ray_from_the_centre_meets_its_circle_at_the_point_on_the_ray():
+    # x on the mirror of the ray ba in the line bc, at distance |ba| from b: x is a reflected in bc, so |xc| = |ac|;
+    # the other common point, 2b − x, is not (AlphaGeometry's half-line excludes it): an order condition
+    problem = "a b c = triangle a b c; x = angle_mirror x a b c, on_circle x b a ? cong x c a c"
+    text = translate(problem)
+    assert "point x = intersection" in text and "where onray x b (reflect a (join b c))" in text
+    [p] = read_alphageometry("ray\n" + problem)
+    outcome = solve(p, timeout=60)
+    assert outcome.status == "proved", outcome.verdict.reason
+    assert "the order conditions select" in outcome.verdict.branches
+    # without the condition the claim is false: the mirror point 2b − x is at another distance from c
+    assert prove(parse_statement(text.replace("where onray x b (reflect a (join b c))\n", ""))).status == "false"
+
+
+def test_a_goal_true_in_part_of_the_figures_is_not_refuted():
+    # internal bisectors of ∠afc and ∠agb for e on the circumcircle: perpendicular for e on one arc only, which
+    # AlphaGeometry's figure (drawn until the goal holds) selects; the problem states no order condition for it
+    problems = [p for p in read_alphageometry_file(DATA / "jgex_ag_231.txt") if p.name.endswith("ex160_204.gex")]
+    outcome = solve(problems[0], timeout=60)
+    assert outcome.status == "unsupported" and "part of the figures only" in outcome.message
+    assert outcome.verdict.status == "false"  # the exact counterexample behind the refusal
 
 
 @pytest.mark.parametrize("word", ["trisect x y a b c", "on_aline x a b c d e"])

@@ -14,9 +14,14 @@ numerically: a point already in the figure is avoided, otherwise either is taken
 * when a point defined earlier lies on both loci *by construction* (tracked here: the points known on each
   line and circle), the new point is the other one, which is rational: ``reflect P (foot O l)`` for a line
   l and a circle of centre O through P, ``reflect P (join O O')`` for two circles;
-* otherwise either point is meant, which is pgsym's ``intersection`` (a conclusion must hold for both);
-* a choice pgsym cannot name (a ray meeting a circle picks the point on the ray) is refused with
-  :class:`~pgsym.proofs.errors.UnsupportedConstructionError` ("needs a branch condition"), never guessed.
+* a ray (``angle_mirror``, ``s_angle``) meets a circle at its point on the ray, not the ray's origin (AlphaGeometry's
+  half-line): an order condition of the figure, written ``where onray X V P``; a ray that meets its circle twice
+  in some random figure is refused (AlphaGeometry then takes one by the order of its own computation);
+* otherwise either point is meant, which is pgsym's ``intersection`` (a conclusion must hold for both). When the
+  goal holds for one of them only, the problem is ambiguous — AlphaGeometry takes either point at random and
+  draws its figure again until the goal holds, so no order condition of its figure selects the point — and it is
+  refused with :class:`~pgsym.proofs.errors.UnsupportedConstructionError` ("needs a branch condition"), never
+  guessed.
 
 The tracked incidences are exact but incomplete, so the translator also draws the figure in floats (at
 random, as AlphaGeometry does) while it writes the statement: an earlier point found on both loci gives the
@@ -24,7 +29,9 @@ other common point too. The goal is then evaluated in a few random figures, on e
 common points and with the shapes AlphaGeometry mirrors at random (``isquare``, ``risos``,
 ``ieq_triangle``) mirrored: a goal that holds on some choices only needs a branch condition, one that holds
 in some figures only a condition on the figure; both are refused rather than translated into a statement
-pgsym would refute.
+pgsym would refute. A goal that held in every random figure but that the engine refutes exactly holds in part
+of the figures only (AlphaGeometry's figure is drawn until the goal holds): :func:`solve` reports it
+unsupported with that reason, not refuted.
 
 Goals: ``coll para perp cong cyclic eqangle eqratio midp simtri contri``. Constructions pgsym cannot
 express are refused with the same error, naming the construction.
