@@ -59,6 +59,7 @@ import math
 import random
 import time
 from collections.abc import Callable, Sequence
+from contextlib import closing
 from dataclasses import dataclass
 from fractions import Fraction
 from functools import partial
@@ -932,16 +933,23 @@ def _ordered_instances(claim: Claim, rng: random.Random, deadline: Any, tries: i
 
 
 def _ordered_witness(claim: Claim, rng: random.Random, deadline: Any) -> str | None:
-    for point, _tower, _values, chosen in _ordered_instances(claim, rng, deadline, 48):
-        if chosen:
-            return ", ".join(f"{s} = {v}" for s, v in point.items()) or "every instance"
+    with closing(_ordered_instances(claim, rng, deadline, 48)) as instances:  # closed now, not when collected
+        for point, _tower, _values, chosen in instances:
+            if chosen:
+                return ", ".join(f"{s} = {v}" for s, v in point.items()) or "every instance"
     return None
 
 
 def _sample_ordered(claim: Claim, rng: random.Random, instances: int, deadline: Any, done: Callable[..., Any],
                     why: str, words: str) -> Any:
+    with closing(_ordered_instances(claim, rng, deadline, 24 * instances)) as found:
+        return _first_failure(claim, found, instances, deadline, done, why, words)
+
+
+def _first_failure(claim: Claim, found: Any, instances: int, deadline: Any, done: Callable[..., Any], why: str,
+                   words: str) -> Any:
     seen = 0
-    for point, tower, values, chosen in _ordered_instances(claim, rng, deadline, 24 * instances):
+    for point, tower, values, chosen in found:
         if not chosen:
             continue
         reqs = _requirements(claim, values)

@@ -56,10 +56,6 @@ def _area(a: Sequence[Any], b: Sequence[Any], p: Sequence[Any]) -> Any:
     return alg.dot(alg.cross(a, b), p) * a[2] * b[2] * p[2]
 
 
-def _dot(u: Sequence[Any], v: Sequence[Any]) -> Any:
-    return u[0] * v[0] + u[1] * v[1]
-
-
 def _same(p: Any, q: Any, a: Any, b: Any) -> Any:
     return _area(a, b, p) * _area(a, b, q)
 
@@ -68,8 +64,8 @@ _VALUES: dict[str, Callable[..., list[Any]]] = {
     "sameside": lambda p, q, a, b: [_same(p, q, a, b)],
     "oppositeside": lambda p, q, a, b: [-_same(p, q, a, b)],
     # w_A w_X (X − A) · w_X w_B (B − X) has the sign of (X − A)·(B − X) times w_A w_B
-    "between": lambda x, a, b: [_dot(affine_vector(a, x), affine_vector(x, b)) * a[2] * b[2]],
-    "onray": lambda x, v, p: [_dot(affine_vector(v, x), affine_vector(v, p)) * x[2] * p[2]],
+    "between": lambda x, a, b: [alg.dot(affine_vector(a, x), affine_vector(x, b)) * a[2] * b[2]],
+    "onray": lambda x, v, p: [alg.dot(affine_vector(v, x), affine_vector(v, p)) * x[2] * p[2]],
     "inside": lambda x, a, b, c: [_same(x, a, b, c), _same(x, b, c, a), _same(x, c, a, b)],
 }
 
