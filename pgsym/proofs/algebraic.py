@@ -797,6 +797,8 @@ def _selected_branch_proof(claim: Claim, deadline: Any, backend: str | None
              + "; ".join(t for t, _, _ in conds)]
     if norm is not None:
         lines.append(norm.describe() + " (similarities keep every order condition)")
+        if norm.condition:
+            conditions.append(Condition(f"{norm.condition} (frame)"))
     for label, poly in conclusion_polys(claim, values):
         deadline.check("the conclusion on the selected branch")
         g0, g1 = split(poly)
