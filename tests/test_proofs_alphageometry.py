@@ -10,6 +10,7 @@ either common point of a line and a circle at random, the figure is built for bo
 from __future__ import annotations
 
 import cmath
+import dataclasses
 import itertools
 import math
 import random
@@ -490,10 +491,33 @@ def test_two_touching_circles_meet_in_their_double_point():
     assert text.splitlines()[-2:] == ["point t = intersection (circle i x) (circle j p)", "prove collinear t i j"]
 
 
-def test_a_ray_meeting_a_circle_needs_a_branch_condition():
-    with pytest.raises(UnsupportedConstructionError, match=r"angle_mirror.*needs a branch condition") as err:
+def test_a_ray_meeting_a_circle_twice_needs_a_branch_condition():
+    # the ray from b may meet a circle of free centre o twice; AlphaGeometry then takes one by its own order
+    with pytest.raises(UnsupportedConstructionError, match=r"angle_mirror.*needs a branch condition.*twice") as err:
         translate("a b c = triangle a b c; o = free o; x = angle_mirror x a b c, on_circle x o a ? coll a b x")
     assert err.value.construction == "angle_mirror"
+
+
+def test_a_ray_from_the_centre_meets_its_circle_at_the_point_on_the_ray():
+    # x on the mirror of the ray ba in the line bc, at distance |ba| from b: x is a reflected in bc (rational, no
+    # order condition needed), so |xc| = |ac|; the other common point of the line, 2b − x, is not on the ray
+    problem = "a b c = triangle a b c; x = angle_mirror x a b c, on_circle x b a ? cong x c a c"
+    text = translate(problem)
+    assert "point x = reflect a (join b c)" in text and "intersection" not in text
+    [p] = read_alphageometry("ray\n" + problem)
+    assert solve(p, timeout=60).status == "proved"
+
+
+def test_a_goal_that_held_in_every_figure_but_fails_exactly_is_unsupported_not_refuted():
+    # AlphaGeometry draws its figure again until the goal holds: when the float figures all satisfied the goal but
+    # the engine refutes it exactly, the goal holds in part of the figures only. A false goal (ab ⟂ ac in a free
+    # triangle) stands for such a problem here, marked as having held in every figure.
+    [p] = read_alphageometry("part\na b c = triangle a b c ? perp a b a c")
+    assert not p.held
+    outcome = solve(dataclasses.replace(p, held=True), timeout=60)
+    assert outcome.status == "unsupported" and "part of the figures only" in outcome.message
+    assert outcome.verdict.status == "false"  # the exact counterexample behind the refusal
+    assert solve(p, timeout=60).status == "refuted"
 
 
 @pytest.mark.parametrize("word", ["trisect x y a b c", "cc_tangent0 x y a b c d"])

@@ -74,6 +74,14 @@ each verdict covers):
     conic K = circle A B C
     point P on circle K
     prove collinear (foot P (join B C)) (foot P (join C A)) (foot P (join A B))
+
+\b
+Order conditions pick the branch an olympiad statement means (strict; each
+'where' line must hold; the verdict covers only what they select):
+    points A B
+    point X = intersection (join A B) (circle A B)   # B or its mirror in A
+    where onray X A B            # also: sameside P Q A B, oppositeside P Q A B,
+    prove equal X B              #   between X A B, inside X A B C
 """
 
 _AG_EXAMPLE = """\b

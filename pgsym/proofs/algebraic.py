@@ -53,11 +53,13 @@ one-branch statements need a reducible tower, which is exactly what the rational
 
 from __future__ import annotations
 
+import copy
 import itertools
 import math
 import random
 import time
 from collections.abc import Callable, Sequence
+from contextlib import closing
 from dataclasses import dataclass
 from fractions import Fraction
 from functools import partial
@@ -75,6 +77,7 @@ from .claims import Claim, Node
 from .evaluation import claim_rng, conclusion_polys, evaluate, nonzero_requirements, objects_to_check
 from .normalisation import normalise
 from .operations import flat
+from .order import condition_values
 from .polynomials import PolynomialRing, default_backend
 from .square_roots import MAX_POLYGON, MAX_ROOTS, Root, SquareRootConstructions, _data, roots_of
 from .verdicts import Certificate, Condition, Counterexample, Status, Verdict
@@ -91,7 +94,9 @@ __all__ = [
     "line_conic_intersections",
     "polygon_vertex",
     "prove_algebraic",
+    "prove_ordered",
     "recheck_branch",
+    "recheck_ordered",
     "roots_of",
     "rotate_degrees",
     "tangent_from",
@@ -340,7 +345,6 @@ def prove_algebraic(claim: Claim, timeout: float | None = 10.0, seed: int = 0, i
     start = time.perf_counter()
     deadline = Deadline(timeout)
     roots = roots_of(claim)
-    rootsyms = {r.symbol for r in roots}
     base = dict(name=claim.name, title=claim.title, statement=claim.statement, expected=claim.expected,
                 constructions=[(n.name, n.kind, n.description) for k, n in claim.nodes.items()
                                if not k.startswith("_")],
@@ -365,20 +369,13 @@ def prove_algebraic(claim: Claim, timeout: float | None = 10.0, seed: int = 0, i
     try:
         with alarm(timeout):
             norm, _why = normalise(claim)
-            sub = norm.substitution if norm is not None else {}
-            params = [p for p in claim.parameters if p not in rootsyms and p not in sub]
-            tower = _Tower(claim, params, backend)
-            R = tower.R
-            cache: dict[Any, Any] = {}
-
-            def conv(e: Any) -> Any:
-                if e not in cache:
-                    cache[e] = R(sympy.sympify(e).xreplace(sub) if sub else e)
-                return cache[e]
-
             try:
-                values = _evaluate(claim, conv, tower, deadline, estimate=True)
+                norm, tower, values = _framed_values(claim, norm, deadline, backend)
             except TooLarge as err:  # too large to expand: the same membership decided by exact evaluation on a grid
+                if norm is not None and any(r.kind == "intersection" for r in roots):
+                    # whether the frame collapses a branch (_frame_breaks) shows only in the values: own coordinates
+                    norm = None
+                sub = norm.substitution if norm is not None else {}
                 found = identity_by_evaluation(claim, sub, deadline, err.args[0], partial(_Tower, claim,
                                                backend=backend), backend)
                 if found.outcome == "nonzero":
@@ -389,8 +386,9 @@ def prove_algebraic(claim: Claim, timeout: float | None = 10.0, seed: int = 0, i
                                 "grid its degree bound makes conclusive)", branches="no decision")
                 conditions = [Condition(t) for t in found.conditions] + (
                     [Condition(f"{norm.condition} (frame)")] if norm is not None and norm.condition else [])
-                return proved(found.certificate(found.where, "" if norm is None else norm.describe(), R.backend),
-                              _every_root(roots))
+                return proved(found.certificate(found.where, "" if norm is None else norm.describe(),
+                                                backend or default_backend()), _every_root(roots))
+            R = tower.R
             reqs = _requirements(claim, values)
             conditions = []
             for text, polys in reqs:
@@ -443,6 +441,54 @@ def prove_algebraic(claim: Claim, timeout: float | None = 10.0, seed: int = 0, i
         return done(Status.UNKNOWN, reason=f"timed out after {timeout} s while {stage}", branches="no decision")
     except PgsymError as err:
         return done(Status.UNKNOWN, reason=f"the exact evaluation could not decide: {err}", branches="no decision")
+
+
+def _framed_values(claim: Claim, norm: Any, deadline: Any, backend: str | None) -> tuple[Any, _Tower, dict]:
+    """The tower and the values of every object in the frame ``norm`` (None: the claim's own coordinates) — or in
+    the claim's own coordinates when the frame breaks a formula (:func:`_frame_breaks`)."""
+    rootsyms = {r.symbol for r in roots_of(claim)}
+    while True:
+        sub = norm.substitution if norm is not None else {}
+        params = [p for p in claim.parameters if p not in rootsyms and p not in sub]
+        tower = _Tower(claim, params, backend)
+        R = tower.R
+        cache: dict[Any, Any] = {}
+
+        def conv(e: Any, R: Any = R, sub: Any = sub, cache: Any = cache) -> Any:
+            if e not in cache:
+                cache[e] = R(sympy.sympify(e).xreplace(sub) if sub else e)
+            return cache[e]
+
+        values = _evaluate(claim, conv, tower, deadline, estimate=True)
+        if norm is None or not _frame_breaks(claim, values, tower):
+            return norm, tower, values
+        norm = None
+
+
+def _frame_breaks(claim: Claim, values: dict[Node, Any], tower: _Tower) -> bool:
+    """Whether a common point of a line and a conic is the zero vector on one branch in these coordinates.
+
+    Its formula ``(−β ± e)·P + α·Q`` starts from the foot P of the origin on the line; when P lies on the conic (the
+    frame put a point of both at the origin, e.g. A = (0, 0) on the line AB and the circle through A), α = 0 and one
+    branch collapses to 0 while the other is P: the second common point would be lost, and a claim about it
+    'proved' of P. Detected as the discriminant being a square s² with the point's coordinates 0 at e = ±s."""
+    R = tower.R
+    rootsyms = {r.symbol for r in roots_of(claim)}
+    gens = [g for g in R.symbols if g not in rootsyms]
+    for r in roots_of(claim):
+        if r.kind != "intersection":
+            continue
+        s = _rational_root(R.to_expr(tower.reduce(r.square(values))), gens)
+        if s is None:
+            continue
+        for node in claim.nodes.values():
+            if node.kind != "point" or r.node not in node.args:
+                continue
+            coords = [R.to_expr(tower.reduce(c)) if not isinstance(c, int) else sympy.Integer(c)
+                      for c in flat(values[node])]
+            if any(all(sympy.expand(c.xreplace({r.symbol: sign * s})) == 0 for c in coords) for sign in (1, -1)):
+                return True
+    return False
 
 
 def _evidently_positive(e: sympy.Expr, gens: Sequence[sympy.Symbol]) -> bool:
@@ -629,3 +675,332 @@ tangent_from = SquareRootConstructions.tangent_from
 tangents_from = SquareRootConstructions.tangents_from
 rotate_degrees = SquareRootConstructions.rotate_degrees
 polygon_vertex = SquareRootConstructions.polygon_vertex
+
+
+# -- order conditions: the branch (or region) they select ------------------------------------------------------
+
+def _selected(claim: Claim, tower: _Tower, values: dict[Node, Any], branch: _Branch) -> bool:
+    """Whether the order conditions hold (each polynomial > 0, decided exactly) on this branch of an instance."""
+    for _text, poly in condition_values(claim, values):
+        if exact_sign(_sympy_value(tower.R, tower.reduce(poly), branch.values)) <= 0:
+            return False
+    return True
+
+
+def recheck_ordered(claim: Claim, values: dict[str, Any], branch: dict[str, str]) -> bool:
+    """:func:`recheck_branch`, and the order conditions hold there (exact arithmetic throughout).
+
+    >>> c = Claim("x", "x")
+    >>> A, B, X = c.point("A", 0, 0), c.point("B", 4, 0), c.point("X", 1, 0)
+    >>> _ = c.where_between(X, A, B)
+    >>> c.conclude_proportional(X, A)
+    >>> recheck_ordered(c, {}, {})        # X = (1, 0) lies between A and B, and X ≠ A
+    True
+    """
+    if not recheck_branch(claim, values, branch):
+        return False
+    roots = {str(r.symbol): r for r in roots_of(claim)}
+    point = {p: sympy.Rational(values[str(p)]) for p in claim.parameters if str(p) not in roots}
+    tower = _Tower(claim, [])
+    vals = _evaluate(claim, lambda e: tower.R(sympy.sympify(e).xreplace(point)), tower, Deadline(None))
+    sub = {roots[k].symbol: sympy.sympify(v) for k, v in branch.items()}
+    return _selected(claim, tower, vals, _Branch({}, sub, True, ""))
+
+
+_MAX_FACTOR_TERMS = 2000
+"""The largest polynomial whose sign is looked for by factoring (a larger one is left undecided)."""
+
+
+def _signed_factors(expr: sympy.Expr, gens: Sequence[sympy.Symbol], known: dict[sympy.Expr, int]) -> int | None:
+    """The sign that ``expr`` has wherever it is not zero, when its factors show it: even powers, factors with
+    even exponents and coefficients of one sign, factors whose sign an order condition fixes (``known``); else
+    None."""
+    if expr == 0:
+        return 0
+    s = _evident_sign(expr, gens)
+    if s is not None:
+        return s
+    if len(sympy.Add.make_args(expr)) > _MAX_FACTOR_TERMS:
+        return None
+    coeff, factors = sympy.factor_list(expr, *gens) if gens else (expr, [])
+    total = 1 if coeff > 0 else -1
+    for f, k in factors:
+        if k % 2 == 0:
+            continue
+        s = _evident_sign(f, gens)
+        if s is None:
+            s = known.get(sympy.expand(f))
+            if s is None and sympy.expand(-f) in known:
+                s = -known[sympy.expand(-f)]
+        if s is None:
+            return None
+        total *= s
+    return total
+
+
+def _evident_sign(f: sympy.Expr, gens: Sequence[sympy.Symbol]) -> int | None:
+    if _evidently_positive(f, gens):
+        return 1
+    if _evidently_positive(-f, gens):
+        return -1
+    return None
+
+
+def _known_signs(conditions: list[tuple[str, sympy.Expr]], gens: Sequence[sympy.Symbol]) -> dict[sympy.Expr, int]:
+    """The signs that the root-free order conditions give to single factors: p > 0 with one factor f of odd
+    multiplicity whose sign is not evident fixes the sign of f."""
+    known: dict[sympy.Expr, int] = {}
+    for _text, p in conditions:
+        if p == 0 or not gens:
+            continue
+        coeff, factors = sympy.factor_list(p, *gens)
+        odd = [f for f, k in factors if k % 2 and _evident_sign(f, gens) is None]
+        if len(odd) != 1:
+            continue
+        rest = 1 if coeff > 0 else -1
+        for f, k in factors:
+            if k % 2 and f is not odd[0]:
+                rest *= _evident_sign(f, gens) or 1
+        known[sympy.expand(odd[0])] = rest
+    return known
+
+
+def _selected_branch_proof(claim: Claim, deadline: Any, backend: str | None
+                           ) -> tuple[list[str], list[Condition], str] | str:
+    """Prove the conclusion on the branch the order conditions select, for one intersection root e (e² = Δ).
+
+    Each conclusion polynomial reduces to g = g₀ + g₁e. (1) Its norm over the two branches, g₀² − g₁²Δ, is 0
+    modulo the defining equations: at every point one of the two common points satisfies the conclusion. (2) For
+    an order condition c = c₀ + c₁e > 0, T = g₁e·(c₀·g₁e + c₁e·g₀) = Δ·g₁(c₀g₁ + c₁g₀) is root-free; where the
+    conclusion fails on a branch, it holds on the other, so g₁e = g₀ there and c = (c₀g₁ + c₁g₀)/g₁ has the sign
+    of T. When T ≤ 0 wherever it is defined (its factors show it), the condition excludes every branch where
+    the conclusion fails. Returns the certificate's lines, the non-degeneracy conditions and the branch words, or
+    why it does not apply."""
+    roots = roots_of(claim)
+    free = [r for r in roots if not r.named]
+    if len(free) != 1 or free[0].kind == "unity":
+        return ("the exact selection handles one intersection root; the claim has "
+                f"{len(free)} roots whose branch the statement leaves open")
+    root = free[0]
+    e = root.symbol
+    norm, _why = normalise(claim)
+    if norm is not None and norm.group not in ("similarity", "euclidean"):
+        norm = None  # the order conditions are kept by similarities, not by affine maps or homographies
+    norm, tower, values = _framed_values(claim, norm, deadline, backend)
+    R = tower.R
+    params = [g for g in R.symbols if g not in {r.symbol for r in roots}]
+    others = {r.symbol for r in roots} - {e}
+    conditions = []
+    for text, polys in _requirements(claim, values):
+        if all(p == 0 for p in polys):
+            return f"the condition {text} fails identically"
+        if not text.endswith("is not the zero vector"):
+            conditions.append(Condition(text, raw=[p for p in polys if p != 0][:3]))
+
+    def split(p: Any) -> tuple[Any, Any]:  # p = p₀ + p₁·e modulo the defining equations, in the ring
+        x = R.to_expr(tower.reduce(p))
+        return R(x.coeff(e, 0)), R(x.coeff(e, 1))
+
+    def reduced(x: Any) -> sympy.Expr:  # modulo the defining equations (the other roots' too), as an expression
+        return sympy.expand(R.to_expr(tower.reduce(x)))
+
+    delta = tower.reduce(root.square(values))
+    at = [i for i, x in enumerate(R.symbols) if x in others]
+
+    def involves_others(p: Any) -> bool:
+        return not isinstance(p, int) and any(m[i] for m, _ in R.terms(p) for i in at)
+    conds = []
+    for text, poly in condition_values(claim, values):
+        deadline.check("splitting the order conditions by branch")
+        conds.append((text, *split(poly)))
+    known = _known_signs([(t, x) for t, c0, c1 in conds if c1 == 0
+                          for x in [reduced(c0)] if not x.free_symbols & others], params)
+    lines = [f"{e}² = Δ (the branches ±{e}); the order conditions, each > 0: "
+             + "; ".join(t for t, _, _ in conds)]
+    if norm is not None:
+        lines.append(norm.describe() + " (similarities keep every order condition)")
+        if norm.condition:
+            conditions.append(Condition(f"{norm.condition} (frame)"))
+    for label, poly in conclusion_polys(claim, values):
+        deadline.check("the conclusion on the selected branch")
+        g0, g1 = split(poly)
+        if g1 == 0 and g0 == 0:
+            lines.append(f"{label} reduces to 0 modulo the defining equations (on both branches)")
+            continue
+        if g1 == 0:
+            return f"{label} does not depend on the branch of {e}, and it is not in the ideal"
+        if tower.reduce(g0 * g0 - g1 * g1 * delta) != 0:
+            return f"the norm of {label} over the two branches of {e} is not 0: it fails on both somewhere"
+        for text, c0, c1 in conds:
+            if c1 == 0:
+                continue
+            t = tower.reduce(g1 * (c0 * g1 + c1 * g0))
+            if involves_others(t):  # times Δ ≥ 0 (a real branch), the other roots may cancel
+                t = tower.reduce(t * delta)
+            if involves_others(t) or R.nterms(t) > _MAX_FACTOR_TERMS:
+                continue  # its sign would depend on the other roots' values, or it is too large to factor
+            s = _signed_factors(reduced(t), params, known)
+            if s is not None and s <= 0:
+                why = ("it is 0" if s == 0 else "its factors are squares and factors of one sign"
+                       + (" (some fixed by the order conditions without roots)" if known else ""))
+                lines.append(f"{label} = g₀ + g₁·{e}: the norm g₀² − g₁²·Δ reduces to 0 (one branch satisfies it at "
+                             f"every point); on a branch where it fails, '{text}' has the sign of "
+                             f"T = g₁·(c₀g₁ + c₁g₀) (or Δ·T, Δ ≥ 0), and it is ≤ 0 everywhere ({why}): the condition "
+                             "excludes that branch")
+                break
+        else:
+            return (f"no order condition's sign on the failing branch of {label} is fixed by its factors (a "
+                    "condition selects the branch only where a polynomial keeps its sign)")
+    return lines, conditions, f"the sign of {e} at which they hold"
+
+
+def prove_ordered(claim: Claim, plain: Callable[[Claim], Any], timeout: float | None = 10.0, seed: int = 0,
+                  instances: int = 4, backend: str | None = None) -> Any:
+    """Decide a claim with order conditions (called by :func:`pgsym.proofs.engine.prove`): the conclusion must hold
+    on every branch and at every real point the conditions select.
+
+    ``plain`` proves the claim without its conditions. Proved without them: proved (the conditions only narrow the
+    claim), once a random instance shows they can hold together. Otherwise: the exact selection of
+    :func:`_selected_branch_proof` (one intersection root), else exact evaluation at random rational instances on
+    every branch the conditions select — false with a counterexample there, unknown when it holds at every instance
+    tried. A branch the conditions exclude never refutes the claim.
+
+    >>> c = Claim("ray", "the point of the line AB at distance |AB| from A on the ray AB is B")
+    >>> A, B = c.free_point("A"), c.free_point("B")
+    >>> X = c.line_conic_intersection("X", c.join("l", A, B), c.circle("K", A, B))
+    >>> _ = c.where_on_ray(X, A, B)
+    >>> c.conclude_proportional(X, B)
+    >>> from pgsym.proofs.engine import prove
+    >>> v = prove(c)
+    >>> v.status, v.branches.split(":")[0]
+    ('proved', 'proved on the branch the order conditions select')
+    """
+    start = time.perf_counter()
+    deadline = Deadline(timeout)
+    unordered = copy.copy(claim)
+    unordered.order_conditions = []
+    verdict = plain(unordered)
+    words = "; ".join(w.text for w in claim.order_conditions)
+    verdict.hypotheses = [*verdict.hypotheses, *(f"order condition: {w.text}" for w in claim.order_conditions)]
+
+    def done(status: Any, **kw: Any) -> Any:
+        if status != Status.FALSE:
+            kw.setdefault("counterexample", None)
+        if status != Status.PROVED:
+            kw.setdefault("certificate", None)
+        for k, v in kw.items():
+            setattr(verdict, k, v)
+        verdict.status = Status(status)
+        verdict.elapsed = time.perf_counter() - start
+        return verdict
+
+    if verdict.status == Status.DEGENERATE:
+        return done(Status.DEGENERATE)
+    if claim.hypotheses:
+        return done(Status.UNKNOWN, reason="order conditions together with equation hypotheses are not supported",
+                    certificate=None, counterexample=None, branches="no decision")
+    rng = claim_rng(claim, seed)
+    try:
+        with alarm(None if timeout is None else max(timeout - (time.perf_counter() - start), 0.5)):
+            if verdict.status == Status.PROVED:
+                witness = _ordered_witness(claim, rng, deadline)
+                if witness is None:
+                    return done(Status.UNKNOWN, certificate=None, branches="no decision",
+                                reason=f"proved without the order conditions, but no random instance satisfies them "
+                                       f"({words}): they may contradict each other, and a claim about no figure is "
+                                       "not proved")
+                return done(Status.PROVED, branches=(verdict.branches + "; " if verdict.branches else "")
+                            + f"the order conditions ({words}) are not needed; they hold e.g. at {witness}")
+            if verdict.status == Status.UNKNOWN and verdict.reason.startswith(("timed out", "the expansion is too")):
+                return done(Status.UNKNOWN)
+            why = "the claim has no square roots"
+            if roots_of(claim):
+                found = _selected_branch_proof(claim, deadline, backend)
+                if not isinstance(found, str):
+                    lines, conditions, branch = found
+                    witness = _ordered_witness(claim, rng, deadline)
+                    if witness is not None:
+                        certificate = Certificate("the norm over the conjugate branches is 0, and the order "
+                                                  "conditions select the branch where the conclusion vanishes",
+                                                  "ℚ[parameters, roots] modulo the defining equations", lines)
+                        core = _core_check(claim, rng, deadline)
+                        if not core.startswith("MISMATCH"):
+                            return done(Status.PROVED, certificate=certificate, method=certificate.method,
+                                        counterexample=None, reason="", core_check=core, conditions=conditions,
+                                        branches=f"proved on the branch the order conditions select: {branch} "
+                                                 f"({words}); they hold e.g. at {witness}")
+                    why = "no random instance satisfies the order conditions"
+                else:
+                    why = found
+            return _sample_ordered(claim, rng, instances, deadline, done, why, words)
+    except TooLarge as err:
+        return done(Status.UNKNOWN, reason=f"the expansion is too large: {err.args[0]}", branches="no decision")
+    except Timeout as err:
+        stage = err.args[0] if err.args else "working"
+        return done(Status.UNKNOWN, reason=f"timed out after {timeout} s while {stage}", branches="no decision")
+    except PgsymError as err:
+        return done(Status.UNKNOWN, reason=f"the exact evaluation could not decide: {err}", branches="no decision")
+
+
+def _ordered_instances(claim: Claim, rng: random.Random, deadline: Any, tries: int):
+    """Random rational instances and, on each, the real branches the order conditions (and the named roots)
+    select."""
+    for attempt in range(tries):
+        deadline.check("looking for instances where the order conditions hold")
+        point, tower, values = _instance(claim, rng, 3 + attempt // 4, deadline)
+        try:
+            chosen = [b for b in _branches(claim, tower, values, point)
+                      if b.named and _selected(claim, tower, values, b)]
+        except PgsymError:
+            continue
+        yield point, tower, values, chosen
+
+
+def _ordered_witness(claim: Claim, rng: random.Random, deadline: Any) -> str | None:
+    with closing(_ordered_instances(claim, rng, deadline, 48)) as instances:  # closed now, not when collected
+        for point, _tower, _values, chosen in instances:
+            if chosen:
+                return ", ".join(f"{s} = {v}" for s, v in point.items()) or "every instance"
+    return None
+
+
+def _sample_ordered(claim: Claim, rng: random.Random, instances: int, deadline: Any, done: Callable[..., Any],
+                    why: str, words: str) -> Any:
+    with closing(_ordered_instances(claim, rng, deadline, 24 * instances)) as found:
+        return _first_failure(claim, found, instances, deadline, done, why, words)
+
+
+def _first_failure(claim: Claim, found: Any, instances: int, deadline: Any, done: Callable[..., Any], why: str,
+                   words: str) -> Any:
+    seen = 0
+    for point, tower, values, chosen in found:
+        if not chosen:
+            continue
+        reqs = _requirements(claim, values)
+        results = [(b, _check_branch(claim, tower.R, values, reqs, b, deadline)) for b in chosen]
+        if any(kind == "degenerate" for _, (kind, _) in results):
+            continue
+        for b, (kind, residuals) in results:
+            if kind == "fails":
+                b.text = (b.text + _coordinates(claim, tower, values, b)) if roots_of(claim) else "no square roots"
+                at = {str(s): Fraction(int(v.p), int(v.q)) for s, v in point.items()}
+                roots = {str(s): str(v) for s, v in b.values.items()}
+                ce = Counterexample(at, residuals, claim, branch=roots,
+                                    check=partial(recheck_ordered, claim, at, roots))
+                return done(Status.FALSE, counterexample=ce, certificate=None,
+                            method="exact evaluation at a rational instance on each branch the order conditions "
+                                   "select",
+                            reason=f"the conclusion fails on a branch the order conditions select ({words}): "
+                                   f"{b.text}",
+                            branches=f"fails on the selected branch: {b.text}")
+        seen += 1
+        if seen >= instances:
+            break
+    if not seen:
+        return done(Status.UNKNOWN, certificate=None, counterexample=None, branches="no decision",
+                    reason=f"no random instance satisfies the order conditions ({words}); they may contradict "
+                           "each other")
+    return done(Status.UNKNOWN, certificate=None, counterexample=None,
+                reason=f"the conclusion holds on the branches the order conditions select ({words}) at {seen} random "
+                       f"instances, but it is not proved: {why}",
+                branches=f"holds on the selected branch at {seen} random instances; not proved")

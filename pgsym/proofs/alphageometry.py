@@ -14,13 +14,18 @@ numerically: a point already in the figure is avoided, otherwise either is taken
 * when a point defined earlier lies on both loci *by construction* (tracked here: the points known on each
   line and circle), the new point is the other one, which is rational: ``reflect P (foot O l)`` for a line
   l and a circle of centre O through P, ``reflect P (join O O')`` for two circles;
-* otherwise either point is meant, which is pgsym's ``intersection`` (a conclusion must hold for both);
-* two circles that touch in every figure meet in their double point, which ``intersection`` gives too (the
+* two circles that touch in every figure meet in their double point, which ``intersection`` gives (the
   discriminant vanishes, so both roots are that point);
-* a ray from the centre of a circle meets it at the ray's own point when that point is on the circle (an
-  angle turned or copied from a radius); any other choice pgsym cannot name (a ray meeting a circle picks
-  the point on the ray) is refused with :class:`~pgsym.proofs.errors.UnsupportedConstructionError` ("needs a
-  branch condition"), never guessed.
+* a ray (``angle_mirror``, ``s_angle``, ``on_aline``) from the centre of a circle meets it at the ray's own
+  point when that point is on the circle (an angle turned or copied from a radius); any other ray meets a
+  circle at its point on the ray, not the ray's origin (AlphaGeometry's half-line): an order condition of the
+  figure, written ``where onray X V P``; a ray that meets its circle twice in some random figure is refused
+  (AlphaGeometry then takes one by the order of its own computation);
+* otherwise either point is meant, which is pgsym's ``intersection`` (a conclusion must hold for both). When the
+  goal holds for one of them only, the problem is ambiguous — AlphaGeometry takes either point at random and
+  draws its figure again until the goal holds, so no order condition of its figure selects the point — and it is
+  refused with :class:`~pgsym.proofs.errors.UnsupportedConstructionError` ("needs a branch condition"), never
+  guessed.
 
 Two lines of a problem meet in the plane (AlphaGeometry's ``npara``), while pgsym's ``meet`` of parallel lines
 is their point at infinity: once a square root with two signs is in the statement, each meet is followed by a
@@ -35,7 +40,9 @@ other common point too. The goal is then evaluated in a few random figures, on e
 common points and with the shapes AlphaGeometry mirrors at random (``isquare``, ``risos``,
 ``ieq_triangle``) mirrored: a goal that holds on some choices only needs a branch condition, one that holds
 in some figures only a condition on the figure; both are refused rather than translated into a statement
-pgsym would refute.
+pgsym would refute. A goal that held in every random figure but that the engine refutes exactly holds in part
+of the figures only (AlphaGeometry's figure is drawn until the goal holds): :func:`solve` reports it
+unsupported with that reason, not refuted.
 
 Goals: ``coll para perp cong cyclic eqangle eqratio midp simtri contri``. Constructions pgsym cannot
 express are refused with the same error, naming the construction.
@@ -98,6 +105,7 @@ class Problem:
     source: str
     statement: str | None = None
     error: StatementError | None = None
+    held: bool = False  # the goal held in every random float figure of the translation
 
 
 def read_alphageometry(text: str, source: str = "") -> list[Problem]:
@@ -133,8 +141,8 @@ def read_alphageometry(text: str, source: str = "") -> list[Problem]:
         try:
             if bad is not None:
                 raise AlphaGeometryError(f"a control character {bad!r}; a problem is plain text", lineno)
-            statement = translate(line, lineno, title=this)
-            problems.append(Problem(this, lineno, source, statement=statement))
+            statement, held = _translate(line, lineno, title=this)
+            problems.append(Problem(this, lineno, source, statement=statement, held=held))
         except StatementError as err:
             err.line, err.source = err.line or lineno, source
             problems.append(Problem(this, lineno, source, error=err))
@@ -188,6 +196,15 @@ def solve(problem: Problem, timeout: float | None = 10.0) -> Outcome:
     except PgsymError as err:
         return Outcome(problem, "error", message=str(err), elapsed=time.perf_counter() - start)
     status = {"proved": "proved", "false": "refuted"}.get(str(verdict.status), "unknown")
+    if status == "refuted" and problem.held:
+        # AlphaGeometry draws its figure again until the goal holds: a goal that held in every random figure yet
+        # fails at an exact counterexample holds in part of the figures only, selected by an order condition the
+        # problem does not state (which arc, which side) — not a refutation of the problem as AlphaGeometry reads it
+        return Outcome(problem, "unsupported", verdict=verdict, elapsed=time.perf_counter() - start,
+                       message=f"unsupported: the goal held in {_FIGURES} random figures but fails at an exact "
+                               "counterexample: it holds in part of the figures only (AlphaGeometry draws its figure "
+                               "again until the goal holds), and the problem states no order condition that selects "
+                               "them")
     return Outcome(problem, status, verdict=verdict, elapsed=time.perf_counter() - start)
 
 
@@ -203,6 +220,11 @@ def translate(problem: str, line: int = 0, title: str = "") -> str:
     point c = reflect b (foot a (join a b))
     prove equallength a b a c
     """
+    return _translate(problem, line, title)[0]
+
+
+def _translate(problem: str, line: int = 0, title: str = "") -> tuple[str, bool]:
+    """The statement text, and whether the goal held in every random figure (else it held in none)."""
     if len(problem) > MAX_AG_LINE_CHARS:
         raise AlphaGeometryError(f"a problem of {len(problem)} characters; at most {MAX_AG_LINE_CHARS}", line)
     # Random float figures, on every choice of the points AlphaGeometry takes at random (at most 2³ choices):
@@ -227,12 +249,17 @@ def translate(problem: str, line: int = 0, title: str = "") -> str:
                 if other != out:
                     raise first.branch(first.either, "the translation depends on the choice")
                 results[flip, bits] = holds
+                first.ray_twice = first.ray_twice or t.ray_twice
                 if flip and (False, bits) in results and holds != results[False, bits]:
                     raise UnsupportedConstructionError(
                         f"unsupported: {first.flippable} needs a branch condition (AlphaGeometry draws it mirrored at "
                         "random, and the goal holds in one orientation only)", line, construction=first.flippable)
         except _NoFigure:
             continue  # the random figure had no real intersection: another one, as AlphaGeometry does
+        if first.ray_twice:
+            raise first.unsupported(first.ray_twice.split("/")[0], "needs a branch condition: in some figures the ray "
+                                    f"({first.ray_twice}) meets the circle twice, and AlphaGeometry then takes one "
+                                    "by the order of its own computation")
         if text is None:
             text, either = out, first.either
         elif out != text:
@@ -253,7 +280,7 @@ def translate(problem: str, line: int = 0, title: str = "") -> str:
         raise UnsupportedConstructionError("unsupported: the goal holds in some random figures only (AlphaGeometry's "
                                            "figure fixes an order or a side that pgsym's language cannot state)",
                                            line, construction="figure")
-    return text
+    return text, all(h for _, h in truths)
 
 
 # -- the figure: which points are known on which lines and circles ------------------------------------------
@@ -276,10 +303,11 @@ class _Locus:
     centre: str = ""  # circle: pgsym text of its centre
     through: str = ""  # circle: pgsym text of a point on it (for a free point on the circle)
     ray: bool = False  # a half-line of AG: meeting a circle picks the point on the ray
-    tail: str = ""  # the ray's origin
+    tail: str = ""  # the ray's origin (an AG point)
+    head: str = ""  # a second point of the ray, as an argument (pgsym text): where onray X tail head
+    ahead: str = ""  # the same point as a definition (pgsym text): a ray from a circle's centre meets the circle
+    # there when that point is on the circle
     place: Callable[[str], None] | None = None  # writes a free point of a locus that is no line or circle
-    ahead: str = ""  # a point of the ray past its origin (pgsym text): the ray meets a circle about its origin there
-    # when that point is on the circle
 
 
 class _Translator:
@@ -288,6 +316,7 @@ class _Translator:
         self.flip, self.flippable = flip, ""  # the mirrored figure of a shape AG mirrors at random
         self.numeric = _Numeric(seed, bits)
         self.either: list[str] = []  # the constructions of the points AG takes at random (either common point)
+        self.ray_twice = ""  # a ray that met its circle twice in this figure (AG then takes one by its own order)
         self.goal_words: list[str] = []
         self.out: list[str] = []
         self.defined: dict[str, str] = {}  # AG name -> pgsym name (in definition order)
@@ -310,7 +339,10 @@ class _Translator:
     def branch(self, either: list[str], why: str) -> UnsupportedConstructionError:
         name = either[0] if either else "intersection"
         return UnsupportedConstructionError(f"unsupported: {name} needs a branch condition ({why}; AlphaGeometry "
-                                            "takes either point at random)", self.line, construction=name.split()[0])
+                                            "takes either point at random and draws its figure again until the goal "
+                                            "holds, so the problem does not say which point it means: no order "
+                                            "condition of its figure selects it)", self.line,
+                                            construction=name.split()[0])
 
     def goal_holds(self) -> bool:
         """Whether the goal holds in the float figure."""
@@ -405,11 +437,12 @@ class _Translator:
         return _Locus("line", f"join {self.p(a)} {self.p(b)}", self.on_join(a, b), name,
                       lambda x: self.add_collinear(a, b, x))
 
-    def keyed_locus(self, key: tuple, expr: str, through: str, name: str, ray: bool = False,
-                    ahead: str = "") -> _Locus:
+    def keyed_locus(self, key: tuple, expr: str, through: str, name: str, head: str = "", ahead: str = "") -> _Locus:
+        """A line through ``through`` (shared by every construction with the same ``key``); with ``head`` (and
+        ``ahead``, the same point written as a definition) the half-line from ``through`` towards that point."""
         pts = self.key_line(key, through)
-        return _Locus("line", expr, set(pts), name, lambda x: (pts.add(x), self.add_collinear(*pts)), ray=ray,
-                      tail=through, ahead=ahead)
+        return _Locus("line", expr, set(pts), name, lambda x: (pts.add(x), self.add_collinear(*pts)), ray=bool(head),
+                      tail=through, head=head, ahead=ahead)
 
     # -- a problem --------------------------------------------------------------------------------------------
     def run(self, problem: str, title: str) -> str:
@@ -512,8 +545,13 @@ class _Translator:
             x = self.define(ag)
             self.emit(f"point {x} = {one.ahead}")
         elif one.kind == "line" and one.ray and (not common or common[0] != one.tail):
-            raise self.unsupported(one.name, "needs a branch condition: a ray meets the circle at the point on the "
-                                   "ray, which pgsym cannot name")
+            # AlphaGeometry's half-line meets the circle at its point on the ray (numericals.HalfLine.intersect):
+            # an order condition of the figure, not a random choice
+            x = self.define(ag)
+            self.out.append(f"point {x} = intersection ({one.expr}) ({two.expr})")
+            self.out.append(f"where onray {x} {self.p(one.tail)} {one.head}")
+            if self.numeric.on_ray(x, one.expr, two.expr, self.p(one.tail), one.head):
+                self.ray_twice = f"{one.name}/{two.name} of {ag}"
         elif one.kind == "line" and common:
             x = self.define(ag)
             self.emit(f"point {x} = reflect {self.p(common[0])} (foot {two.centre} ({one.expr}))")
@@ -714,7 +752,8 @@ def _angle_mirror(t: _Translator, a: list[str]) -> _Locus:
     _, p, v, q = a  # the ray from v that line vq bisects with line vp
     _distinct(t, "angle_mirror", p, v, q)
     image = f"reflect {t.p(p)} (join {t.p(v)} {t.p(q)})"
-    return t.keyed_locus(("amirror", p, v, q), f"join {t.p(v)} ({image})", v, "angle_mirror", ray=True, ahead=image)
+    return t.keyed_locus(("amirror", p, v, q), f"join {t.p(v)} ({image})", v, "angle_mirror", head=f"({image})",
+                         ahead=image)
 
 
 @_construction("s_angle", 4)
@@ -726,7 +765,7 @@ def _s_angle(t: _Translator, a: list[str]) -> _Locus:
     _distinct(t, "s_angle", p, v)
     r = t.new_aux("rot")
     t.emit(f"point {r} = rotate {t.p(p)} {t.p(v)} {int(deg)}")
-    return t.keyed_locus(("sangle", p, v, deg), f"join {t.p(v)} {r}", v, "s_angle", ray=True,
+    return t.keyed_locus(("sangle", p, v, deg), f"join {t.p(v)} {r}", v, "s_angle", head=r,
                          ahead=f"rotate {t.p(p)} {t.p(v)} {int(deg)}")
 
 
@@ -1069,7 +1108,7 @@ def _on_aline(t: _Translator, a: list[str]) -> _Locus:
     _, p, q, c, d, e = a  # ∠(px, pq) = ∠(dc, de): x on the ray from p towards p + (q − p)(c − d)/(e − d)
     _distinct(t, "on_aline", p, q)
     x = _copy(t, p, q, d, e, c)
-    return t.keyed_locus(("aline", p, q, c, d, e), f"join {t.p(p)} {x}", p, "on_aline", ray=True,
+    return t.keyed_locus(("aline", p, q, c, d, e), f"join {t.p(p)} {x}", p, "on_aline", head=x,
                          ahead=f"similar {t.p(p)} {t.p(q)} {t.p(d)} {t.p(e)} {t.p(c)}")
 
 
@@ -1282,6 +1321,19 @@ class _Numeric:
 
     def _op(self, op: str, a: list[Any]) -> Any:
         return _NUMERIC_OPS[op](*a)
+
+    def on_ray(self, name: str, line: str, circle: str, tail: str, head: str) -> bool:
+        """The common point of the ray from ``tail`` through ``head`` (on ``line``) and the circle, as AlphaGeometry
+        takes it (not the tail itself); True when both common points lie on the ray (then AlphaGeometry takes one
+        by the order of its own computation)."""
+        one, two = (self._expr(_TOKENS.findall(e), 0)[0] for e in (line, circle))
+        t, h = self.values[tail], self._arg(_TOKENS.findall(head), 0)[0]
+        scale = 1 + abs(h - t)
+        on = [p for p in _meet(one, two) if abs(p - t) > 1e-9 * scale and ((p - t) * (h - t).conjugate()).real > 0]
+        if not on:
+            raise _NoFigure  # the ray misses the circle: AlphaGeometry draws again
+        self.values[name] = on[0]
+        return len(on) == 2
 
     # -- the check ----------------------------------------------------------------------------------------
     def on_circle(self, point: str, circle: str) -> bool:

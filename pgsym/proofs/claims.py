@@ -29,6 +29,7 @@ from .. import ring as alg
 from ..errors import InvalidCoordinatesError, ObjectTypeError
 from .errors import NonPolynomialClaimError, UndefinedConstructionError
 from .operations import KINDS, OPERATIONS, Operation, constructions, operation
+from .order import OrderCondition, OrderConditions
 from .square_roots import RootData, SquareRootConstructions
 
 __all__ = [
@@ -134,7 +135,7 @@ def _count(n: int) -> str:
     return _NUMBER_WORDS[n] if n < len(_NUMBER_WORDS) else str(n)
 
 
-class Claim(SquareRootConstructions):
+class Claim(SquareRootConstructions, OrderConditions):
     """A statement of projective geometry to be proved for generic values of its parameters.
 
     Build it with the ``free_*`` methods (free objects), the construction methods
@@ -174,6 +175,8 @@ class Claim(SquareRootConstructions):
         self.conclusions: list[Conclusion] = []
         #: the roots of the square-root constructions (:mod:`pgsym.proofs.square_roots`), None without any
         self.square_roots: RootData | None = None
+        #: the order conditions (:mod:`pgsym.proofs.order`): strict inequalities selecting branches or regions
+        self.order_conditions: list[OrderCondition] = []
 
     def __repr__(self) -> str:
         return f"Claim({self.name!r}, {self.title!r})"

@@ -49,7 +49,7 @@ from .. import ring as alg
 from ..errors import ObjectTypeError, PgsymError
 from ..exact import is_zero
 from . import by_evaluation
-from .algebraic import prove_algebraic
+from .algebraic import prove_algebraic, prove_ordered
 from .budget import Deadline, Timeout, TooLarge, alarm
 from .claims import Claim, Node
 from .errors import UndefinedConstructionError
@@ -661,6 +661,10 @@ def prove(claim: Claim, *, timeout: float | None = 10.0, seed: int = 0, core_che
         raise ObjectTypeError(f"prove expects a Claim (or use pgsym.proofs.prove with a catalogue name), got {claim!r}")
     if not claim.conclusions:
         raise UndefinedConstructionError(f"claim {claim.name!r} has no conclusion; add one with a conclude_* method")
+    if claim.order_conditions:  # proved on the branches and the region they select (pgsym.proofs.algebraic)
+        return prove_ordered(claim, lambda c: prove(c, timeout=timeout, seed=seed, core_check=core_check,
+                                                    backend=backend, normalise_coordinates=normalise_coordinates),
+                             timeout=timeout, seed=seed, backend=backend)
     if claim.square_roots is not None:  # square roots: branch semantics (pgsym.proofs.algebraic)
         return prove_algebraic(claim, timeout=timeout, seed=seed, backend=backend)
     start = time.perf_counter()

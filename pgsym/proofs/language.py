@@ -29,6 +29,7 @@ starting with a letter; keywords are not names):
                 | "point" NAME "on" "conic" arg ["through" arg] one parameter; through a point of the conic
                 | "point" NAME "on" "circle" arg ["through" arg] the same for a circle (its known point by default)
                 | "prove" PREDICATE arg+
+                | "where" CONDITION arg+                        an order condition (several must all hold)
     PLURAL     := points | lines | points3 | planes | points1 | conics | matrices | matrices4 | matrices2
     KIND       := point | line | point3 | plane | line3 | conic | point1 | ratio | matrix
     expr       := arg | OPERATION arg+
@@ -89,6 +90,24 @@ areas). Several ``prove`` lines must all hold. Parts of the Python
 API with no statement form: ``formula`` (an arbitrary function), ``combine`` with given coefficients,
 equation hypotheses (``assume_zero``), exact (not projective) equality, ranks and degrees of freedom.
 
+Order conditions (``where`` lines; strict inequalities, see :mod:`pgsym.proofs.order`) say which of two
+intersection points, which bisector or which part of the figure the theorem is about — as an olympiad
+statement does: ``where sameside P Q A B`` (P and Q on the same side of the line AB), ``where oppositeside
+P Q A B`` (opposite sides; for P on the circle QAB: P on the arc AB not containing Q), ``where between X A B``
+(X strictly between A and B), ``where onray X V P`` (X on the ray from V through P, X ≠ V), ``where inside
+X A B C`` (X inside the triangle ABC). The conclusion must then hold on every branch and at every figure the
+conditions select, and only there; a figure they exclude never refutes the theorem:
+
+>>> from pgsym.proofs.engine import prove
+>>> v = prove(parse_statement('''
+... points A B
+... point X = intersection (join A B) (circle A B)   # B, or B reflected in A
+... where onray X A B
+... prove equal X B
+... '''))
+>>> v.status, v.branches.split(":")[0]
+('proved', 'proved on the branch the order conditions select')
+
 Reading is bounded (:mod:`pgsym.limits`): the text, a line, a name, the number of objects and the
 nesting of parentheses. Every problem raises a :class:`~pgsym.proofs.errors.StatementError` subclass
 naming the line and column.
@@ -139,6 +158,7 @@ from .errors import (
     StatementNameError,
     StatementSyntaxError,
 )
+from .order import CONDITIONS
 
 __all__ = ["KEYWORDS", "STATEMENT_SUFFIX", "keywords", "parse_statement", "read_statement"]
 
@@ -156,7 +176,7 @@ _OPERATIONS += ("parallel", "perpendicular", "bisector", "foot", "reflect", "rot
                 "circle", "centre", "invert", "dist2", "area", "segratio", "add", "sub", "mul")
 _PREDICATES += ("perpendicular", "parallel", "equallength", "equalangle", "concyclic", "equalarea")
 KEYWORDS = frozenset({"title", "expect", "params", "prove", "on", "through", *_PLURALS, *_KINDS, *_OPERATIONS,
-                      *_PREDICATES})
+                      *_PREDICATES, "where", *CONDITIONS})
 
 _TOKEN = re.compile(r"\s*(?:(?P<name>[A-Za-z][A-Za-z0-9_']*)|(?P<number>[0-9]+(?:/[0-9]+)?)|(?P<punct>[()=,-]))")
 
@@ -424,6 +444,10 @@ _PROVE.update({
 })
 _PROVE["equal"][("ratio", "param")] = lambda c, a: c.conclude_equal_ratio(*a)
 
+# the points of each order condition, as the error messages name them
+_WHERE_ARGS = {"sameside": "P Q A B", "oppositeside": "P Q A B", "between": "X A B", "onray": "X V P",
+               "inside": "X A B C"}
+
 
 class _Reader:
     def __init__(self, name: str, source: str) -> None:
@@ -527,10 +551,12 @@ class _Reader:
             self._definition(word, cur)
         elif word == "prove":
             self._prove(cur)
+        elif word == "where":
+            self._where(cur, head)
         else:
             raise StatementSyntaxError(
                 f"unknown statement {word!r}; a line starts with one of: title, expect, params, "
-                f"{', '.join(_PLURALS)}, {', '.join(_KINDS)}, prove", head.line, head.col)
+                f"{', '.join(_PLURALS)}, {', '.join(_KINDS)}, prove, where", head.line, head.col)
         cur.end()
 
     def _names(self, cur: _Line, make: Callable[[str], Any]) -> None:
@@ -640,6 +666,34 @@ class _Reader:
             got = " ".join(k for k in kinds) or "nothing"
             raise StatementKindError(f"prove {pred.text} takes ({accepted}), got {got}", pred.line, pred.col)
         conclude(self.claim, args)
+
+    def _where(self, cur: _Line, head: _Token) -> None:
+        """``where CONDITION POINTS``: an order condition of :mod:`pgsym.proofs.order`."""
+        usage = "; ".join(f"where {w} {_WHERE_ARGS[w]}" for w in CONDITIONS)
+        cond = cur.next()
+        if cond.kind == "end":
+            raise StatementSyntaxError(f"where needs an order condition: {usage}", cond.line, cond.col)
+        if cond.text not in CONDITIONS:
+            raise StatementSyntaxError(f"unknown order condition {_show(cond)}; write one of: {usage}",
+                                       cond.line, cond.col)
+        args = []
+        while cur.peek().kind != "end":
+            args.append(self._value(_parse_arg(cur, 0)))
+        want = CONDITIONS[cond.text]
+        if len(args) != want:
+            raise StatementKindError(f"where {cond.text} takes {want} points ({_WHERE_ARGS[cond.text]}), got "
+                                     f"{len(args)}", cond.line, cond.col)
+        bad = next((a for a in args if _kind_of(a) != _P), None)
+        if bad is not None:
+            raise StatementKindError(f"where {cond.text} takes points of the plane, got the {_kind_of(bad)} "
+                                     f"{getattr(bad, 'name', bad)}", cond.line, cond.col)
+        method = {"sameside": self.claim.where_same_side, "oppositeside": self.claim.where_opposite_sides,
+                  "between": self.claim.where_between, "onray": self.claim.where_on_ray,
+                  "inside": self.claim.where_inside}[cond.text]
+        try:
+            method(*args)
+        except PgsymError as err:  # a point given twice, too many conditions
+            raise StatementKindError(f"where {err}", cond.line, cond.col) from None
 
     def _number(self, cur: _Line) -> sympy.Rational:
         sign = -1 if cur.peek().text == "-" and cur.next() else 1
@@ -905,6 +959,14 @@ _MEANINGS: dict[str, tuple[str, str]] = {  # keyword -> (group, meaning)
     "tangentfrom": ("square roots", "P K → a tangent from P to the circle K"),
     "tangentsfrom": ("square roots", "lines s t = tangentsfrom P K: both tangents, in either order"),
     "polygon": ("square roots", "A B n k → vertex k of the regular n-gon with consecutive vertices A, B"),
+    "where": ("order conditions", "where CONDITION POINTS: an order condition (strict); the theorem is about the "
+                                  "figures and branches the conditions select"),
+    "sameside": ("order conditions", "P Q A B: P and Q on the same side of the line AB"),
+    "oppositeside": ("order conditions", "P Q A B: P and Q on opposite sides of the line AB (for P on the circle "
+                                         "QAB: P on the arc AB not containing Q)"),
+    "between": ("order conditions", "X A B: X strictly between A and B ((X − A)·(B − X) > 0)"),
+    "onray": ("order conditions", "X V P: X on the ray from V through P, X ≠ V ((X − V)·(P − V) > 0)"),
+    "inside": ("order conditions", "X A B C: X strictly inside the triangle ABC"),
 }
 
 

@@ -1,0 +1,233 @@
+"""Order conditions (``where`` lines): the verdict is about the branches and figures they select, and only those.
+
+Expected verdicts are derived by hand in the comments; the property test compares each verdict with its own exact
+evaluation (rational arithmetic, both common points known in closed form) on the branches the conditions select.
+"""
+
+from __future__ import annotations
+
+import random
+from fractions import Fraction
+
+import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from pgsym.proofs.engine import prove
+from pgsym.proofs.errors import StatementKindError, StatementNameError, StatementSyntaxError
+from pgsym.proofs.language import parse_statement
+
+# (X = one common point of a line and a circle, the order condition, the conclusion, the verdict)
+MINIMAL = {
+    # the circle of centre A through B meets the line AB at B and at B' = 2A − B; (B − A)·(B − A) = |AB|² > 0 and
+    # (B' − A)·(B − A) = −|AB|² < 0, so "X on the ray from A through B" selects B alone
+    "ray": ("points A B\npoint X = intersection (join A B) (circle A B)\nwhere onray X A B\nprove equal X B",
+            "proved"),
+    # from B towards A: X = B gives (B − B)·(A − B) = 0, not > 0; X = B' gives (2A − 2B)·(A − B) = 2|AB|² > 0
+    "ray-back": ("points A B\npoint X = intersection (join A B) (circle A B)\nwhere onray X B A\nprove equal X B",
+                 "false"),
+    "ray-back-mirror": ("points A B\npoint X = intersection (join A B) (circle A B)\nwhere onray X B A\n"
+                        "prove equal X (reflect B A)", "proved"),
+    # the circle of centre A through the midpoint M of AB meets AB at M and 2A − M; (M − A)·(B − M) = |AB|²/4 > 0,
+    # (A − M)·(B − 2A + M) = −(1/2)(3/2)|AB|² < 0: "between A and B" selects M
+    "between": ("points A B\npoint M = midpoint A B\npoint X = intersection (join A B) (circle A M)\n"
+                "where between X A B\nprove equal X M", "proved"),
+    "between-other": ("points A B\npoint M = midpoint A B\npoint X = intersection (join A B) (circle A M)\n"
+                      "where between X A B\nprove equal X (reflect M A)", "false"),
+    # the perpendicular bisector of AB meets the circle on the diameter AB at D = M + R(−90°)(A − M) and at 2M − D,
+    # on opposite sides of AB (their signed areas with A, B are opposite)
+    "side": ("points A B\npoint M = midpoint A B\npoint D = rotate A M 0 -1\n"
+             "point X = intersection (bisector A B) (circle M A)\nwhere sameside X D A B\nprove equal X D", "proved"),
+    "side-opposite": ("points A B\npoint M = midpoint A B\npoint D = rotate A M 0 -1\n"
+                      "point X = intersection (bisector A B) (circle M A)\nwhere oppositeside X D A B\n"
+                      "prove equal X D", "false"),
+    # the centroid G of ABC is inside it, and lies on the median from A: true without the condition
+    "inside-not-needed": ("points A B C\npoint G = meet (join A (midpoint B C)) (join B (midpoint C A))\n"
+                          "where inside G A B C\nprove collinear A G (midpoint B C)", "proved"),
+    # A is a vertex: area(B, C, A)·area(B, C, A) > 0 but area(C, A, A) = 0, so "A inside ABC" never holds; a claim
+    # about no figure is not proved
+    "inside-never": ("points A B C\nwhere inside A A B C\nprove collinear A B (midpoint A B)", "unknown"),
+    # a free X with (X − A)·(B − X) > 0 (inside the circle on the diameter AB) is not on the line AB in general
+    "rational-false": ("points A B X\nwhere between X A B\nprove collinear A B X", "false"),
+}
+
+
+@pytest.mark.parametrize("name", list(MINIMAL))
+def test_minimal_statements_are_decided_on_the_selected_branch(name: str) -> None:
+    text, expected = MINIMAL[name]
+    verdict = prove(parse_statement(text, name=name))
+    assert verdict.status == expected, (verdict.reason, verdict.branches)
+    if expected == "false":
+        assert verdict.counterexample is not None and verdict.counterexample.recheck()
+        assert "selected branch" in verdict.branches
+    if expected == "proved":
+        assert "order condition" in verdict.branches
+        assert any(h.startswith("order condition:") for h in verdict.hypotheses)
+    if expected == "unknown":
+        assert verdict.counterexample is None and verdict.certificate is None
+
+
+def test_the_certificate_says_how_the_branch_is_selected() -> None:
+    verdict = prove(parse_statement(MINIMAL["ray"][0], name="ray"))
+    assert "norm over the conjugate branches is 0" in verdict.certificate.method
+    assert any("the condition excludes that branch" in step for step in verdict.certificate.steps)
+
+
+def test_a_wrong_branch_never_refutes_and_an_excluded_figure_never_counts() -> None:
+    # without the condition the claim is refuted (X may be B' = 2A − B); with it, proved
+    text = MINIMAL["ray"][0]
+    assert prove(parse_statement(text.replace("where onray X A B\n", ""), name="ray")).status == "false"
+    assert prove(parse_statement(text, name="ray")).status == "proved"
+
+
+# -- hostile input ---------------------------------------------------------------------------------------------
+
+BASE = "points A B C\npoint X = midpoint A B\n"
+
+
+@pytest.mark.parametrize(("line", "error", "words"), [
+    ("where", StatementSyntaxError, "where needs an order condition"),
+    ("where above X A B", StatementSyntaxError, "unknown order condition 'above'"),
+    ("where between X A", StatementKindError, "between takes 3 points (X A B), got 2"),
+    ("where between X A B C", StatementKindError, "between takes 3 points"),
+    ("where between X A A", StatementKindError, "A is given twice"),
+    ("where inside X A B B", StatementKindError, "B is given twice"),
+    ("where sameside X C A A", StatementKindError, "A is given twice"),
+    ("where between X A (join A B)", StatementKindError, "takes points of the plane, got the line"),
+    ("where onray X A 3", StatementKindError, "got the number 3"),
+    ("where between X A Q", StatementNameError, "Q is not defined"),
+    ("points where", StatementNameError, "'where' is a keyword"),
+    ("point between = midpoint A C", StatementNameError, "'between' is a keyword"),
+    ("where between X A B )", StatementSyntaxError, "expected a name or '('"),
+    ("where (between X A B)", StatementSyntaxError, "unknown order condition '('"),
+])
+def test_misused_order_conditions_get_named_errors(line: str, error: type, words: str) -> None:
+    with pytest.raises(error, match=None) as err:
+        parse_statement(BASE + line + "\nprove collinear A B X")
+    assert words in str(err.value) and str(err.value).startswith("3:")
+
+
+def test_too_many_order_conditions_are_refused() -> None:
+    text = BASE + "where between X A B\n" * 17 + "prove collinear A B X"
+    with pytest.raises(StatementKindError, match="more than 16 order conditions"):
+        parse_statement(text)
+
+
+def test_points_of_space_are_refused() -> None:
+    with pytest.raises(StatementKindError, match="takes points of the plane, got the point3"):
+        parse_statement("points3 P Q R\nwhere between P Q R\nprove collinear P Q R")
+
+
+# -- property: random statements against an exact evaluation on the selected branches -----------------------------
+
+Q = Fraction
+NAMES = "ABCM"
+
+
+def _conditions(kind: str, pts: list[tuple[Fraction, Fraction]]) -> bool:
+    """The order condition in affine coordinates, written from its definition (not from pgsym's formulas)."""
+    def area(a, b, p):  # twice the signed area of abp
+        return (b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0])
+
+    def dot(u0, u1, v0, v1):
+        return (u1[0] - u0[0]) * (v1[0] - v0[0]) + (u1[1] - u0[1]) * (v1[1] - v0[1])
+
+    if kind == "sameside":
+        p, q, a, b = pts
+        return area(a, b, p) * area(a, b, q) > 0
+    if kind == "oppositeside":
+        p, q, a, b = pts
+        return area(a, b, p) * area(a, b, q) < 0
+    if kind == "between":
+        x, a, b = pts
+        return dot(a, x, x, b) > 0
+    if kind == "onray":
+        x, v, p = pts
+        return dot(v, x, v, p) > 0
+    x, a, b, c = pts
+    return all(area(u, v, x) * area(u, v, w) > 0 for u, v, w in ((b, c, a), (c, a, b), (a, b, c)))
+
+
+def _figure(template: int, v: dict[str, tuple[Fraction, Fraction]], o: str, p: str, q: str):
+    """Both common points of the template's line and circle, in closed form: (first, second) and their names."""
+    if template == 0:  # line PQ, circle of centre O through P: P and P reflected in the foot F of O on PQ
+        (px, py), (qx, qy), (ox, oy) = v[p], v[q], v[o]
+        dx, dy = qx - px, qy - py
+        t = ((ox - px) * dx + (oy - py) * dy) / (dx * dx + dy * dy)
+        f = (px + t * dx, py + t * dy)
+        return {"P0": (px, py), "S": (2 * f[0] - px, 2 * f[1] - py)}
+    # the perpendicular bisector of AB and the circle on the diameter AB: M ± R(90°)(B − A)/2
+    (ax, ay), (bx, by) = v["A"], v["B"]
+    m = ((ax + bx) / 2, (ay + by) / 2)
+    h = ((ay - by) / 2, (bx - ax) / 2)  # R(−90°)(x, y) = (y, −x) of A − M = (A − B)/2: D = M + h
+    return {"P0": (m[0] + h[0], m[1] + h[1]), "S": (m[0] - h[0], m[1] - h[1])}
+
+
+@st.composite
+def statements(draw):
+    template = draw(st.integers(0, 1))
+    o, p, q = draw(st.permutations(NAMES))[:3]
+    lines = ["points A B C", "point M = midpoint A B"]
+    if template == 0:
+        lines += [f"point S = reflect {p} (foot {o} (join {p} {q}))",
+                  f"point X = intersection (join {p} {q}) (circle {o} {p})"]
+        first = p
+    else:
+        lines += ["point P0 = rotate A M 0 -1", "point S = reflect P0 M",
+                  "point X = intersection (bisector A B) (circle M A)"]
+        first = "P0"
+    kind = draw(st.sampled_from(["sameside", "oppositeside", "between", "onray", "inside"]))
+    size = {"sameside": 4, "oppositeside": 4, "between": 3, "onray": 3, "inside": 4}[kind]
+    pool = sorted({"A", "B", "C", "M", "S", first})
+    args = ["X", *draw(st.permutations(pool))[:size - 1]]  # different points: every condition is defined
+    if kind in ("sameside", "oppositeside") and draw(st.booleans()):
+        args[0], args[1] = args[1], args[0]  # X as the second of the pair
+    target = draw(st.sampled_from(["S", first]))
+    lines += [f"where {kind} {' '.join(args)}", f"prove equal X {target}"]
+    return "\n".join(lines), (template, o, p, q, kind, args, target, first)
+
+
+def _exact(setup, values: dict[str, Fraction]) -> bool | None:
+    """Whether the conclusion holds on every branch the condition selects at these values (None: no selected
+    branch, or a degenerate figure)."""
+    template, o, p, q, kind, args, target, _first = setup
+    v = {n: (values[f"{n}_x"], values[f"{n}_y"]) for n in "ABC"}
+    v["M"] = ((v["A"][0] + v["B"][0]) / 2, (v["A"][1] + v["B"][1]) / 2)
+    if len({v[n] for n in NAMES}) < 4:
+        return None
+    two = _figure(template, v, o, p, q)
+    if two["P0"] == two["S"]:
+        return None
+    v["S"] = two["S"]
+    if template == 1:
+        v["P0"] = two["P0"]
+    selected = []
+    for x in two.values():
+        pts = [x if a == "X" else v[a] for a in args]
+        if _conditions(kind, pts):
+            selected.append(x)
+    if not selected:
+        return None
+    return all(x == v[target] for x in selected)
+
+
+@settings(max_examples=12, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(statements())
+def test_random_statements_agree_with_exact_evaluation_on_the_selected_branch(drawn) -> None:
+    text, setup = drawn
+    verdict = prove(parse_statement(text, name="random"), timeout=6)
+    rng = random.Random(text)
+    found = []
+    for _ in range(40):
+        values = {f"{n}_{c}": Q(rng.randint(-9, 9), rng.randint(1, 3)) for n in "ABC" for c in "xy"}
+        holds = _exact(setup, values)
+        if holds is not None:
+            found.append(holds)
+    if verdict.status == "proved":
+        assert all(found), (text, verdict.branches)
+    elif verdict.status == "false":
+        ce = verdict.counterexample
+        assert ce is not None and ce.recheck(), text
+        assert _exact(setup, dict(ce.values)) is False, (text, ce.values)  # a selected branch fails there
+    else:  # unknown: no figure satisfies the condition, or neither a proof nor a counterexample was found
+        assert verdict.status == "unknown" and verdict.certificate is None and verdict.counterexample is None, text
