@@ -39,6 +39,7 @@ def test_one_claim_with_every_euclidean_operation_agrees_with_the_core():
     c.reflect("RL", C, ab)
     c.rotate("Rot", C, A, sympy.Rational(3, 5), sympy.Rational(-4, 5))
     c.translate("T", C, A, D)
+    c.similar("Sim", A, B, C, D, F)
     K = c.circle("K", A, B)
     c.circle_radius("KR", D)
     K3 = c.circle3("K3", A, B, C)
@@ -70,7 +71,7 @@ _CASES = {  # operation: argument kinds, coefficient data
     "rotate": (("point",) * 2, (Fraction(-5, 13), Fraction(12, 13))), "translate": (("point",) * 3, ()),
     "circle": (("point",) * 2, ()), "circle_radius": (("point",), (Fraction(7, 2),)), "circle3": (("point",) * 3, ()),
     "centre": (("circle",), ()), "invert": (("point", "circle"), ()), "dist2": (("point",) * 2, ()),
-    "area": (("point",) * 3, ()), "segratio": (("point",) * 4, ()),
+    "area": (("point",) * 3, ()), "segratio": (("point",) * 4, ()), "similar": (("point",) * 5, ()),
 }
 
 
