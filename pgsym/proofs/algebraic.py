@@ -327,6 +327,16 @@ def _core_check(claim: Claim, rng: random.Random, deadline: Any) -> str:
         f" ({last[:80]})" if "last" in locals() else "")
 
 
+def _undecided(err: Exception, timeout: float | None) -> str:
+    """Why a prover stopped without a verdict: the expansion's size, the time limit, or an exact evaluation that
+    could not be carried out."""
+    if isinstance(err, TooLarge):
+        return f"the expansion is too large: {err.args[0]}"
+    if isinstance(err, Timeout):
+        return f"timed out after {timeout} s while {err.args[0] if err.args else 'working'}"
+    return f"the exact evaluation could not decide: {err}"
+
+
 def prove_algebraic(claim: Claim, timeout: float | None = 10.0, seed: int = 0, instances: int = 4,
                     backend: str | None = None) -> Any:
     """Decide a claim with square roots (called by :func:`pgsym.proofs.engine.prove` when the claim has roots).
@@ -434,13 +444,8 @@ def prove_algebraic(claim: Claim, timeout: float | None = 10.0, seed: int = 0, i
                 return proved(certificate, text)
             return _sample(claim, failing, R, rng=claim_rng(claim, seed), instances=instances, deadline=deadline,
                            done=done, counterexample=Counterexample)
-    except TooLarge as err:
-        return done(Status.UNKNOWN, reason=f"the expansion is too large: {err.args[0]}", branches="no decision")
-    except Timeout as err:
-        stage = err.args[0] if err.args else "working"
-        return done(Status.UNKNOWN, reason=f"timed out after {timeout} s while {stage}", branches="no decision")
-    except PgsymError as err:
-        return done(Status.UNKNOWN, reason=f"the exact evaluation could not decide: {err}", branches="no decision")
+    except (TooLarge, Timeout, PgsymError) as err:
+        return done(Status.UNKNOWN, reason=_undecided(err, timeout), branches="no decision")
 
 
 def _framed_values(claim: Claim, norm: Any, deadline: Any, backend: str | None) -> tuple[Any, _Tower, dict]:
@@ -933,13 +938,8 @@ def prove_ordered(claim: Claim, plain: Callable[[Claim], Any], timeout: float | 
                 else:
                     why = found
             return _sample_ordered(claim, rng, instances, deadline, done, why, words)
-    except TooLarge as err:
-        return done(Status.UNKNOWN, reason=f"the expansion is too large: {err.args[0]}", branches="no decision")
-    except Timeout as err:
-        stage = err.args[0] if err.args else "working"
-        return done(Status.UNKNOWN, reason=f"timed out after {timeout} s while {stage}", branches="no decision")
-    except PgsymError as err:
-        return done(Status.UNKNOWN, reason=f"the exact evaluation could not decide: {err}", branches="no decision")
+    except (TooLarge, Timeout, PgsymError) as err:
+        return done(Status.UNKNOWN, reason=_undecided(err, timeout), branches="no decision")
 
 
 def _ordered_instances(claim: Claim, rng: random.Random, deadline: Any, tries: int):
