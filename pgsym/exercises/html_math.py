@@ -91,14 +91,6 @@ def _tidy(root: ElementTree.Element) -> None:
                 child.set("rspace", "0")
 
 
-def _is_plain_mathml(markup: str) -> bool:
-    try:
-        root = ElementTree.fromstring(markup)
-    except ElementTree.ParseError:
-        return False
-    return _is_plain(root)
-
-
 def _is_plain(root: ElementTree.Element) -> bool:
     for element in root.iter():
         if not (isinstance(element.tag, str) and element.tag.startswith(_NS) and element.tag[len(_NS):] in ELEMENTS):

@@ -185,9 +185,3 @@ class PolynomialRing:
             return None
         q, r = divmod(x, y)
         return q if r == 0 and q * y == x else None
-
-    def to_sympy_ring(self, p: Any, ring: Any) -> Any:
-        """p as an element of a SymPy ``PolyRing`` over the same symbols (for Gröbner reduction)."""
-        if self.backend == "sympy" and p.ring == ring:
-            return p
-        return ring(self.to_expr(p))
