@@ -19,6 +19,7 @@ from pgsym.proofs.by_evaluation import conclusion_polynomials, degree_bounds, id
 from pgsym.proofs.claims import Claim
 from pgsym.proofs.engine import prove
 from pgsym.proofs.evaluation import evaluate, nonzero_requirements, objects_to_check
+from pgsym.proofs.language import parse_statement
 from pgsym.proofs.operations import flat
 from pgsym.proofs.polynomials import PolynomialRing
 
@@ -258,3 +259,14 @@ def test_square_root_bounds_bound_the_remainder_coefficients(a, b):
         for k, x in enumerate((s, t)):
             i = tower.R.symbols.index(x)
             assert max((m[i] for m, _ in tower.R.terms(reduced)), default=0) <= bounds[label][x], k
+
+
+def test_a_frame_that_collapses_a_branch_is_dropped_before_the_grid(monkeypatch):
+    # A lies on the line AB and on the circle about C through A: a frame with A at the origin turns one branch of
+    # the intersection into the zero vector and the other into A, losing the second common point. The claim
+    # "X = A" is false for that second point (here X = (−19/5, −2/5) in the engine's instance), so the grid, run
+    # because the expansion is refused, must not prove it.
+    monkeypatch.setattr(budget, "MAX_WORK", 0)
+    text = "points A B C\npoint X = intersection (join A B) (circle C A)\nprove equal X A"
+    v = prove(parse_statement(text, name="collapse"), timeout=60)
+    assert v.status == "false" and v.counterexample.recheck()

@@ -382,8 +382,8 @@ def prove_algebraic(claim: Claim, timeout: float | None = 10.0, seed: int = 0, i
             try:
                 norm, tower, values = _framed_values(claim, norm, deadline, backend)
             except TooLarge as err:  # too large to expand: the same membership decided by exact evaluation on a grid
-                if norm is not None and any(r.kind == "intersection" for r in roots):
-                    # whether the frame collapses a branch (_frame_breaks) shows only in the values: own coordinates
+                if norm is not None and any(r.kind == "intersection" for r in roots) and \
+                        _frame_breaks_somewhere(claim, norm, deadline, backend, claim_rng(claim, seed)):
                     norm = None
                 sub = norm.substitution if norm is not None else {}
                 found = identity_by_evaluation(claim, sub, deadline, err.args[0], partial(_Tower, claim,
@@ -468,6 +468,23 @@ def _framed_values(claim: Claim, norm: Any, deadline: Any, backend: str | None) 
         if norm is None or not _frame_breaks(claim, values, tower):
             return norm, tower, values
         norm = None
+
+
+def _frame_breaks_somewhere(claim: Claim, norm: Any, deadline: Any, backend: str | None, rng: random.Random) -> bool:
+    """:func:`_frame_breaks` at one random instance of the parameters the frame leaves free, for a claim too large to
+    expand: a collapse that holds identically shows at every instance, and one that holds here by coincidence only
+    makes the caller drop the frame (always sound). An instance where a construction is undefined drops it too."""
+    rootsyms = {r.symbol for r in roots_of(claim)}
+    sub = dict(norm.substitution)
+    for p in claim.parameters:
+        if p not in rootsyms and p not in sub:
+            sub[p] = sympy.Integer(rng.randint(-97, 97))
+    tower = _Tower(claim, [], backend)
+    try:
+        values = _evaluate(claim, lambda e: tower.R(sympy.sympify(e).xreplace(sub)), tower, deadline)
+        return _frame_breaks(claim, values, tower)
+    except PgsymError:
+        return True
 
 
 def _frame_breaks(claim: Claim, values: dict[Node, Any], tower: _Tower) -> bool:
