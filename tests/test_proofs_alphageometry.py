@@ -678,14 +678,32 @@ def test_cli_help_has_an_example():
     assert "--from alphageometry" in result.stdout and "imo_ag_30.txt" in result.stdout
 
 
-def test_a_goal_true_for_one_random_choice_only_needs_a_branch_condition():
-    # e on line bc with |ce| = |cd|: |ae| = |bd| for the mirror image of d in the bisector of ab only
-    problem = ("a b = segment a b; c = on_bline c a b; d = on_line d a c; e = on_circle e c d, on_line e b c"
-               " ? cong a e b d")
+def test_a_goal_true_for_one_random_choice_only_gets_the_order_condition_that_selects_it():
+    # e on line ab with |ae| = |ac|: the triangle ace is isosceles, so ce is perpendicular to the internal bisector
+    # of ∠bac when e is on the ray ab, and to the external one (perpendicular to the internal) on the other ray
+    problem = ("a b c = triangle a b c; e = on_line e a b, on_circle e a c; d = angle_bisector d b a c, "
+               "on_line d b c ? perp a d c e")
     goal = problem.split("?")[1]
-    one, other = (goal_holds(goal, figure(problem, Branches((bit,)), random.Random(3))) for bit in (0, 1))
-    assert one != other  # this file's figure: the goal holds on one branch only
-    with pytest.raises(UnsupportedConstructionError, match="on_circle of e needs a branch condition"):
+    for seed in range(3):
+        figures = [figure(problem, Branches((bit,)), random.Random(seed)) for bit in (0, 1)]
+        ahead = [((f["e"] - f["a"]) * (f["b"] - f["a"]).conjugate()).real > 0 for f in figures]
+        assert [goal_holds(goal, f) for f in figures] == ahead and ahead[0] != ahead[1]
+    text = translate(problem)
+    assert "where onray e a b" in text
+    [read] = read_alphageometry("bisector\n" + problem)
+    outcome = solve(read)
+    assert outcome.status == "proved" and "branch the order conditions select" in outcome.verdict.branches
+
+
+def test_a_goal_true_for_one_random_choice_that_no_order_condition_selects_needs_a_branch_condition():
+    # a on the parallel to cd through b with |da| = |cb|: abcd is a parallelogram (a = b + d − c) or an isosceles
+    # trapezoid; its diagonals ac and bd are equally long in the trapezoid only
+    problem = "c d = segment c d; b = free b; a = eqdistance a d c b, on_pline a b d c ? cong a c b d"
+    goal = problem.split("?")[1]
+    pts = [figure(problem, Branches((bit,)), random.Random(3)) for bit in (0, 1)]
+    assert goal_holds(goal, pts[0]) != goal_holds(goal, pts[1])
+    with pytest.raises(UnsupportedConstructionError, match=r"on_pline/eqdistance of a needs a branch condition.*no "
+                                                           r"order condition"):
         translate(problem)
 
 

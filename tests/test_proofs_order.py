@@ -231,3 +231,29 @@ def test_random_statements_agree_with_exact_evaluation_on_the_selected_branch(dr
         assert _exact(setup, dict(ce.values)) is False, (text, ce.values)  # a selected branch fails there
     else:  # unknown: no figure satisfies the condition, or neither a proof nor a counterexample was found
         assert verdict.status == "unknown" and verdict.certificate is None and verdict.counterexample is None, text
+
+
+BISECTOR = """points a b c
+point e = intersection (join a b) (circle a c)
+line bis = anglebisector b a c
+point d = meet bis (join b c)
+{where}
+prove perpendicular (join a d) (join c e)
+"""
+
+
+def test_a_branch_selected_through_a_named_root_is_proved_and_the_other_refuted() -> None:
+    # |ae| = |ac| with e on the ray ab: the triangle ace is isosceles with apex a, so ce is perpendicular to the
+    # internal bisector of ∠bac; on the opposite ray it is perpendicular to the external bisector instead
+    proved = prove(parse_statement(BISECTOR.format(where="where onray e a b")), timeout=30)
+    assert str(proved.status) == "proved" and "order conditions select" in proved.branches
+    wrong = prove(parse_statement(BISECTOR.format(where="where onray e a (reflect b a)")), timeout=30)
+    assert str(wrong.status) == "false"
+
+
+def test_a_root_the_conditions_do_not_name_may_take_either_branch() -> None:
+    # g, a common point of the line ac and the circle about b through c, is either of the two: the conclusion does
+    # not involve it, so the branch of e the condition selects decides alone
+    text = BISECTOR.format(where="point g = intersection (join a c) (circle b c)\nwhere onray e a b")
+    verdict = prove(parse_statement(text), timeout=30)
+    assert str(verdict.status) == "proved" and "order conditions select" in verdict.branches

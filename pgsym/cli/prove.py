@@ -88,6 +88,9 @@ _AG_EXAMPLE = """\b
 AlphaGeometry's problems (a name line, then the problem line):
     pgsym prove --from alphageometry imo_ag_30.txt translated_imo_2000_p6
     pgsym prove --from alphageometry problems.txt --show    # the translations
+Where AlphaGeometry takes a random common point and the goal holds at one of
+the two only, the translation states the point by an order condition ('where')
+that selects it in every random figure, and the verdict is about that point.
 """
 
 

@@ -79,6 +79,7 @@ from .normalisation import normalise
 from .operations import flat
 from .order import condition_values
 from .polynomials import PolynomialRing, default_backend
+from .real_signs import plane_sign
 from .square_roots import MAX_POLYGON, MAX_ROOTS, Root, SquareRootConstructions, _data, roots_of
 from .verdicts import Certificate, Condition, Counterexample, Status, Verdict
 
@@ -730,6 +731,7 @@ def recheck_ordered(claim: Claim, values: dict[str, Any], branch: dict[str, str]
 
 
 _MAX_FACTOR_TERMS = 2000
+_MAX_SIGN_TERMS = 300  # T with named roots, their squares and orientations: factored to find the sign of T
 """The largest polynomial whose sign is looked for by factoring (a larger one is left undecided)."""
 
 
@@ -754,6 +756,8 @@ def _signed_factors(expr: sympy.Expr, gens: Sequence[sympy.Symbol], known: dict[
             s = known.get(sympy.expand(f))
             if s is None and sympy.expand(-f) in known:
                 s = -known[sympy.expand(-f)]
+        if s is None:
+            s = plane_sign(f, gens)  # one or two variables: decided by a cylindrical decomposition
         if s is None:
             return None
         total *= s
@@ -787,6 +791,52 @@ def _known_signs(conditions: list[tuple[str, sympy.Expr]], gens: Sequence[sympy.
     return known
 
 
+def _sign_over_named_root(t: sympy.Expr, params: Sequence[sympy.Symbol], known: dict[sympy.Expr, int],
+                          roots: Sequence[Any], values: dict[Any, Any], small: Callable[[Any], sympy.Expr | None]
+                          ) -> int | None:
+    """The sign of T (wherever it is not 0) when T involves named length roots, whose principal sign is that of
+    their orientation: a root r whose square is a square s² is ±s (the sign of its orientation times that of s);
+    for T = A + r·B with one root r left (r² = q), A and r·B of one sign, or |A| ≤ |r·B| (A² − q·B² ≤ 0) and
+    the sign of r·B known, or |A| ≥ |r·B| and the sign of A known. ``small`` gives a polynomial of the tower as an
+    expression, or None when it is too large to factor. Else None."""
+    present = [r for r in roots if r.named and r.kind == "length" and t.has(r.symbol) and r.orient is not None]
+    signs = {}
+    for root in present:
+        q, orient = small(root.square(values)), small(root.orient(values))
+        if q is None or orient is None or (q.free_symbols | orient.free_symbols) - set(params):
+            return None
+        signs[root] = q, _signed_factors(orient, params, known)
+        s = _rational_root(q, params)
+        ss = None if s is None else _signed_factors(sympy.expand(s), params, known)
+        if ss and signs[root][1]:
+            t = sympy.expand(t.xreplace({root.symbol: signs[root][1] * ss * s}))  # r = sign(r)·|s|
+    left = [r for r in present if t.has(r.symbol)]
+    if any(t.has(r.symbol) for r in roots if r not in left):
+        return None  # a root whose branch the statement leaves open
+    if not left:
+        return _signed_factors(t, params, known)
+    if len(left) > 1:
+        return None
+    [root] = left
+    q, sr = signs[root]
+    if not sr:
+        return None
+    poly = sympy.Poly(t, root.symbol)
+    if poly.degree() > 1:
+        return None
+    b, a = (sympy.expand(c) for c in poly.all_coeffs()) if poly.degree() == 1 else (sympy.Integer(0), t)
+    sa, sb = _signed_factors(a, params, known), _signed_factors(b, params, known)
+    srb = None if sb is None else sb * sr
+    if sa is not None and srb is not None and (sa == srb or 0 in (sa, srb)):
+        return sa or srb
+    norm = _signed_factors(sympy.expand(a * a - q * b * b), params, known)
+    if norm is not None and norm <= 0 and srb is not None:
+        return srb  # |A| ≤ |r·B|
+    if norm is not None and norm >= 0 and sa is not None:
+        return sa  # |A| ≥ |r·B|
+    return None
+
+
 def _selected_branch_proof(claim: Claim, deadline: Any, backend: str | None
                            ) -> tuple[list[str], list[Condition], str] | str:
     """Prove the conclusion on the branch the order conditions select, for one intersection root e (e² = Δ).
@@ -800,16 +850,22 @@ def _selected_branch_proof(claim: Claim, deadline: Any, backend: str | None
     why it does not apply."""
     roots = roots_of(claim)
     free = [r for r in roots if not r.named]
-    if len(free) != 1 or free[0].kind == "unity":
-        return ("the exact selection handles one intersection root; the claim has "
-                f"{len(free)} roots whose branch the statement leaves open")
-    root = free[0]
-    e = root.symbol
+    if not free or any(r.kind == "unity" for r in free):
+        return "the exact selection handles the branches of an intersection root; the claim has none"
     norm, _why = normalise(claim)
     if norm is not None and norm.group not in ("similarity", "euclidean"):
         norm = None  # the order conditions are kept by similarities, not by affine maps or homographies
     norm, tower, values = _framed_values(claim, norm, deadline, backend)
     R = tower.R
+    # the root the conditions select: the conclusion must then hold on its selected branch for every branch of
+    # the other roots (the norm below is 0 modulo all their equations, and T must not involve them)
+    named = [r for r in free if any(not isinstance(p, int) and tower.reduce(p) != 0 and R.to_expr(
+        tower.reduce(p)).has(r.symbol) for _t, p in condition_values(claim, values))]
+    if len(named) != 1:
+        return (f"the exact selection handles one intersection root named by the order conditions; they name "
+                f"{len(named)} of the {len(free)} roots whose branch the statement leaves open")
+    root = named[0]
+    e = root.symbol
     params = [g for g in R.symbols if g not in {r.symbol for r in roots}]
     others = {r.symbol for r in roots} - {e}
     conditions = []
@@ -825,6 +881,10 @@ def _selected_branch_proof(claim: Claim, deadline: Any, backend: str | None
 
     def reduced(x: Any) -> sympy.Expr:  # modulo the defining equations (the other roots' too), as an expression
         return sympy.expand(R.to_expr(tower.reduce(x)))
+
+    def small(x: Any) -> sympy.Expr | None:  # reduced, when small enough to factor
+        y = tower.reduce(x)
+        return None if not isinstance(y, int) and R.nterms(y) > _MAX_SIGN_TERMS else sympy.expand(R.to_expr(y))
 
     delta = tower.reduce(root.square(values))
     at = [i for i, x in enumerate(R.symbols) if x in others]
@@ -859,9 +919,14 @@ def _selected_branch_proof(claim: Claim, deadline: Any, backend: str | None
             t = tower.reduce(g1 * (c0 * g1 + c1 * g0))
             if involves_others(t):  # times Δ ≥ 0 (a real branch), the other roots may cancel
                 t = tower.reduce(t * delta)
-            if involves_others(t) or R.nterms(t) > _MAX_FACTOR_TERMS:
-                continue  # its sign would depend on the other roots' values, or it is too large to factor
-            s = _signed_factors(reduced(t), params, known)
+            if R.nterms(t) > _MAX_FACTOR_TERMS:
+                continue  # too large to factor
+            if involves_others(t):
+                if R.nterms(t) > _MAX_SIGN_TERMS:
+                    continue  # its sign involves the named roots, and it is too large to split by them
+                s = _sign_over_named_root(reduced(t), params, known, roots, values, small)
+            else:
+                s = _signed_factors(reduced(t), params, known)
             if s is not None and s <= 0:
                 why = ("it is 0" if s == 0 else "its factors are squares and factors of one sign"
                        + (" (some fixed by the order conditions without roots)" if known else ""))

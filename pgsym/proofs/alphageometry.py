@@ -22,10 +22,11 @@ numerically: a point already in the figure is avoided, otherwise either is taken
   figure, written ``where onray X V P``; a ray that meets its circle twice in some random figure is refused
   (AlphaGeometry then takes one by the order of its own computation);
 * otherwise either point is meant, which is pgsym's ``intersection`` (a conclusion must hold for both). When the
-  goal holds for one of them only, the problem is ambiguous — AlphaGeometry takes either point at random and
-  draws its figure again until the goal holds, so no order condition of its figure selects the point — and it is
-  refused with :class:`~pgsym.proofs.errors.UnsupportedConstructionError` ("needs a branch condition"), never
-  guessed.
+  goal holds for one of them only, AlphaGeometry (which takes either point at random and draws its figure again
+  until the goal holds) means that one: the translator looks for order conditions on the figure's points that
+  select it in every random figure (:mod:`pgsym.proofs.order_search`) and writes them as ``where`` lines, which
+  the engine proves on the branch they select; a problem where none is found is refused with
+  :class:`~pgsym.proofs.errors.UnsupportedConstructionError` ("needs a branch condition"), never guessed.
 
 Two lines of a problem meet in the plane (AlphaGeometry's ``npara``), while pgsym's ``meet`` of parallel lines
 is their point at infinity: once a square root with two signs is in the statement, each meet is followed by a
@@ -38,9 +39,9 @@ The tracked incidences are exact but incomplete, so the translator also draws th
 random, as AlphaGeometry does) while it writes the statement: an earlier point found on both loci gives the
 other common point too. The goal is then evaluated in a few random figures, on every choice of the random
 common points and with the shapes AlphaGeometry mirrors at random (``isquare``, ``risos``,
-``ieq_triangle``) mirrored: a goal that holds on some choices only needs a branch condition, one that holds
-in some figures only a condition on the figure; both are refused rather than translated into a statement
-pgsym would refute. A goal that held in every random figure but that the engine refutes exactly holds in part
+``ieq_triangle``) mirrored: a goal that holds on some choices only needs a branch condition (found as above, or
+the problem is refused), one that holds in some figures only a condition on the figure (refused): never a
+statement pgsym would refute. A goal that held in every random figure but that the engine refutes exactly holds in part
 of the figures only (AlphaGeometry's figure is drawn until the goal holds): :func:`solve` reports it
 unsupported with that reason, not refuted.
 
@@ -76,6 +77,7 @@ from ..limits import MAX_ARGUMENT_CHARS, MAX_STATEMENT_LINE_CHARS, MAX_STATEMENT
 from .engine import prove
 from .errors import AlphaGeometryError, StatementError, UnsupportedConstructionError
 from .language import KEYWORDS, parse_statement, read_statement_text
+from .order_search import Figure, selecting_conditions
 
 __all__ = ["MAX_AG_BYTES", "MAX_AG_LINE_CHARS", "MAX_AG_PROBLEMS", "OUTCOMES", "Outcome", "Problem",
            "read_alphageometry", "read_alphageometry_file", "solve", "translate"]
@@ -223,6 +225,44 @@ def translate(problem: str, line: int = 0, title: str = "") -> str:
     return _translate(problem, line, title)[0]
 
 
+def _drawn(problem: str, line: int, title: str, seed: int
+           ) -> tuple[_Translator, str, dict[tuple[bool, tuple[int, ...]], bool], list[Figure]] | None:
+    """One random figure of the problem on every choice of its random points (and mirrored, for the shapes
+    AlphaGeometry mirrors at random): the translator of the first choice, the statement, whether the goal holds
+    on each choice, and the figure's points per choice; None when the figure has no real intersection."""
+    try:
+        first = _Translator(line, seed)
+        out = first.run(problem, title)
+        results = {(False, ()): first.goal_holds()}
+        choices = list(itertools.product((0, 1), repeat=min(len(first.either), 3)))
+        flips = (False, True) if first.flippable else (False,)
+        drawings: dict[bool, Figure] = {False: {choices[0]: (first.points(), results[False, ()])}}
+        for flip, bits in list(itertools.product(flips, choices))[1:]:
+            full, bits = bits, bits if any(bits) else ()
+            t = _Translator(line, seed, bits, flip)
+            try:
+                other = t.run(problem, title)
+                holds = t.goal_holds()
+            except _NoFigure:
+                continue  # a degenerate choice (AlphaGeometry would draw again): the others decide
+            if other != out:
+                raise first.branch(first.either, "the translation depends on the choice")
+            results[flip, bits] = holds
+            drawings.setdefault(flip, {})[full] = (t.points(), holds)
+            first.ray_twice = first.ray_twice or t.ray_twice
+            if flip and (False, bits) in results and holds != results[False, bits]:
+                raise UnsupportedConstructionError(
+                    f"unsupported: {first.flippable} needs a branch condition (AlphaGeometry draws it mirrored at "
+                    "random, and the goal holds in one orientation only)", line, construction=first.flippable)
+    except _NoFigure:
+        return None
+    if first.ray_twice:
+        raise first.unsupported(first.ray_twice.split("/")[0], "needs a branch condition: in some figures the ray "
+                                f"({first.ray_twice}) meets the circle twice, and AlphaGeometry then takes one "
+                                "by the order of its own computation")
+    return first, out, results, list(drawings.values())
+
+
 def _translate(problem: str, line: int = 0, title: str = "") -> tuple[str, bool]:
     """The statement text, and whether the goal held in every random figure (else it held in none)."""
     if len(problem) > MAX_AG_LINE_CHARS:
@@ -231,40 +271,19 @@ def _translate(problem: str, line: int = 0, title: str = "") -> tuple[str, bool]
     # a goal that holds on some choices only needs a branch condition, one that holds in some figures only a
     # condition on the figure; neither can be written in pgsym's language, so such a problem is refused.
     text, either, truths = None, [], []
+    figures: list[Figure] = []  # each random figure: per choice, its points and whether the goal holds
+    seed = 0
     for seed in range(_NUMERIC_TRIES):
-        try:
-            first = _Translator(line, seed)
-            out = first.run(problem, title)
-            results = {(False, ()): first.goal_holds()}
-            choices = list(itertools.product((0, 1), repeat=min(len(first.either), 3)))
-            flips = (False, True) if first.flippable else (False,)
-            for flip, bits in list(itertools.product(flips, choices))[1:]:
-                bits = bits if any(bits) else ()
-                t = _Translator(line, seed, bits, flip)
-                try:
-                    other = t.run(problem, title)
-                    holds = t.goal_holds()
-                except _NoFigure:
-                    continue  # a degenerate choice (AlphaGeometry would draw again): the others decide
-                if other != out:
-                    raise first.branch(first.either, "the translation depends on the choice")
-                results[flip, bits] = holds
-                first.ray_twice = first.ray_twice or t.ray_twice
-                if flip and (False, bits) in results and holds != results[False, bits]:
-                    raise UnsupportedConstructionError(
-                        f"unsupported: {first.flippable} needs a branch condition (AlphaGeometry draws it mirrored at "
-                        "random, and the goal holds in one orientation only)", line, construction=first.flippable)
-        except _NoFigure:
+        drawn = _drawn(problem, line, title, seed)
+        if drawn is None:
             continue  # the random figure had no real intersection: another one, as AlphaGeometry does
-        if first.ray_twice:
-            raise first.unsupported(first.ray_twice.split("/")[0], "needs a branch condition: in some figures the ray "
-                                    f"({first.ray_twice}) meets the circle twice, and AlphaGeometry then takes one "
-                                    "by the order of its own computation")
+        first, out, results, drawings = drawn
         if text is None:
-            text, either = out, first.either
+            text, either, named = out, first.either, (first.either_points, list(first.defined.values()))
         elif out != text:
             raise first.branch(first.either, "the translation depends on the figure")
         truths += [(seed, holds) for holds in results.values()]
+        figures += drawings
         if len({s for s, _ in truths}) >= _FIGURES:
             break
     if text is None:
@@ -276,7 +295,22 @@ def _translate(problem: str, line: int = 0, title: str = "") -> tuple[str, bool]
         for seed, holds in truths:
             by_seed.setdefault(seed, set()).add(holds)
         if any(len(v) == 2 for v in by_seed.values()):
-            raise _Translator(line).branch(either, "the goal holds for one of the two common points only")
+            # AlphaGeometry draws its figure until the goal holds: the point it means is the one an order condition
+            # of every figure selects, if one does; the engine then proves the goal on the branch it selects
+            # more figures than for the verdict above: a condition must hold in every one of them
+            for extra in range(seed + 1, seed + 1 + _SELECTION_TRIES):
+                drawn = _drawn(problem, line, title, extra)
+                if drawn is not None and drawn[1] == text:
+                    figures += drawn[3]
+            found = selecting_conditions(figures, *named) if len(either) <= 3 else None
+            if found is None:
+                raise _Translator(line).branch(either, "the goal holds for one of the two common points only, and "
+                                                       "no order condition on the figure's points (one, or two "
+                                                       "together) selects that point in every random figure")
+            head, prove = text.split("\nprove ", 1)
+            where = [f"where {word} {' '.join(args)}  # selects the common point where the goal holds"
+                     for word, args in found]
+            return "\n".join([head, *where, "prove " + prove]), True
         raise UnsupportedConstructionError("unsupported: the goal holds in some random figures only (AlphaGeometry's "
                                            "figure fixes an order or a side that pgsym's language cannot state)",
                                            line, construction="figure")
@@ -316,6 +350,7 @@ class _Translator:
         self.flip, self.flippable = flip, ""  # the mirrored figure of a shape AG mirrors at random
         self.numeric = _Numeric(seed, bits)
         self.either: list[str] = []  # the constructions of the points AG takes at random (either common point)
+        self.either_points: list[str] = []  # those points (pgsym names)
         self.ray_twice = ""  # a ray that met its circle twice in this figure (AG then takes one by its own order)
         self.goal_words: list[str] = []
         self.out: list[str] = []
@@ -340,9 +375,12 @@ class _Translator:
         name = either[0] if either else "intersection"
         return UnsupportedConstructionError(f"unsupported: {name} needs a branch condition ({why}; AlphaGeometry "
                                             "takes either point at random and draws its figure again until the goal "
-                                            "holds, so the problem does not say which point it means: no order "
-                                            "condition of its figure selects it)", self.line,
+                                            "holds)", self.line,
                                             construction=name.split()[0])
+
+    def points(self) -> dict[str, complex]:
+        """The float values of the problem's points in this figure (pgsym names)."""
+        return {x: self.numeric.values[x] for x in self.defined.values()}
 
     def goal_holds(self) -> bool:
         """Whether the goal holds in the float figure."""
@@ -558,6 +596,7 @@ class _Translator:
         elif one.kind == "line":
             x = self.define(ag)
             self.either.append(f"{one.name}/{two.name} of {ag}")
+            self.either_points.append(x)
             self.emit(f"point {x} = intersection ({one.expr}) ({two.expr})")
         elif common:
             x = self.define(ag)
@@ -565,6 +604,7 @@ class _Translator:
         else:
             x = self.define(ag)
             self.either.append(f"{one.name}/{two.name} of {ag}")
+            self.either_points.append(x)
             self.emit(f"point {x} = intersection ({one.expr}) ({two.expr})")
         one.add(ag)
         two.add(ag)
@@ -1220,6 +1260,7 @@ _UNSUPPORTED: dict[str, str] = {
 
 _NUMERIC_TRIES = 16
 _FIGURES = 8  # random figures the goal is evaluated in
+_SELECTION_TRIES = 24  # more random figures an order condition that selects a random point must hold in
 _TOKENS = re.compile(r"\(|\)|[^\s()]+")
 
 

@@ -126,7 +126,8 @@ class OrderConditions:
                                       "points there")
         if len(self.order_conditions) >= MAX_ORDER_CONDITIONS:
             raise ObjectTypeError(f"claim {self.name!r} would have more than {MAX_ORDER_CONDITIONS} order conditions")
-        cond = OrderCondition(kind, nodes, _WORDS[kind](*(n.name for n in nodes)))
+        # an inline object is named by its text (``midpoint a b``): in brackets, as the statement writes it
+        cond = OrderCondition(kind, nodes, _WORDS[kind](*(f"({n.name})" if " " in n.name else n.name for n in nodes)))
         self.order_conditions.append(cond)
         return cond
 

@@ -1,0 +1,54 @@
+"""The sign of a polynomial on the whole real plane, decided exactly (pgsym.proofs.real_signs)."""
+
+from fractions import Fraction
+
+import sympy
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from pgsym.proofs.real_signs import plane_sign
+
+x, y = sympy.symbols("x y")
+
+
+def test_definite_polynomials():
+    assert plane_sign(x**2 + y**2 + 1, [x, y]) == 1
+    assert plane_sign(-(x**2 + 1) * (y - 3)**2, [x, y]) == -1
+    # 2x⁴ + 4x³ + 3x²y² + 2x² + 4xy² + y⁴ + y² = 2x²(x + 1)² + y²(3x + 1)(x + 1) + y⁴: as a quadratic in y²
+    # its discriminant is (x + 1)²(x² + 6x + 1), negative exactly where (3x + 1)(x + 1) < 0, so it is ≥ 0
+    assert plane_sign(2*x**4 + 4*x**3 + 3*x**2*y**2 + 2*x**2 + 4*x*y**2 + y**4 + y**2, [x, y]) == 1
+
+
+def test_motzkin_polynomial_is_nonnegative_though_no_sum_of_squares():
+    # x⁴y² + x²y⁴ − 3x²y² + 1 ≥ 0 by the AM-GM inequality on x⁴y², x²y⁴, 1; it is zero at (±1, ±1)
+    assert plane_sign(x**4 * y**2 + x**2 * y**4 - 3 * x**2 * y**2 + 1, [x, y]) == 1
+
+
+def test_polynomials_that_change_sign():
+    assert plane_sign(x**2 + y**2 - 1, [x, y]) is None  # −1 at the origin, 3 at (2, 0)
+    assert plane_sign(x * y, [x, y]) is None
+    assert plane_sign(x**3 - x, [x]) is None
+    # the Motzkin polynomial less 1/100 is negative at (1, 1): 1 + 1 − 3 + 1 − 1/100
+    assert plane_sign(x**4 * y**2 + x**2 * y**4 - 3 * x**2 * y**2 + 1 - sympy.Rational(1, 100), [x, y]) is None
+
+
+def test_more_than_two_variables_is_not_decided():
+    z = sympy.Symbol("z")
+    assert plane_sign(x**2 + y**2 + z**2 + 1, [x, y, z]) is None
+
+
+small = st.integers(-3, 3)
+
+
+@settings(max_examples=40, deadline=None)
+@given(st.lists(st.tuples(small, st.integers(0, 3), st.integers(0, 3)), min_size=1, max_size=5),
+       st.lists(st.tuples(small, small), min_size=3, max_size=3))
+def test_a_decided_sign_holds_at_rational_points(terms, points):
+    f = sum(c * x**i * y**j for c, i, j in terms) + x * y - 1  # x·y − 1 makes f change sign often
+    for g in (f, f**2 + 1, -(f**2) * (x**2 + 1)):
+        s = plane_sign(sympy.expand(g), [x, y])
+        for px, py in [*points, (0, 0)]:
+            value = sympy.expand(g).subs({x: Fraction(px, 2), y: Fraction(py, 3)})
+            assert s is None or s * value >= 0
+    assert plane_sign(sympy.expand(f**2 + 1), [x, y]) == 1  # a square plus one is positive
+    assert plane_sign(sympy.expand(-(f**2) * (x**2 + 1)), [x, y]) == -1
