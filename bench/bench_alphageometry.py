@@ -1,7 +1,8 @@
 """Benchmark: AlphaGeometry's problem sets (tests/data/alphageometry) translated and proved.
 
 Every problem is translated (:mod:`pgsym.proofs.alphageometry`) and proved with the engine's timeout of
-10 s, each in a child process stopped at 30 s (then it counts as unknown). One JSON line per set: the
+10 s, each in a child process stopped at 30 s (then it counts as unknown); its time is the translation's and
+the proof's. One JSON line per set: the
 counts proved / unknown / wrong / unsupported / errors; the median time of the translated problems
 (``median_s``, seconds, a timeout counting as its time) and of the proved ones (``median_proved_s``);
 ``wrong_either``, the wrong ones whose translation lets either common point of a line and a circle (or
@@ -31,11 +32,12 @@ HARD_LIMIT_S = 30.0
 EITHER = re.compile(r"=\s*intersection\b")
 
 
-def _solve(path: Path, index: int) -> dict:
-    """The outcome of one problem as plain words (run in a child process)."""
-    from pgsym.proofs.alphageometry import read_alphageometry_file, solve
+def _solve(name: str, text: str) -> dict:
+    """The outcome of one problem, translated and proved in a child process, as plain words."""
+    from pgsym.proofs.alphageometry import read_alphageometry, solve
 
-    outcome = solve(read_alphageometry_file(path)[index], timeout=LIMIT_S)
+    [problem] = read_alphageometry(f"{name}\n{text}")
+    outcome = solve(problem, timeout=LIMIT_S)
     return {"status": outcome.status, "message": outcome.message[:200],
             "reason": str(getattr(outcome.verdict, "reason", "") or "")[:200]}
 
@@ -50,13 +52,14 @@ def main() -> None:
     for name in SETS:
         path = DATA / name
         problems = read_alphageometry_file(path)
+        lines = path.read_text(encoding="utf-8").splitlines()
         if options.only:
             problems = problems[:options.only]
         counts: Counter[str] = Counter()
         unsupported: Counter[str] = Counter()
         times, proved_times = [], []
-        for index, problem in enumerate(problems):
-            elapsed, result = run_with_timeout(_solve, (path, index), HARD_LIMIT_S)
+        for problem in problems:
+            elapsed, result = run_with_timeout(_solve, (problem.name, lines[problem.line - 1]), HARD_LIMIT_S)
             if elapsed is None:
                 elapsed, result = HARD_LIMIT_S, {"status": "unknown", "message": "", "reason": "stopped at 30 s"}
             status = result["status"]

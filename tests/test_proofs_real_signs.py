@@ -19,6 +19,13 @@ def test_definite_polynomials():
     assert plane_sign(2*x**4 + 4*x**3 + 3*x**2*y**2 + 2*x**2 + 4*x*y**2 + y**4 + y**2, [x, y]) == 1
 
 
+def test_a_leading_coefficient_that_vanishes_somewhere():
+    # x²y² + 1 ≥ 1; its leading coefficient in y, x², is 0 on the line x = 0, where it is the constant 1
+    assert plane_sign(x**2 * y**2 + 1, [x, y]) == 1
+    # x·y² + y + x is x at y = 0: it takes both signs
+    assert plane_sign(x * y**2 + y + x, [x, y]) is None
+
+
 def test_motzkin_polynomial_is_nonnegative_though_no_sum_of_squares():
     # x⁴y² + x²y⁴ − 3x²y² + 1 ≥ 0 by the AM-GM inequality on x⁴y², x²y⁴, 1; it is zero at (±1, ±1)
     assert plane_sign(x**4 * y**2 + x**2 * y**4 - 3 * x**2 * y**2 + 1, [x, y]) == 1

@@ -34,6 +34,12 @@ MARGIN = 1e-6
 MAX_PAIRS = 400
 """The most candidates combined in pairs when no single condition selects the points."""
 
+MAX_CANDIDATES = 40_000
+"""The most conditions tried (those on the figure's points always; then midpoints while the budget lasts)."""
+
+MAX_EVALUATIONS = 250_000
+"""The most evaluations of a condition in a figure, for the whole search (about a second)."""
+
 MAX_MIDPOINTS = 28
 """The most midpoints of two points tried as points of a condition (those of 8 points)."""
 
@@ -111,24 +117,38 @@ def selecting_conditions(figures: Sequence[Figure], either: Sequence[str], point
     the conditions may name (in definition order). A condition names a random point and earlier points of
     ``points`` (or any point, when those do not suffice)."""
     choices = sorted({c for f in figures for c in f})
-    holds = [sum(1 << i for i, c in enumerate(choices) if c in f and f[c][1]) for f in figures]
-    present = [sum(1 << i for i, c in enumerate(choices) if c in f) for f in figures]
-    if not all(holds):
-        return None  # a figure where the goal holds at no choice: no order condition of the points selects it
-    useful: list[tuple[Condition, list[int]]] = []
     fixed = [p for p in points if p not in either]
     midpoints = [f"(midpoint {p} {q})" for p, q in itertools.combinations(fixed, 2)][:MAX_MIDPOINTS]
+    # per figure, per choice: every point and midpoint by name (None where the choice fell degenerate); the figures
+    # where the goal holds at fewest choices first, as they rule out most candidates
+    tables = [[None if c not in f else {**f[c][0], **{m: (f[c][0][m[10:-1].split()[0]]
+                                                          + f[c][0][m[10:-1].split()[1]]) / 2 for m in midpoints}}
+               for c in choices] for f in figures]
+    holds = [sum(1 << i for i, c in enumerate(choices) if c in f and f[c][1]) for f in figures]
+    if not all(holds):
+        return None  # a figure where the goal holds at no choice: no order condition of the points selects it
+    order = sorted(range(len(figures)), key=lambda i: (holds[i].bit_count(), i))
+    tables, holds = [tables[i] for i in order], [holds[i] for i in order]
+    present = [sum(1 << i for i, v in enumerate(t) if v is not None) for t in tables]
+    useful: list[tuple[Condition, list[int]]] = []
     # the figure's points first; then one midpoint of two points that are not random (a single condition proves
     # the branch; two together only say which point is meant)
     passes = [(list(points), [c for x in either for c in _candidates(x, points)])]
     passes += [([*points, m], [c for x in either for c in _candidates(x, [*points, m]) if m in c[1]])
                for m in midpoints]
+    tried, budget = 0, [MAX_EVALUATIONS]
     for names, candidates in passes:
         # one random point named, and earlier points first: a condition on the points known when x is chosen reads
         # as the figure's order, and the engine selects the branch of one root at a time
         candidates.sort(key=lambda c: (len(set(c[1]) & set(either)), max(names.index(a) for a in c[1])))
+        if names is not passes[0][0] and tried + len(candidates) > MAX_CANDIDATES:
+            break  # a counted budget, not a clock: the translation must not depend on the machine
+        tried += len(candidates)
         for cond in candidates:
-            kept = _kept(figures, choices, cond, present, holds)
+            budget[0] -= 1
+            if budget[0] < 0:
+                return None
+            kept = _kept(tables, cond, holds, budget)
             if kept is None:
                 continue
             if all(k and not k & ~h for k, h in zip(kept, holds, strict=True)):
@@ -142,30 +162,23 @@ def selecting_conditions(figures: Sequence[Figure], either: Sequence[str], point
     return None
 
 
-def _value(values: dict[str, complex], name: str) -> complex:
-    """A point's value, or the midpoint ``(midpoint P Q)`` of two."""
-    if name.startswith("(midpoint "):
-        p, q = name[10:-1].split()
-        return (values[p] + values[q]) / 2
-    return values[name]
-
-
-def _kept(figures: Sequence[Figure], choices: list[tuple[int, ...]], cond: Condition, present: list[int],
-          holds: list[int]) -> list[int] | None:
+def _kept(tables: list[list[dict[str, complex] | None]], cond: Condition, holds: list[int], budget: list[int]
+          ) -> list[int] | None:
     """For each figure, the choices (bits of a mask) the condition keeps; None if it is undecided in one, or keeps
     no choice where the goal holds in one (then neither it nor a pair with it selects; most candidates stop at
     the first figure)."""
     word, args = cond
     out = []
-    for figure, here, good in zip(figures, present, holds, strict=True):
+    for table, good in zip(tables, holds, strict=True):
         mask = 0
-        for i, choice in enumerate(choices):
-            if here >> i & 1:
-                verdict = condition_holds(word, [_value(figure[choice][0], a) for a in args])
+        for i, values in enumerate(table):
+            if values is not None:
+                budget[0] -= 1
+                verdict = condition_holds(word, [values[a] for a in args])
                 if verdict is None:
                     return None
                 mask |= verdict << i
-        if not mask & good:
+        if not mask & good or budget[0] < 0:
             return None
         out.append(mask)
     return out

@@ -25,7 +25,7 @@ import sympy
 
 __all__ = ["MAX_DEGREE", "plane_sign"]
 
-MAX_DEGREE = 24
+MAX_DEGREE = 16
 """The largest total degree decided (the discriminant of a larger polynomial costs too much)."""
 
 
@@ -70,8 +70,11 @@ def plane_sign(f: sympy.Expr, gens: Sequence[sympy.Symbol]) -> int | None:
             return plane_sign(poly.as_expr(), [x])
         lead = sympy.Poly(poly.as_poly(y).LC(), x)
         disc = sympy.Poly(sympy.discriminant(poly.as_expr(), y), x) if poly.degree(y) > 1 else sympy.Poly(1, x)
+        cuts = lead * disc
+        if cuts.is_zero:
+            return None  # not squarefree after all: refuse rather than miss a strip
         signs = set()
-        for sx in _samples(lead * disc):
+        for sx in _samples(cuts):
             fibre = sympy.Poly(poly.as_expr().subs(x, sympy.Rational(sx.numerator, sx.denominator)), y)
             for sy in _samples(fibre):
                 signs.add(_sign_at(poly, [sx, sy]))
