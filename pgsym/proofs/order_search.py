@@ -131,30 +131,31 @@ def selecting_conditions(figures: Sequence[Figure], either: Sequence[str], point
     tables, holds = [tables[i] for i in order], [holds[i] for i in order]
     present = [sum(1 << i for i, v in enumerate(t) if v is not None) for t in tables]
     useful: list[tuple[Condition, list[int]]] = []
-    # the figure's points first; then one midpoint of two points that are not random (a single condition proves
-    # the branch; two together only say which point is meant)
-    passes = [(list(points), [c for x in either for c in _candidates(x, points)])]
-    passes += [([*points, m], [c for x in either for c in _candidates(x, [*points, m]) if m in c[1]])
-               for m in midpoints]
-    tried, budget = 0, [MAX_EVALUATIONS]
-    for names, candidates in passes:
-        # one random point named, and earlier points first: a condition on the points known when x is chosen reads
-        # as the figure's order, and the engine selects the branch of one root at a time
-        candidates.sort(key=lambda c: (len(set(c[1]) & set(either)), max(names.index(a) for a in c[1])))
-        if names is not passes[0][0] and tried + len(candidates) > MAX_CANDIDATES:
+    # a condition naming one random point first (the engine selects the branch of one root at a time); then the
+    # figure's points before one midpoint of two points that are not random; then earlier points first (a
+    # condition on the points known when x is chosen reads as the figure's order). A single condition proves the
+    # branch; two together only say which point is meant
+    candidates = [c for x in either for c in _candidates(x, points)]
+    ranked = [((len(set(c[1]) & set(either)), 0, max(points.index(a) for a in c[1])), c) for c in candidates]
+    for m in midpoints:
+        if len(ranked) > MAX_CANDIDATES:
             break  # a counted budget, not a clock: the translation must not depend on the machine
-        tried += len(candidates)
-        for cond in candidates:
-            budget[0] -= 1
-            if budget[0] < 0:
-                return None
-            kept = _kept(tables, cond, holds, budget)
-            if kept is None:
-                continue
-            if all(k and not k & ~h for k, h in zip(kept, holds, strict=True)):
-                return [cond]
-            if kept != present and names is passes[0][0]:
-                useful.append((cond, kept))
+        names = [*points, m]
+        ranked += [((len(set(c[1]) & set(either)), 1, max(names.index(a) for a in c[1])), c)
+                   for x in either for c in _candidates(x, names) if m in c[1]]
+    ranked.sort(key=lambda kc: kc[0])
+    budget = [MAX_EVALUATIONS]
+    for (_, midpoint, _), cond in ranked:
+        budget[0] -= 1
+        kept = _kept(tables, cond, holds, budget)
+        if budget[0] < 0:
+            break
+        if kept is None:
+            continue
+        if all(k and not k & ~h for k, h in zip(kept, holds, strict=True)):
+            return [cond]
+        if kept != present and not midpoint:
+            useful.append((cond, kept))
     for (one, a), (two, b) in itertools.combinations(useful[:MAX_PAIRS], 2):
         kept = [x & y for x, y in zip(a, b, strict=True)]
         if all(k and not k & ~h for k, h in zip(kept, holds, strict=True)):
