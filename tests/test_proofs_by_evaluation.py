@@ -179,6 +179,20 @@ def test_degree_bounds_of_a_meet_by_hand():
         assert max(m[i] for m, _ in R.terms(poly)) == bound[s]
 
 
+def test_the_conclusion_products_at_a_grid_point_are_counted():
+    # A, B = (x, y, 1): l = A × B has three coordinates of two terms each (A_y − B_y, B_x − A_x, A_x B_y − A_y B_x),
+    # and lᵀA forms three products of one term by two: 6 term products. A product in C cannot be interrupted, so
+    # a grid point's conclusion must not start one beyond its limit (it used to be formed whatever its size)
+    c = Claim("on its line", "A lies on AB")
+    A, B = c.free_point("A"), c.free_point("B")
+    c.conclude_incident(A, c.join("l", A, B))
+    R = PolynomialRing(c.parameters)
+    values = evaluate(c, R)
+    with pytest.raises(TooLarge, match="more than 5"):
+        conclusion_polynomials(c, values, limit=5)
+    assert conclusion_polynomials(c, values, limit=6) == [("lᵀA", 0)]
+
+
 # -- property tests: random constructions against the full expansion ------------------------------------------
 
 coefficient = st.integers(-3, 3)

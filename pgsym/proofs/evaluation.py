@@ -28,8 +28,8 @@ from .claims import Claim, Node
 from .operations import flat, map_nested
 from .polynomials import PolynomialRing
 
-__all__ = ["CANCEL_FROM", "cancel_common_denominator", "claim_rng", "conclusion_polys", "conclusion_values", "evaluate",
-           "nonzero_requirements", "objects_to_check"]
+__all__ = ["CANCEL_FROM", "METER_FROM", "cancel_common_denominator", "claim_rng", "conclusion_polys",
+           "conclusion_values", "evaluate", "nonzero_requirements", "objects_to_check"]
 
 
 def evaluate(claim: Claim, scalar: Callable[[Any], Any], reduce: Callable[[Any], Any] | None = None,
@@ -39,9 +39,12 @@ def evaluate(claim: Claim, scalar: Callable[[Any], Any], reduce: Callable[[Any],
     """Every object's value, in the order of construction, with the claim's parameters mapped by ``scalar``.
 
     ``reduce`` is applied to each entry as it is made (a remainder modulo equations, a residue modulo a prime);
-    with ``ring`` a construction that would need more than :data:`~pgsym.proofs.budget.MAX_WORK` term products
-    raises :class:`~pgsym.proofs.budget.TooLarge` before it starts; ``after(node, values)`` runs once each value
-    is known (the square-root prover adds a root's defining equation there); ``max_work`` replaces MAX_WORK.
+    with ``ring`` each construction's term products are first estimated on stand-ins
+    (:func:`~pgsym.proofs.budget.estimate`, an upper bound); beyond :data:`METER_FROM` they are counted as they are
+    formed, and a construction that would need more than :data:`~pgsym.proofs.budget.MAX_WORK` of them, or a
+    product that would not end before the deadline, raises :class:`~pgsym.proofs.budget.TooLarge` before that
+    product starts; ``after(node, values)`` runs once each value is known (the square-root prover adds a root's
+    defining equation there); ``max_work`` replaces MAX_WORK.
 
     >>> from pgsym.proofs.claims import Claim
     >>> c = Claim("x", "x")
@@ -58,7 +61,7 @@ def evaluate(claim: Claim, scalar: Callable[[Any], Any], reduce: Callable[[Any],
         if ring is not None:
             limit = budget.MAX_WORK if max_work is None else max_work
             work = estimate(lambda v, node=node: node.operation.formula(node, v, scalar), args, ring)
-            if work is not None and work > limit:
+            if work is not None and work > min(limit, METER_FROM):
                 value = _counted(lambda v, wrap, node=node: node.operation.formula(node, v, lambda e: wrap(scalar(e))),
                                  args, limit, deadline, f"{node.name} would need about {work:.1e} term products")
         if value is None:
@@ -78,9 +81,10 @@ def conclusion_polys(claim: Claim, values: dict[Node, Any], skip: Any = (), ring
     """(label, polynomial) pairs that must all vanish; rank conclusions are handled separately.
 
     With ``ring`` (exact polynomials of that ring) each conclusion is first formed on
-    :class:`~pgsym.proofs.budget.Cost` stand-ins, and one that would need more than
-    :data:`~pgsym.proofs.budget.MAX_WORK` term products raises :class:`~pgsym.proofs.budget.TooLarge` before it
-    starts.
+    :class:`~pgsym.proofs.budget.Cost` stand-ins; beyond :data:`METER_FROM` term products they are counted as they
+    are formed, and one that would need more than :data:`~pgsym.proofs.budget.MAX_WORK` of them raises
+    :class:`~pgsym.proofs.budget.TooLarge` before the product that would pass it. Two ratios have the gcd of
+    their denominators divided out first (:func:`cancel_common_denominator`).
     """
     out: list[tuple[str, Any]] = []
     for c in claim.conclusions:
@@ -92,7 +96,7 @@ def conclusion_polys(claim: Claim, values: dict[Node, Any], skip: Any = (), ring
             vals = list(cancel_common_denominator(vals))
         if ring is not None:
             work = estimate(lambda v, kind=c.kind, names=names: conclusion_values(kind, v, names), vals, ring)
-            if work is not None and work > budget.MAX_WORK:
+            if work is not None and work > min(budget.MAX_WORK, METER_FROM):
                 why = f"the conclusion {c.text or c.kind} would need about {work:.1e} term products"
                 out.extend(_counted(lambda v, wrap, kind=c.kind, names=names: tuple(conclusion_values(kind, v, names)),
                                     vals, budget.MAX_WORK, None, why))
@@ -143,6 +147,11 @@ def _counted(compute: Callable[[list[Any], Callable[[Any], Any]], Any], args: li
     except Exception as err:  # a formula that compares or converts its values: refused, as by the estimate
         raise TooLarge(why) from err
 
+
+METER_FROM = 10**6
+"""Estimated term products from which a construction's products are counted one by one as they are formed
+(:func:`~pgsym.proofs.budget.metered`: the estimate is an upper bound, often far above the truth, and each counted
+product checks the time limit before it starts); below, the formula runs as it is."""
 
 CANCEL_FROM = 10**6
 """Term products from which two ratios' denominators are divided by their gcd before cross-multiplying (below,
