@@ -141,7 +141,7 @@ def _counted(compute: Callable[[list[Any], Callable[[Any], Any]], Any], args: li
     try:
         return metered(compute, args, limit, deadline)
     except TooLarge as err:
-        raise TooLarge(f"{why} (more than {limit:.1e} counted)") from err
+        raise TooLarge(f"{why} (counted: {err.args[0]})") from err
     except Timeout:
         raise
     except Exception as err:  # a formula that compares or converts its values: refused, as by the estimate
