@@ -145,9 +145,9 @@ def test_the_cancelled_cross_product_times_the_gcd_is_the_cross_product(n1, n2, 
         (m1, q1), (m2, q2) = cancel_common_denominator([(n1, d1), (n2, d2)])
     finally:
         evaluation.CANCEL_FROM = old
-    assert m1 == n1 and m2 == n2
-    assert divmod(d1, q1)[1] == 0 and divmod(d2, q2)[1] == 0
-    common, rest = divmod(d1, q1)
-    assert rest == 0 and common * q2 == d2  # one common factor: dᵢ = common·qᵢ
-    assert n1 * d2 - n2 * d1 == common * (n1 * q2 - n2 * q1)
+    e = R.to_expr
+    common = sympy.cancel(e(d1) / e(q1))  # dᵢ = common·qᵢ with one polynomial common to both
+    assert m1 == n1 and m2 == n2 and sympy.fraction(common)[1].is_number
+    assert sympy.expand(common * e(q2) - e(d2)) == 0
+    assert sympy.expand(e(n1 * d2 - n2 * d1) - common * e(n1 * q2 - n2 * q1)) == 0
     assert (n1 * d2 - n2 * d1 == 0) == (n1 * q2 - n2 * q1 == 0)

@@ -180,9 +180,12 @@ def cancel_common_denominator(vals: Sequence[Any]) -> tuple[tuple[Any, Any], tup
         return (n1, d1), (n2, d2)
     if d1 == d2:
         return (n1, 1), (n2, 1)
-    g = d1.gcd(d2)
-    (q1, r1), (q2, r2) = divmod(d1, g), divmod(d2, g)
-    if r1 != 0 or r2 != 0:  # a gcd divides both: not reached
+    try:
+        g = d1.gcd(d2)
+        (q1, r1), (q2, r2) = divmod(d1, g), divmod(d2, g)
+    except (ArithmeticError, TypeError):  # a ring whose division fails on constants: keep the denominators
+        return (n1, d1), (n2, d2)
+    if r1 != 0 or r2 != 0 or q1 * g != d1 or q2 * g != d2:  # a gcd divides both: not reached
         return (n1, d1), (n2, d2)
     return (n1, q1), (n2, q2)
 
