@@ -151,3 +151,23 @@ def test_the_cancelled_cross_product_times_the_gcd_is_the_cross_product(n1, n2, 
     assert sympy.expand(common * e(q2) - e(d2)) == 0
     assert sympy.expand(e(n1 * d2 - n2 * d1) - common * e(n1 * q2 - n2 * q1)) == 0
     assert (n1 * d2 - n2 * d1 == 0) == (n1 * q2 - n2 * q1 == 0)
+
+
+def test_a_formula_that_cannot_run_on_counted_values_runs_as_it_is_when_the_estimate_fits(monkeypatch):
+    # a formula that refuses counted values (as one that inspects its values' type would); with every formula
+    # counted (METER_FROM = 0): within a budget its estimate fits (A_x·A_x: 1·1 = 1 term product) it runs as it
+    # is; beyond it (a budget of 0), it is refused as by the estimate alone
+    monkeypatch.setattr(evaluation, "METER_FROM", 0)
+    c = Claim("typed", "a formula that refuses counted values")
+    A = c.free_point("A")
+    R = PolynomialRing(c.parameters)
+
+    def square_x(a: tuple) -> tuple:
+        if isinstance(a[0], budget.Metered):
+            raise TypeError("not a polynomial")
+        return (a[0] * a[0],)
+
+    c.formula("s", "scalar", square_x, A)
+    assert R.to_expr(evaluate(c, R, ring=R)[c.nodes["s"]][0]) == sympy.Symbol("A_x") ** 2
+    with pytest.raises(TooLarge, match="would need about 1"):
+        evaluate(c, R, ring=R, max_work=0)

@@ -399,7 +399,7 @@ def identity_by_evaluation(claim: Claim, substitution: dict[sympy.Symbol, Any], 
         failing.points = total
         return failing
     shown = ", ".join(f"{gens[i]}: {degree[i]}" for i in order)
-    steps = [f"the expansion was not attempted ({why})",
+    steps = [f"the expansion was not carried out ({why})",
              f"degree bounds propagated through the {len(claim.nodes)} constructions without expanding "
              "(the degree of a product is at most the sum of the degrees, that of a sum at most the larger"
              + ("; a root r with r² = q counts as half the degree of q, rounded up" if tower is not None else "")

@@ -63,7 +63,8 @@ def evaluate(claim: Claim, scalar: Callable[[Any], Any], reduce: Callable[[Any],
             work = estimate(lambda v, node=node: node.operation.formula(node, v, scalar), args, ring)
             if work is not None and work > min(limit, METER_FROM):
                 value = _counted(lambda v, wrap, node=node: node.operation.formula(node, v, lambda e: wrap(scalar(e))),
-                                 args, limit, deadline, f"{node.name} would need about {work:.1e} term products")
+                                 args, limit, deadline, f"{node.name} would need about {work:.1e} term products",
+                                 work <= limit)
         if value is None:
             value = node.operation.formula(node, args, scalar)
         if reduce is not None:
@@ -98,9 +99,11 @@ def conclusion_polys(claim: Claim, values: dict[Node, Any], skip: Any = (), ring
             work = estimate(lambda v, kind=c.kind, names=names: conclusion_values(kind, v, names), vals, ring)
             if work is not None and work > min(budget.MAX_WORK, METER_FROM):
                 why = f"the conclusion {c.text or c.kind} would need about {work:.1e} term products"
-                out.extend(_counted(lambda v, wrap, kind=c.kind, names=names: tuple(conclusion_values(kind, v, names)),
-                                    vals, budget.MAX_WORK, None, why))
-                continue
+                found = _counted(lambda v, wrap, kind=c.kind, names=names: tuple(conclusion_values(kind, v, names)),
+                                 vals, budget.MAX_WORK, None, why, work <= budget.MAX_WORK)
+                if found is not None:
+                    out.extend(found)
+                    continue
         out.extend(conclusion_values(c.kind, vals, names))
     return out
 
@@ -133,18 +136,21 @@ def conclusion_values(kind: str, vals: list[Any], names: list[str]) -> list[tupl
 
 
 def _counted(compute: Callable[[list[Any], Callable[[Any], Any]], Any], args: list[Any], limit: int,
-             deadline: Deadline | None, why: str) -> Any:
-    """A computation the estimate refused, run with its term products counted (:func:`~pgsym.proofs.budget.metered`):
-    the estimate bounds the number of terms of each product by the product of its factors' numbers of terms, far
-    above the truth for polynomials dense in a few variables; the count stops before the product that would pass
-    the limit, and then ``why`` (the estimate) is the reason."""
+             deadline: Deadline | None, why: str, fits: bool) -> Any:
+    """A large computation run with its term products counted (:func:`~pgsym.proofs.budget.metered`): the estimate
+    bounds the number of terms of each product by the product of its factors' numbers of terms, far above the truth
+    for polynomials dense in a few variables; the count stops before the product that would pass the limit or not
+    end in the time left, and then ``why`` (the estimate) is the reason. A formula that cannot run on counted
+    values gives None when the estimate ``fits`` (the caller runs it as it is), else the estimate's refusal."""
     try:
         return metered(compute, args, limit, deadline)
     except TooLarge as err:
         raise TooLarge(f"{why} (counted: {err.args[0]})") from err
     except Timeout:
         raise
-    except Exception as err:  # a formula that compares or converts its values: refused, as by the estimate
+    except Exception as err:  # a formula that compares or converts its values
+        if fits:
+            return None
         raise TooLarge(why) from err
 
 
