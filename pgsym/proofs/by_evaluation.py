@@ -418,6 +418,11 @@ def identity_by_evaluation(claim: Claim, substitution: dict[sympy.Symbol, Any], 
                  "is the zero polynomial"
                  + ("; specialising the parameters commutes with division by the monic defining equations, so the "
                     "remainder modulo them is zero" if tower is not None else ""))
+    if any(c.kind == "equal_ratio" for c in claim.conclusions):
+        steps.append("two ratios n₁/d₁ = n₂/d₂ are compared at a grid point as n₁·(d₂/g) − n₂·(d₁/g) with g the gcd "
+                     "of the nonzero denominators there, when cross-multiplying would be large: g ≠ 0 and "
+                     "n₁d₂ − n₂d₁ = g·(n₁·(d₂/g) − n₂·(d₁/g)), so one vanishes exactly when the other does, and the "
+                     "degree bound above (of n₁d₂ − n₂d₁) still decides")
     steps.append(f"every one of the {len(requirement_bounds)} non-degeneracy conditions is nonzero at some evaluated "
                  "point, so none is violated identically")
     conditions = [text for text, _ in nonzero_requirements(claim, stand_ins)]
