@@ -171,3 +171,21 @@ def test_a_formula_that_cannot_run_on_counted_values_runs_as_it_is_when_the_esti
     assert R.to_expr(evaluate(c, R, ring=R)[c.nodes["s"]][0]) == sympy.Symbol("A_x") ** 2
     with pytest.raises(TooLarge, match="would need about 1"):
         evaluate(c, R, ring=R, max_work=0)
+
+
+@settings(max_examples=60, deadline=None)
+@given(poly, poly, poly)
+def test_counted_values_compute_what_the_plain_ones_do_and_count_every_product(a, b, c):
+    # (a·b − c)·a + 2·c: products a·b (|a|·|b|), then (a·b − c)·a (|a·b − c|·|a|), then 2·c (1·|c|)
+    R = PolynomialRing([X, Y])
+    a, b, c = (build(R, t) for t in (a, b, c))
+
+    def f(v: list, wrap: object = None) -> object:
+        return (v[0] * v[1] - v[2]) * v[0] + 2 * v[2]
+
+    terms = R.nterms
+    expected = terms(a) * terms(b) + terms(a * b - c) * terms(a) + terms(c)
+    assert metered(f, [a, b, c], expected) == f([a, b, c])
+    if expected:
+        with pytest.raises(TooLarge):
+            metered(f, [a, b, c], expected - 1)
