@@ -377,6 +377,7 @@ def test_no_helper_of_the_exact_kit_is_written_twice() -> None:
 RING_LIKE = {
     ("pgsym/hierarchy.py", "_Dual"): "dual numbers a + bε: a Jacobian column by forward differentiation",
     ("pgsym/proofs/budget.py", "Cost"): "an estimate of the work of an expansion, not a number",
+    ("pgsym/proofs/budget.py", "Metered"): "a polynomial that counts the term products formed with it, not a number",
     ("pgsym/proofs/by_evaluation.py", "_Degree"): "a bound on the degree in each parameter, not a number",
 }
 

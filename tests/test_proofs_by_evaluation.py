@@ -179,6 +179,43 @@ def test_degree_bounds_of_a_meet_by_hand():
         assert max(m[i] for m, _ in R.terms(poly)) == bound[s]
 
 
+def test_the_conclusion_products_at_a_grid_point_are_counted():
+    # A, B = (x, y, 1): l = A × B has three coordinates of two terms each (A_y − B_y, B_x − A_x, A_x B_y − A_y B_x),
+    # and lᵀA forms three products of one term by two: 6 term products. A product in C cannot be interrupted, so
+    # a grid point's conclusion must not start one beyond its limit (it used to be formed whatever its size)
+    c = Claim("on its line", "A lies on AB")
+    A, B = c.free_point("A"), c.free_point("B")
+    c.conclude_incident(A, c.join("l", A, B))
+    R = PolynomialRing(c.parameters)
+    values = evaluate(c, R)
+    with pytest.raises(TooLarge, match="more than 5"):
+        conclusion_polynomials(c, values, limit=5)
+    assert conclusion_polynomials(c, values, limit=6) == [("lᵀA", 0)]
+
+
+def test_two_squared_distances_with_equal_denominators_are_compared_without_them(monkeypatch):
+    # A = (0, 0, 1), B = (8, 0, 2), C = (s, t, 2): |AB|² = ((0·2 − 8·1)², (1·2)²) = (64, 4) and
+    # |AC|² = ((0·2 − s)² + (0·2 − t)², 4) = (s² + t², 4): equal denominators, so the conclusion polynomial is
+    # 64 − s² − t² (cross-multiplied it would be 4·64 − 4(s² + t²)); and the grid certificate says why that is right
+    from pgsym.proofs import evaluation
+    monkeypatch.setattr(evaluation, "CANCEL_FROM", 0)
+    c = Claim("not isosceles", "|AB| = |AC|", expected=False)
+    s, t = c.params("s t")
+    A, B, C = c.point("A", 0, 0, 1), c.point("B", 8, 0, 2), c.point("C", s, t, 2)
+    c.conclude_equal_length(A, B, A, C)
+    R = PolynomialRing(c.parameters)
+    [(_, poly)] = conclusion_polynomials(c, evaluate(c, R))
+    assert sympy.expand(R.to_expr(poly) - (64 - s ** 2 - t ** 2)) == 0
+    monkeypatch.setattr(budget, "MAX_WORK", 0)
+    c2 = Claim("isosceles", "|AB| = |AC|")
+    A, B, C = c2.point("A", 0, 0, 1), c2.point("B", 8, 0, 2), c2.point("C", 0, 8, 2)
+    c2.free_point("D")  # two parameters, so that there is a grid
+    c2.conclude_equal_length(A, B, A, C)
+    v = prove(c2, normalise_coordinates=False)
+    assert v.status == "proved" and v.method.startswith(GRID)
+    assert "the degree bound above (of n₁d₂ − n₂d₁) still decides" in " ".join(v.certificate.steps)
+
+
 # -- property tests: random constructions against the full expansion ------------------------------------------
 
 coefficient = st.integers(-3, 3)

@@ -3,7 +3,10 @@
 Both provers (:mod:`pgsym.proofs.engine`, :mod:`pgsym.proofs.algebraic`) read the same limits: a
 :class:`Deadline` checked between steps, an :func:`alarm` that interrupts one long computation, and an
 :func:`estimate` of the term products a formula would form, taken on :class:`Cost` stand-ins before the
-real polynomials are multiplied (a product in C cannot be interrupted by the time limit).
+real polynomials are multiplied (a product in C cannot be interrupted by the time limit). The estimate is an
+upper bound, often far above the truth (a product of polynomials dense in a few variables has far fewer
+terms than the product of the numbers of terms); a formula it refuses may still be run by :func:`metered`,
+which counts the real products one by one and stops before the one that would pass the limit.
 
 >>> import sympy
 >>> R = PolynomialRing(sympy.symbols("x y"))
@@ -25,7 +28,8 @@ from typing import Any
 from .operations import map_nested
 from .polynomials import PolynomialRing
 
-__all__ = ["MAX_TERMS", "MAX_WORK", "Cost", "Deadline", "Timeout", "TooLarge", "alarm", "estimate"]
+__all__ = ["MAX_TERMS", "MAX_WORK", "PRODUCTS_PER_SECOND", "Cost", "Deadline", "Metered", "Timeout", "TooLarge",
+           "alarm", "estimate", "metered"]
 
 
 class Timeout(Exception):
@@ -44,6 +48,13 @@ MAX_WORK = 1_500_000_000
 """The most term products one construction may need in the exact pass (estimated before it runs, see
 :class:`Cost`; python-flint forms 10⁸ to 10⁹ a second): beyond, the verdict is *unknown* at once, since one
 product in C cannot be interrupted by a time limit."""
+
+
+PRODUCTS_PER_SECOND = 4 * 10**7
+"""Term products a second that python-flint keeps up on the large products of an expansion (measured 4·10⁷ to
+9·10⁷ a second for polynomials of 10⁴ terms with coefficients of 30 to 120 bits, on a shared machine; dense
+small-coefficient products run faster): a product that would not end within the time left at this speed is not
+started (:class:`Metered`)."""
 
 
 class Cost:
@@ -95,12 +106,105 @@ def estimate(compute: Callable[[list[Any]], Any], args: list[Any], R: Polynomial
     """The term products ``compute`` would form on these arguments' values (None when it cannot be told)."""
     tally = [0]
     k = len(R.symbols)
-    stand_ins = [map_nested(a, lambda x: Cost(R.nterms(x), max(R.degree(x), 0), k, tally)) for a in args]
+    stand_ins = [map_nested(a, lambda x: x if isinstance(x, int) else Cost(R.nterms(x), max(R.degree(x), 0), k, tally))
+                 for a in args]
     try:
         compute(stand_ins)
     except Exception:  # a computation that compares or converts its values: no estimate, MAX_TERMS still holds
         return None
     return tally[0]
+
+
+class Metered:
+    """A polynomial that counts the term products formed with it: each product of ``n₁`` by ``n₂`` terms adds
+    ``n₁·n₂`` to ``meter[0]`` and raises :class:`TooLarge` *before* it starts when the count would pass
+    ``meter[1]`` or when the product would not end before the deadline ``meter[2]`` at
+    :data:`PRODUCTS_PER_SECOND` (the deadline is checked there too): a product in C cannot be interrupted, while
+    the time limit stops the computation between two products. Sums are not counted (linear in the terms)."""
+
+    __slots__ = ("meter", "p")
+
+    def __init__(self, p: Any, meter: list[Any]) -> None:
+        self.p, self.meter = p, meter
+
+    @staticmethod
+    def _raw(x: Any) -> Any:
+        return x.p if isinstance(x, Metered) else x
+
+    def __add__(self, other: Any) -> Metered:
+        return Metered(self.p + self._raw(other), self.meter)
+
+    def __radd__(self, other: Any) -> Metered:
+        return Metered(self._raw(other) + self.p, self.meter)
+
+    def __sub__(self, other: Any) -> Metered:
+        return Metered(self.p - self._raw(other), self.meter)
+
+    def __rsub__(self, other: Any) -> Metered:
+        return Metered(self._raw(other) - self.p, self.meter)
+
+    def __neg__(self) -> Metered:
+        return Metered(-self.p, self.meter)
+
+    def __mul__(self, other: Any) -> Metered:
+        q = self._raw(other)
+        meter = self.meter
+        work = _terms(self.p) * _terms(q)
+        meter[0] += work
+        if meter[0] > meter[1]:
+            raise TooLarge(f"more than {meter[1]:.1e} term products")
+        deadline = meter[2]
+        if deadline is not None:
+            deadline.check()
+            if deadline.end is not None and work > (deadline.end - time.perf_counter()) * PRODUCTS_PER_SECOND:
+                raise TooLarge(f"a product of {work:.1e} term products would not end within the time left")
+        return Metered(self.p * q, meter)
+
+    __rmul__ = __mul__
+
+    def __pow__(self, e: int) -> Metered:
+        out = self
+        for _ in range(int(e) - 1):
+            out = out * self
+        return out if int(e) > 0 else Metered(1, self.meter)
+
+    def __eq__(self, other: object) -> bool:
+        return bool(self.p == self._raw(other))
+
+    def __ne__(self, other: object) -> bool:
+        return bool(self.p != self._raw(other))
+
+    def __hash__(self) -> int:
+        return hash(self.p)
+
+
+def _terms(p: Any) -> int:
+    return len(p) if hasattr(p, "__len__") else int(p != 0)
+
+
+def metered(compute: Callable[[list[Any], Callable[[Any], Any]], Any], args: list[Any], limit: int,
+            deadline: Deadline | None = None) -> Any:
+    """``compute(args, wrap)`` run on :class:`Metered` values (``wrap`` makes one of a new ring element): its
+    result, or :class:`TooLarge` before the product that would pass ``limit`` term products in all.
+
+    >>> import sympy
+    >>> R = PolynomialRing(sympy.symbols("x y"))
+    >>> x, y = R.gens
+    >>> p = metered(lambda v, wrap: v[0] * v[0], [(x + y) ** 3], 16)      # 4 terms times 4 terms
+    >>> R.nterms(p)
+    7
+    >>> metered(lambda v, wrap: v[0] * v[0] * v[0], [(x + y) ** 3], 40)  # 16, then 7 × 4 = 28 more
+    Traceback (most recent call last):
+    ...
+    pgsym.proofs.budget.TooLarge: more than 4.0e+01 term products
+    """
+    meter: list[Any] = [0, limit, deadline]
+
+    def wrap(x: Any) -> Metered:
+        return Metered(x, meter)
+
+    out = compute([map_nested(a, wrap) for a in args], wrap)
+    return map_nested(out, Metered._raw)
 
 
 class Deadline:

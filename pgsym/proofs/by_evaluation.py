@@ -52,9 +52,9 @@ from typing import Any
 import sympy
 
 from . import budget
-from .budget import Deadline, Timeout, TooLarge
+from .budget import Deadline, Timeout, TooLarge, metered
 from .claims import Claim, Node
-from .evaluation import conclusion_values, evaluate, nonzero_requirements, objects_to_check
+from .evaluation import cancel_common_denominator, conclusion_values, evaluate, nonzero_requirements, objects_to_check
 from .operations import flat
 from .polynomials import PolynomialRing
 from .square_roots import roots_of
@@ -71,6 +71,7 @@ _KEEP_CHOICES = (0, 1, 2, 3)
 
 _PRODUCTS_PER_SECOND = 10**9
 """Term products a second at python-flint's best (see :data:`~pgsym.proofs.budget.MAX_WORK`)."""
+
 
 
 class _Degree:
@@ -106,29 +107,44 @@ def _bound(x: Any, n: int) -> tuple[int, ...]:
     return x.d if isinstance(x, _Degree) else (0,) * n
 
 
-def conclusion_polynomials(claim: Claim, values: dict[Node, Any]) -> list[tuple[str, Any]]:
+def conclusion_polynomials(claim: Claim, values: dict[Node, Any], limit: int | None = None,
+                           deadline: Deadline | None = None) -> list[tuple[str, Any]]:
     """(label, polynomial) pairs that vanish identically exactly when the claim holds (rank conclusions aside).
 
     The same polynomials as :func:`~pgsym.proofs.evaluation.conclusion_polys`, except that two proportional
     vectors give every 2×2 minor: the engine picks the minors through one nonzero entry, and which entry is
     nonzero may change from point to point, while the identity must be the same polynomial at every point.
+    With ``limit`` the term products are counted (:func:`~pgsym.proofs.budget.metered`): a product in C cannot be
+    interrupted, so none starts that would pass the limit.
     """
     out: list[tuple[str, Any]] = []
     for c in claim.conclusions:
         nodes = [a for a in c.args if isinstance(a, Node)]
         vals, names = [values[a] for a in nodes], [a.label for a in nodes]
-        if c.kind == "proportional":
-            u, v = flat(vals[0]), flat(vals[1])
-            out += [(f"{names[0]}[{i}]·{names[1]}[{j}] − {names[0]}[{j}]·{names[1]}[{i}]", u[i] * v[j] - u[j] * v[i])
-                    for i, j in itertools.combinations(range(len(u)), 2)]
-        elif c.kind != "rank":
-            out += conclusion_values(c.kind, vals, names)
+        if c.kind == "equal_ratio":  # on the values themselves: a metered value has no gcd
+            vals = list(cancel_common_denominator(vals))
+
+        def compute(vals: list[Any], _wrap: Any, kind: str = c.kind, names: list[str] = names) -> tuple[Any, ...]:
+            if kind == "proportional":
+                u, v = flat(vals[0]), flat(vals[1])
+                return tuple((f"{names[0]}[{i}]·{names[1]}[{j}] − {names[0]}[{j}]·{names[1]}[{i}]",
+                              u[i] * v[j] - u[j] * v[i]) for i, j in itertools.combinations(range(len(u)), 2))
+            return () if kind == "rank" else tuple(conclusion_values(kind, vals, names))
+
+        out += compute(vals, None) if limit is None else metered(compute, vals, limit, deadline)
     return out
 
 
-def _requirements(claim: Claim, values: dict[Node, Any]) -> list[tuple[str, list[Any]]]:
-    out = list(nonzero_requirements(claim, values))
-    return out + [(f"{n.label} is not the zero vector", flat(values[n])) for n in objects_to_check(claim)]
+def _requirements(claim: Claim, values: dict[Node, Any], limit: int | None = None,
+                  deadline: Deadline | None = None) -> list[tuple[str, list[Any]]]:
+    def compute(vals: list[Any], _wrap: Any) -> tuple[Any, ...]:
+        at = dict(zip(values, vals, strict=True))
+        out = [(text, tuple(ps)) for text, ps in nonzero_requirements(claim, at)]
+        return tuple(out + [(f"{n.label} is not the zero vector", tuple(flat(at[n]))) for n in objects_to_check(claim)])
+
+    found = compute(list(values.values()), None) if limit is None else metered(compute, list(values.values()), limit,
+                                                                                deadline)
+    return [(text, list(ps)) for text, ps in found]
 
 
 def _stand_in_values(claim: Claim, gens: Sequence[sympy.Symbol], substitution: dict[sympy.Symbol, Any]
@@ -285,7 +301,21 @@ class _PointEvaluator:
             # with no parameter kept, the values are polynomials in the roots alone, each of degree < 2 (a root of
             # unity: < φ(M)): small, so the budget's estimate is for the kept variables only
             values = evaluate(self.claim, scalar, tower.reduce, deadline, R if self.kept else None, after, max_work)
-        return values, (lambda p: p == 0), R
+        if tower is None:
+            return values, (lambda p: p == 0), R
+        # a conclusion is a product of reduced values: its remainder decides (zero unreduced is zero reduced)
+        return values, (lambda p: tower.reduce(p) == 0), R
+
+
+def _limit(deadline: Deadline, evaluator: _PointEvaluator) -> int | None:
+    """The most term products one grid point may form: what the time left allows at flint's best speed (None: every
+    parameter is a number, nothing to count)."""
+    if not evaluator.kept:
+        return None
+    if deadline.end is None:
+        return budget.MAX_WORK
+    left = deadline.end - time.perf_counter()
+    return max(1, min(budget.MAX_WORK, int(left * _PRODUCTS_PER_SECOND)))
 
 
 def _grid(bounds: Sequence[int]) -> list[list[int]]:
@@ -329,19 +359,20 @@ def identity_by_evaluation(claim: Claim, substitution: dict[sympy.Symbol, Any], 
     for numbers in itertools.product(*axes):
         deadline.check(f"evaluating the constructions at grid point {count + 1}")
         point = {gens[i]: x for i, x in zip(varying, numbers, strict=True)}
-        values, is_zero, R = evaluator.run(point, deadline)
+        limit = _limit(deadline, evaluator)
+        values, is_zero, R = evaluator.run(point, deadline, limit)
         count += 1
         if R is not None:  # the size of what was expanded at a grid point, for the certificate
             entries = [x for v in values.values() for x in flat(v) if not isinstance(x, (int, Fraction))]
             largest = max([largest, *((R.nterms(x), R.degree(x)) for x in entries)])
         if failing is None:
-            for label, p in conclusion_polynomials(claim, values):
+            for label, p in conclusion_polynomials(claim, values, limit, deadline):
                 if not is_zero(p):
                     failing = Evaluation("nonzero", label=label, point={s: Fraction(x) for s, x in point.items()},
                                          value=p, ring=R)
                     break
         if len(witnessed) < len(requirement_bounds):
-            for k, (_text, ps) in enumerate(_requirements(claim, values)):
+            for k, (_text, ps) in enumerate(_requirements(claim, values, limit, deadline)):
                 if k not in witnessed and any(not is_zero(p) for p in ps):
                     witnessed.add(k)
         if failing is not None and len(witnessed) == len(requirement_bounds):
@@ -356,9 +387,11 @@ def identity_by_evaluation(claim: Claim, substitution: dict[sympy.Symbol, Any], 
                            "own grid is too large")
         for numbers in itertools.product(*_grid([requirement_bounds[k][i] for i in varying])):
             deadline.check(f"evaluating the condition {text}")
-            values, is_zero, _ = evaluator.run({gens[i]: x for i, x in zip(varying, numbers, strict=True)}, deadline)
+            limit = _limit(deadline, evaluator)
+            values, is_zero, _ = evaluator.run({gens[i]: x for i, x in zip(varying, numbers, strict=True)}, deadline,
+                                               limit)
             total += 1
-            if any(not is_zero(p) for p in _requirements(claim, values)[k][1]):
+            if any(not is_zero(p) for p in _requirements(claim, values, limit, deadline)[k][1]):
                 break
         else:
             return Evaluation("degenerate", label=text, points=total)
@@ -366,7 +399,7 @@ def identity_by_evaluation(claim: Claim, substitution: dict[sympy.Symbol, Any], 
         failing.points = total
         return failing
     shown = ", ".join(f"{gens[i]}: {degree[i]}" for i in order)
-    steps = [f"the expansion was not attempted ({why})",
+    steps = [f"the expansion was not carried out ({why})",
              f"degree bounds propagated through the {len(claim.nodes)} constructions without expanding "
              "(the degree of a product is at most the sum of the degrees, that of a sum at most the larger"
              + ("; a root r with r² = q counts as half the degree of q, rounded up" if tower is not None else "")
@@ -385,6 +418,11 @@ def identity_by_evaluation(claim: Claim, substitution: dict[sympy.Symbol, Any], 
                  "is the zero polynomial"
                  + ("; specialising the parameters commutes with division by the monic defining equations, so the "
                     "remainder modulo them is zero" if tower is not None else ""))
+    if any(c.kind == "equal_ratio" for c in claim.conclusions):
+        steps.append("two ratios n₁/d₁ = n₂/d₂ are compared at a grid point as n₁·(d₂/g) − n₂·(d₁/g) with g the gcd "
+                     "of the nonzero denominators there, when cross-multiplying would be large: g ≠ 0 and "
+                     "n₁d₂ − n₂d₁ = g·(n₁·(d₂/g) − n₂·(d₁/g)), so one vanishes exactly when the other does, and the "
+                     "degree bound above (of n₁d₂ − n₂d₁) still decides")
     steps.append(f"every one of the {len(requirement_bounds)} non-degeneracy conditions is nonzero at some evaluated "
                  "point, so none is violated identically")
     conditions = [text for text, _ in nonzero_requirements(claim, stand_ins)]
@@ -422,8 +460,13 @@ def _choose(claim: Claim, gens: Sequence[sympy.Symbol], substitution: dict[sympy
         cap = (left - (time.perf_counter() - started_all)) / points  # the most one point may take for the grid to fit
         started = time.perf_counter()
         try:
-            # one product in C cannot be stopped: none may need more than the cap allows at flint's best speed
-            evaluator.run(first, Deadline(cap), max_work=max(1, min(budget.MAX_WORK, int(cap * _PRODUCTS_PER_SECOND))))
+            # one product in C cannot be stopped: none may need more than the cap allows at flint's best speed; the
+            # conclusions and the conditions are timed too (the first grid point forms both)
+            trial, limit = Deadline(cap), max(1, min(budget.MAX_WORK, int(cap * _PRODUCTS_PER_SECOND)))
+            values, _, _ = evaluator.run(first, trial, max_work=limit)
+            limit = limit if keep else None  # numbers: no product to count
+            conclusion_polynomials(claim, values, limit, trial)
+            _requirements(claim, values, limit, trial)
         except TooLarge:
             notes.append(f"{keep} kept: too large")
             continue
