@@ -707,9 +707,14 @@ def test_a_goal_true_for_one_random_choice_that_no_order_condition_selects_needs
         translate(problem)
 
 
-def test_a_shape_drawn_mirrored_at_random_needs_a_branch_condition():
-    # risos turns b about a by ±90° (AlphaGeometry mirrors it at random), psquare always by +90°: a is the
-    # midpoint of c and d in one orientation only
-    with pytest.raises(UnsupportedConstructionError, match="risos needs a branch condition") as err:
-        translate("a b c = risos a b c; d = psquare d a b ? midp a c d")
-    assert err.value.construction == "risos"
+def test_a_shape_drawn_mirrored_at_random_is_drawn_the_way_the_goal_holds():
+    # risos turns b about a by ±90° (AlphaGeometry mirrors it at random, and draws again until the goal holds),
+    # psquare always by +90°: a is the midpoint of c and d when c is b turned by −90°, so that is the figure meant
+    problem = "a b c = risos a b c; d = psquare d a b ? midp a c d"
+    text = translate(problem)
+    assert "point c = rotate b a 0 -1" in text and "point d = rotate b a 0 1" in text
+    assert "draws risos either way round" in text
+    [read] = read_alphageometry("risos\n" + problem)
+    assert solve(read).status == "proved"
+    # the same figure turned the other way: c = d, and a is not their midpoint
+    assert "point c = rotate b a 0 1" in translate("a b c = risos a b c; d = psquare d a b ? cong c d c d")

@@ -40,7 +40,8 @@ random, as AlphaGeometry does) while it writes the statement: an earlier point f
 other common point too. The goal is then evaluated in a few random figures, on every choice of the random
 common points and with the shapes AlphaGeometry mirrors at random (``isquare``, ``risos``,
 ``ieq_triangle``) mirrored: a goal that holds on some choices only needs a branch condition (found as above, or
-the problem is refused), one that holds in some figures only a condition on the figure (refused): never a
+the problem is refused), one that holds in one orientation of a mirrored shape is written in that orientation
+(a comment says so), one that holds in some figures only needs a condition on the figure (refused): never a
 statement pgsym would refute. A goal that held in every random figure but that the engine refutes exactly holds in part
 of the figures only (AlphaGeometry's figure is drawn until the goal holds): :func:`solve` reports it
 unsupported with that reason, not refuted.
@@ -225,18 +226,25 @@ def translate(problem: str, line: int = 0, title: str = "") -> str:
     return _translate(problem, line, title)[0]
 
 
-def _drawn(problem: str, line: int, title: str, seed: int
+class _OneOrientation(UnsupportedConstructionError):
+    """The goal holds in one orientation of a shape AlphaGeometry mirrors at random (resolved if always the same)."""
+
+
+def _drawn(problem: str, line: int, title: str, seed: int, orientation: bool | None = None
            ) -> tuple[_Translator, str, dict[tuple[bool, tuple[int, ...]], bool], list[Figure]] | None:
     """One random figure of the problem on every choice of its random points (and mirrored, for the shapes
-    AlphaGeometry mirrors at random): the translator of the first choice, the statement, whether the goal holds
-    on each choice, and the figure's points per choice; None when the figure has no real intersection."""
+    AlphaGeometry mirrors at random, unless ``orientation`` fixes the mirrored one or not): the translator of the
+    first choice, the statement, whether the goal holds on each choice, and the figure's points per choice; None
+    when the figure has no real intersection."""
+    start = bool(orientation)
     try:
-        first = _Translator(line, seed)
+        first = _Translator(line, seed, (), start)
         out = first.run(problem, title)
-        results = {(False, ()): first.goal_holds()}
+        results = {(start, ()): first.goal_holds()}
         choices = list(itertools.product((0, 1), repeat=min(len(first.either), 3)))
-        flips = (False, True) if first.flippable else (False,)
-        drawings: dict[bool, Figure] = {False: {choices[0]: (first.points(), results[False, ()])}}
+        flips = (False, True) if first.flippable and orientation is None else (start,)
+        drawings: dict[bool, Figure] = {start: {choices[0]: (first.points(), results[start, ()])}}
+        texts = {start: out}  # the mirrored shape turns the other way in its text
         for flip, bits in list(itertools.product(flips, choices))[1:]:
             full, bits = bits, bits if any(bits) else ()
             t = _Translator(line, seed, bits, flip)
@@ -245,15 +253,16 @@ def _drawn(problem: str, line: int, title: str, seed: int
                 holds = t.goal_holds()
             except _NoFigure:
                 continue  # a degenerate choice (AlphaGeometry would draw again): the others decide
-            if other != out:
+            if other != texts.setdefault(flip, other):
                 raise first.branch(first.either, "the translation depends on the choice")
             results[flip, bits] = holds
             drawings.setdefault(flip, {})[full] = (t.points(), holds)
             first.ray_twice = first.ray_twice or t.ray_twice
             if flip and (False, bits) in results and holds != results[False, bits]:
-                raise UnsupportedConstructionError(
-                    f"unsupported: {first.flippable} needs a branch condition (AlphaGeometry draws it mirrored at "
-                    "random, and the goal holds in one orientation only)", line, construction=first.flippable)
+                error = _OneOrientation if not first.either else UnsupportedConstructionError
+                raise error(f"unsupported: {first.flippable} needs a branch condition (AlphaGeometry draws it "
+                            "mirrored at random, and the goal holds in one orientation only, not always the same)",
+                            line, construction=first.flippable)
     except _NoFigure:
         return None
     if first.ray_twice:
@@ -267,6 +276,26 @@ def _translate(problem: str, line: int = 0, title: str = "") -> tuple[str, bool]
     """The statement text, and whether the goal held in every random figure (else it held in none)."""
     if len(problem) > MAX_AG_LINE_CHARS:
         raise AlphaGeometryError(f"a problem of {len(problem)} characters; at most {MAX_AG_LINE_CHARS}", line)
+    try:
+        return _translate_drawn(problem, line, title)
+    except _OneOrientation as err:
+        # AlphaGeometry draws the shape either way round until the goal holds: the orientation it means is the one
+        # where the goal holds in every random figure, if one is; the statement's turns then say which it is
+        for orientation in (False, True):
+            try:
+                text, held = _translate_drawn(problem, line, title, orientation)
+            except UnsupportedConstructionError:
+                continue
+            if held:
+                lines = text.split("\n")
+                at = lines.index("expect true") + 1
+                note = f"# AlphaGeometry draws {err.construction} either way round: the goal holds this way"
+                return "\n".join([*lines[:at], note, *lines[at:]]), True
+        raise UnsupportedConstructionError(err.message, line, construction=err.construction) from None
+
+
+def _translate_drawn(problem: str, line: int, title: str, orientation: bool | None = None) -> tuple[str, bool]:
+    """:func:`_translate` with the shapes AlphaGeometry mirrors at random drawn either way (None) or one way."""
     # Random float figures, on every choice of the points AlphaGeometry takes at random (at most 2³ choices):
     # a goal that holds on some choices only needs a branch condition, one that holds in some figures only a
     # condition on the figure; neither can be written in pgsym's language, so such a problem is refused.
@@ -274,7 +303,7 @@ def _translate(problem: str, line: int = 0, title: str = "") -> tuple[str, bool]
     figures: list[Figure] = []  # each random figure: per choice, its points and whether the goal holds
     seed = 0
     for seed in range(_NUMERIC_TRIES):
-        drawn = _drawn(problem, line, title, seed)
+        drawn = _drawn(problem, line, title, seed, orientation)
         if drawn is None:
             continue  # the random figure had no real intersection: another one, as AlphaGeometry does
         first, out, results, drawings = drawn
@@ -299,7 +328,7 @@ def _translate(problem: str, line: int = 0, title: str = "") -> tuple[str, bool]
             # of every figure selects, if one does; the engine then proves the goal on the branch it selects
             # more figures than for the verdict above: a condition must hold in every one of them
             for extra in range(seed + 1, seed + 1 + _SELECTION_TRIES):
-                drawn = _drawn(problem, line, title, extra)
+                drawn = _drawn(problem, line, title, extra, orientation)
                 if drawn is not None and drawn[1] == text:
                     figures += drawn[3]
             found = selecting_conditions(figures, *named) if len(either) <= 3 else None
@@ -1002,14 +1031,10 @@ def _rotate(t: _Translator, ag: str, x: str, o: str, sign: int) -> None:
     _point(t, ag, f"rotate {t.p(x)} {t.p(o)} 0 {'-' if sign < 0 else ''}1")
 
 
-def _mirrored(t: _Translator, shape: str, *points: str) -> None:
-    """AlphaGeometry draws this shape mirrored at random: in the mirrored float figure, turn the other way."""
+def _mirrored(t: _Translator, shape: str) -> int:
+    """AlphaGeometry draws this shape mirrored at random: the sense of its turns, −1 in the mirrored figure."""
     t.flippable = t.flippable or shape
-    if t.flip:  # the turned points reflected in the line of the two free ones
-        values = t.numeric.values
-        line = _NLine(values[t.p(points[0])], values[t.p(points[1])] - values[t.p(points[0])])
-        for ag in points[2:]:
-            values[t.p(ag)] = _reflect(values[t.p(ag)], line)
+    return -1 if t.flip else 1
 
 
 @_construction("psquare", 3)
@@ -1038,9 +1063,9 @@ def _square(t: _Translator, a: list[str]) -> None:
 def _isquare(t: _Translator, a: list[str]) -> None:
     p, q, r, s = a
     t.emit(f"points {t.define(p)} {t.define(q)}")
-    _rotate(t, r, p, q, -1)
-    _rotate(t, s, q, p, 1)
-    _mirrored(t, "isquare", p, q, r, s)
+    turn = _mirrored(t, "isquare")
+    _rotate(t, r, p, q, -turn)
+    _rotate(t, s, q, p, turn)
 
 
 @_construction("eq_triangle", 3)
@@ -1056,8 +1081,7 @@ def _eq_triangle(t: _Translator, a: list[str]) -> None:
 def _ieq_triangle(t: _Translator, a: list[str]) -> None:
     p, q, r = a
     t.emit(f"points {t.define(p)} {t.define(q)}")
-    _point(t, r, f"rotate {t.p(q)} {t.p(p)} 60")
-    _mirrored(t, "ieq_triangle", p, q, r)
+    _point(t, r, f"rotate {t.p(q)} {t.p(p)} {60 * _mirrored(t, 'ieq_triangle')}")
 
 
 @_construction("iso_triangle", 3, 3)
@@ -1078,8 +1102,7 @@ def _r_triangle(t: _Translator, a: list[str]) -> None:
 def _risos(t: _Translator, a: list[str]) -> None:
     p, q, r = a  # the right angle at p, |pq| = |pr|; AG flips the figure at random, so one turn is general
     t.emit(f"points {t.define(p)} {t.define(q)}")
-    _rotate(t, r, q, p, 1)
-    _mirrored(t, "risos", p, q, r)
+    _rotate(t, r, q, p, _mirrored(t, "risos"))
 
 
 @_construction("triangle12", 3, 3)
