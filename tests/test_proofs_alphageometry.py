@@ -695,14 +695,30 @@ def test_a_goal_true_for_one_random_choice_only_gets_the_order_condition_that_se
     assert outcome.status == "proved" and "branch the order conditions select" in outcome.verdict.branches
 
 
-def test_a_goal_true_for_one_random_choice_that_no_order_condition_selects_needs_a_branch_condition():
-    # a on the parallel to cd through b with |da| = |cb|: abcd is a parallelogram (a = b + d − c) or an isosceles
-    # trapezoid; its diagonals ac and bd are equally long in the trapezoid only
+def test_a_goal_true_at_one_of_two_rational_common_points_is_written_at_that_point():
+    # a on the parallel to cd through b with |da| = |cb|: abcd is a parallelogram (a = b + d − c, rational) or an
+    # isosceles trapezoid (that point reflected in the foot of d on the parallel); its diagonals ac and bd are
+    # equally long in the trapezoid only
     problem = "c d = segment c d; b = free b; a = eqdistance a d c b, on_pline a b d c ? cong a c b d"
     goal = problem.split("?")[1]
     pts = [figure(problem, Branches((bit,)), random.Random(3)) for bit in (0, 1)]
+    vertex = pts[0]["b"] + pts[0]["d"] - pts[0]["c"]
+    assert [goal_holds(goal, p) for p in pts] == [abs(p["a"] - vertex) > 1e-9 for p in pts]
+    text = translate(problem)
+    assert "point a = reflect (translate d c b) (foot d (parallel (join d c) b))" in text
+    [read] = read_alphageometry("trapezoid\n" + problem)
+    assert solve(read).status == "proved"
+
+
+def test_a_goal_true_for_one_random_choice_that_nothing_selects_needs_a_branch_condition():
+    # g on the altitude from a with |ag| = |bc| (a square abde on ab): the goal holds at one of the two points,
+    # which are not rational, and no order condition of the figure's points tells them apart in every figure
+    problem = ("a b c = triangle a b c; d e = square a b d e; f = foot f a b c; g = on_line g a f, "
+               "eqdistance g a b c ? perp g b c d")
+    goal = problem.split("?")[1]
+    pts = [figure(problem, Branches((bit,)), random.Random(3)) for bit in (0, 1)]
     assert goal_holds(goal, pts[0]) != goal_holds(goal, pts[1])
-    with pytest.raises(UnsupportedConstructionError, match=r"on_pline/eqdistance of a needs a branch condition.*no "
+    with pytest.raises(UnsupportedConstructionError, match=r"on_line/eqdistance of g needs a branch condition.*no "
                                                            r"order condition"):
         translate(problem)
 

@@ -1,7 +1,5 @@
 """The sign of a polynomial on the whole real plane, decided exactly (pgsym.proofs.real_signs)."""
 
-from fractions import Fraction
-
 import sympy
 from hypothesis import given, settings
 from hypothesis import strategies as st
@@ -39,6 +37,14 @@ def test_polynomials_that_change_sign():
     assert plane_sign(x**4 * y**2 + x**2 * y**4 - 3 * x**2 * y**2 + 1 - sympy.Rational(1, 100), [x, y]) is None
 
 
+def test_roots_at_the_ends_of_isolating_intervals():
+    # 2x² − 3x + 2y² + 1 is 2((x − 3/4)² + y² − 1/16): −1/8 at (3/4, 0), inside the small circle; the cut points
+    # of the x-axis are the roots 1/2 and 1 of its discriminant, whose first isolating interval may end at 1
+    assert plane_sign(2 * x**2 - 3 * x + 2 * y**2 + 1, [x, y]) is None
+    assert plane_sign(-(2 * x - 1) * (x - 1), [x]) is None  # 1/8 at x = 3/4
+    assert plane_sign((2 * x - 1)**2 * (x - 1)**2 + y**2, [x, y]) == 1
+
+
 def test_more_than_two_variables_is_not_decided():
     z = sympy.Symbol("z")
     assert plane_sign(x**2 + y**2 + z**2 + 1, [x, y, z]) is None
@@ -52,10 +58,12 @@ small = st.integers(-3, 3)
        st.lists(st.tuples(small, small), min_size=3, max_size=3))
 def test_a_decided_sign_holds_at_rational_points(terms, points):
     f = sum(c * x**i * y**j for c, i, j in terms) + x * y - 1  # x·y − 1 makes f change sign often
+    grid = [sympy.Rational(k, 4) for k in range(-12, 13)]  # a sign change of a small polynomial shows on it
     for g in (f, f**2 + 1, -(f**2) * (x**2 + 1)):
-        s = plane_sign(sympy.expand(g), [x, y])
-        for px, py in [*points, (0, 0)]:
-            value = sympy.expand(g).subs({x: Fraction(px, 2), y: Fraction(py, 3)})
-            assert s is None or s * value >= 0
+        poly = sympy.Poly(sympy.expand(g), x, y)
+        s = plane_sign(poly.as_expr(), [x, y])
+        for px, py in [*((sympy.Rational(px, 2), sympy.Rational(py, 3)) for px, py in points), *(
+                (gx, gy) for gx in grid for gy in grid)]:
+            assert s is None or s * poly.eval((px, py)) >= 0
     assert plane_sign(sympy.expand(f**2 + 1), [x, y]) == 1  # a square plus one is positive
     assert plane_sign(sympy.expand(-(f**2) * (x**2 + 1)), [x, y]) == -1

@@ -25,7 +25,9 @@ numerically: a point already in the figure is avoided, otherwise either is taken
   goal holds for one of them only, AlphaGeometry (which takes either point at random and draws its figure again
   until the goal holds) means that one: the translator looks for order conditions on the figure's points that
   select it in every random figure (:mod:`pgsym.proofs.order_search`) and writes them as ``where`` lines, which
-  the engine proves on the branch they select; a problem where none is found is refused with
+  the engine proves on the branch they select; when none is found but both points are rational (one is the
+  fourth vertex P + Q − R of a parallelogram of earlier points, the other its mirror image), the one where the
+  goal holds in every random figure is written as it is, with a comment; otherwise the problem is refused with
   :class:`~pgsym.proofs.errors.UnsupportedConstructionError` ("needs a branch condition"), never guessed.
 
 Two lines of a problem meet in the plane (AlphaGeometry's ``npara``), while pgsym's ``meet`` of parallel lines
@@ -230,7 +232,8 @@ class _OneOrientation(UnsupportedConstructionError):
     """The goal holds in one orientation of a shape AlphaGeometry mirrors at random (resolved if always the same)."""
 
 
-def _drawn(problem: str, line: int, title: str, seed: int, orientation: bool | None = None
+def _drawn(problem: str, line: int, title: str, seed: int, orientation: bool | None = None,
+           pick: dict[str, int] | None = None
            ) -> tuple[_Translator, str, dict[tuple[bool, tuple[int, ...]], bool], list[Figure]] | None:
     """One random figure of the problem on every choice of its random points (and mirrored, for the shapes
     AlphaGeometry mirrors at random, unless ``orientation`` fixes the mirrored one or not): the translator of the
@@ -238,7 +241,7 @@ def _drawn(problem: str, line: int, title: str, seed: int, orientation: bool | N
     when the figure has no real intersection."""
     start = bool(orientation)
     try:
-        first = _Translator(line, seed, (), start)
+        first = _Translator(line, seed, (), start, pick)
         out = first.run(problem, title)
         results = {(start, ()): first.goal_holds()}
         choices = list(itertools.product((0, 1), repeat=min(len(first.either), 3)))
@@ -247,7 +250,7 @@ def _drawn(problem: str, line: int, title: str, seed: int, orientation: bool | N
         texts = {start: out}  # the mirrored shape turns the other way in its text
         for flip, bits in list(itertools.product(flips, choices))[1:]:
             full, bits = bits, bits if any(bits) else ()
-            t = _Translator(line, seed, bits, flip)
+            t = _Translator(line, seed, bits, flip, pick)
             try:
                 other = t.run(problem, title)
                 holds = t.goal_holds()
@@ -294,8 +297,10 @@ def _translate(problem: str, line: int = 0, title: str = "") -> tuple[str, bool]
         raise UnsupportedConstructionError(err.message, line, construction=err.construction) from None
 
 
-def _translate_drawn(problem: str, line: int, title: str, orientation: bool | None = None) -> tuple[str, bool]:
-    """:func:`_translate` with the shapes AlphaGeometry mirrors at random drawn either way (None) or one way."""
+def _translate_drawn(problem: str, line: int, title: str, orientation: bool | None = None,
+                     pick: dict[str, int] | None = None) -> tuple[str, bool]:
+    """:func:`_translate` with the shapes AlphaGeometry mirrors at random drawn either way (None) or one way, and
+    the random common points of ``pick`` taken as said there."""
     # Random float figures, on every choice of the points AlphaGeometry takes at random (at most 2³ choices):
     # a goal that holds on some choices only needs a branch condition, one that holds in some figures only a
     # condition on the figure; neither can be written in pgsym's language, so such a problem is refused.
@@ -303,12 +308,13 @@ def _translate_drawn(problem: str, line: int, title: str, orientation: bool | No
     figures: list[Figure] = []  # each random figure: per choice, its points and whether the goal holds
     seed = 0
     for seed in range(_NUMERIC_TRIES):
-        drawn = _drawn(problem, line, title, seed, orientation)
+        drawn = _drawn(problem, line, title, seed, orientation, pick)
         if drawn is None:
             continue  # the random figure had no real intersection: another one, as AlphaGeometry does
         first, out, results, drawings = drawn
         if text is None:
             text, either, named = out, first.either, (first.either_points, list(first.defined.values()))
+            random_ag = first.either_ag
         elif out != text:
             raise first.branch(first.either, "the translation depends on the figure")
         truths += [(seed, holds) for holds in results.values()]
@@ -328,10 +334,20 @@ def _translate_drawn(problem: str, line: int, title: str, orientation: bool | No
             # of every figure selects, if one does; the engine then proves the goal on the branch it selects
             # more figures than for the verdict above: a condition must hold in every one of them
             for extra in range(seed + 1, seed + 1 + _SELECTION_TRIES):
-                drawn = _drawn(problem, line, title, extra, orientation)
+                drawn = _drawn(problem, line, title, extra, orientation, pick)
                 if drawn is not None and drawn[1] == text:
                     figures += drawn[3]
             found = selecting_conditions(figures, *named) if len(either) <= 3 else None
+            if found is None and not pick:
+                # both common points may be rational (one the fourth vertex of a parallelogram): then the one where
+                # the goal holds in every random figure is written as it is
+                for ag, choice in itertools.product(random_ag, (0, 1)):
+                    try:
+                        picked, held = _translate_drawn(problem, line, title, orientation, {ag: choice})
+                    except UnsupportedConstructionError:
+                        continue
+                    if held and "where the goal holds" in picked:
+                        return picked, True
             if found is None:
                 raise _Translator(line).branch(either, "the goal holds for one of the two common points only, and "
                                                        "no order condition on the figure's points (one, or two "
@@ -374,12 +390,15 @@ class _Locus:
 
 
 class _Translator:
-    def __init__(self, line: int, seed: int = 0, bits: tuple[int, ...] = (), flip: bool = False) -> None:
+    def __init__(self, line: int, seed: int = 0, bits: tuple[int, ...] = (), flip: bool = False,
+                 pick: dict[str, int] | None = None) -> None:
         self.line = line
         self.flip, self.flippable = flip, ""  # the mirrored figure of a shape AG mirrors at random
         self.numeric = _Numeric(seed, bits)
         self.either: list[str] = []  # the constructions of the points AG takes at random (either common point)
         self.either_points: list[str] = []  # those points (pgsym names)
+        self.either_ag: list[str] = []  # and AlphaGeometry's
+        self.pick = dict(pick or {})  # AG point -> which rational common point to take (0 the vertex, 1 the other)
         self.ray_twice = ""  # a ray that met its circle twice in this figure (AG then takes one by its own order)
         self.goal_words: list[str] = []
         self.out: list[str] = []
@@ -622,19 +641,22 @@ class _Translator:
         elif one.kind == "line" and common:
             x = self.define(ag)
             self.emit(f"point {x} = reflect {self.p(common[0])} (foot {two.centre} ({one.expr}))")
-        elif one.kind == "line":
-            x = self.define(ag)
-            self.either.append(f"{one.name}/{two.name} of {ag}")
-            self.either_points.append(x)
-            self.emit(f"point {x} = intersection ({one.expr}) ({two.expr})")
         elif common:
             x = self.define(ag)
             self.emit(f"point {x} = reflect {self.p(common[0])} (join {one.centre} {two.centre})")
         else:
             x = self.define(ag)
-            self.either.append(f"{one.name}/{two.name} of {ag}")
-            self.either_points.append(x)
-            self.emit(f"point {x} = intersection ({one.expr}) ({two.expr})")
+            vertex = self.numeric.parallelogram_common(one.expr, two.expr, self) if ag in self.pick else ""
+            if vertex:  # both common points are rational: the one the goal holds at (see _translate)
+                mirror = (f"(foot {two.centre} ({one.expr}))" if one.kind == "line"
+                          else f"(join {one.centre} {two.centre})")
+                self.emit(f"point {x} = {vertex if self.pick[ag] == 0 else f'reflect ({vertex}) {mirror}'}  # the "
+                          f"common point of {one.name}/{two.name} where the goal holds")
+            else:
+                self.either.append(f"{one.name}/{two.name} of {ag}")
+                self.either_points.append(x)
+                self.either_ag.append(ag)
+                self.emit(f"point {x} = intersection ({one.expr}) ({two.expr})")
         one.add(ag)
         two.add(ag)
 
@@ -1414,6 +1436,21 @@ class _Numeric:
                 if isinstance(self.values.get(name), complex)
                 and min(abs(self.values[name] - p) for p in points) < 1e-7 * scale]
         return [*known, *(ag for ag in near if ag not in known)]
+
+
+    def parallelogram_common(self, one: str, two: str, t: _Translator) -> str:
+        """A common point of the loci that is P + Q − R for three earlier points (the fourth vertex of a
+        parallelogram, e.g. the point of the parallel to DC through B at distance |CB| from D), as pgsym text; or ""."""
+        first, second = (self._expr(_TOKENS.findall(e), 0)[0] for e in (one, two))
+        points = _meet(first, second)
+        scale = 1 + max(abs(v) for v in self.values.values() if isinstance(v, complex))
+        names = [n for n in t.defined.values() if isinstance(self.values.get(n), complex)]
+        for p, q in itertools.combinations(names, 2):
+            for r in names:
+                x = self.values[p] + self.values[q] - self.values[r]
+                if r not in (p, q) and min(abs(x - c) for c in points) < 1e-7 * scale:
+                    return f"translate {p} {r} {q}"
+        return ""
 
 
 def _foot(p: complex, line: _NLine) -> complex:

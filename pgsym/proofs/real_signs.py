@@ -17,7 +17,6 @@ isolated in rational intervals (SymPy's ``Poly.intervals``) and f is evaluated a
 
 from __future__ import annotations
 
-import itertools
 from collections.abc import Sequence
 from fractions import Fraction
 
@@ -28,20 +27,28 @@ __all__ = ["MAX_DEGREE", "plane_sign"]
 MAX_DEGREE = 16
 """The largest total degree decided (the discriminant of a larger polynomial costs too much)."""
 
+MAX_REFINEMENTS = 24
+"""The most rounds of narrower isolating intervals (width 4⁻ᵏ) until consecutive ones are apart."""
 
-def _samples(poly: sympy.Poly) -> list[Fraction]:
-    """A rational number in each open interval of ℝ cut by the real roots of a univariate polynomial."""
+
+def _samples(poly: sympy.Poly) -> list[Fraction] | None:
+    """A rational number in each open interval of ℝ cut by the real roots of a univariate polynomial; None when
+    the roots could not be separated."""
     if poly.degree() <= 0:
         return [Fraction(0)]
-    cuts = [(Fraction(int(a.p), int(a.q)), Fraction(int(b.p), int(b.q)))
-            for (a, b), _k in poly.intervals()]  # disjoint isolating intervals, increasing
-    if not cuts:
-        return [Fraction(0)]
-    out = [cuts[0][0] - 1]
-    for (_, right), (left, _) in itertools.pairwise(cuts):
-        out.append((right + left) / 2)
-    out.append(cuts[-1][1] + 1)
-    return out
+    # isolating intervals may touch, and an end may be another interval's root (1/2 in (0, 1) beside 1 in [1, 1]):
+    # narrower ones until each lies strictly left of the next, so a point between two is no root
+    for k in range(MAX_REFINEMENTS):
+        eps = sympy.Rational(1, 4 ** k) if k else None
+        cuts = [(sympy.Rational(a), sympy.Rational(b)) for (a, b), _m in poly.intervals(eps=eps)]  # increasing
+        if not cuts:
+            return [Fraction(0)]
+        if all(cuts[i][1] < cuts[i + 1][0] for i in range(len(cuts) - 1)):
+            break
+    else:
+        return None
+    ends = [cuts[0][0] - 1, *((cuts[i][1] + cuts[i + 1][0]) / 2 for i in range(len(cuts) - 1)), cuts[-1][1] + 1]
+    return [Fraction(int(e.p), int(e.q)) for e in ends]
 
 
 def _sign_at(expr: sympy.Poly, point: Sequence[Fraction]) -> int:
@@ -63,7 +70,10 @@ def plane_sign(f: sympy.Expr, gens: Sequence[sympy.Symbol]) -> int | None:
     if poly.total_degree() <= 0:
         return int(sympy.sign(poly.as_expr())) or None
     if len(free) == 1:
-        signs = {_sign_at(poly, [s]) for s in _samples(poly)}
+        samples = _samples(poly)
+        if samples is None:
+            return None
+        signs = {_sign_at(poly, [s]) for s in samples}
     else:
         x, y = free
         if poly.degree(y) == 0:
@@ -74,9 +84,13 @@ def plane_sign(f: sympy.Expr, gens: Sequence[sympy.Symbol]) -> int | None:
         if cuts.is_zero:
             return None  # not squarefree after all: refuse rather than miss a strip
         signs = set()
-        for sx in _samples(cuts):
+        for sx in _samples(cuts) or [None]:
+            if sx is None:
+                return None
             fibre = sympy.Poly(poly.as_expr().subs(x, sympy.Rational(sx.numerator, sx.denominator)), y)
-            for sy in _samples(fibre):
+            for sy in _samples(fibre) or [None]:
+                if sy is None:
+                    return None
                 signs.add(_sign_at(poly, [sx, sy]))
                 if len(signs) > 1:
                     return None
