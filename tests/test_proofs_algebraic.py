@@ -133,7 +133,8 @@ def test_two_internal_bisectors_and_one_external_are_not_concurrent():
 def test_a_statement_true_on_the_internal_branch_only_is_proved_for_that_branch_only():
     # A = (0, 0), B = (t², 0), C = (0, 1): |AB| = t², |AC| = 1 are polynomials, so the named branch is rational:
     # d_A_B = t², d_A_C = 1. The internal bisector at A has the direction (1, 0) + (0, 1) and passes through
-    # (1, 1); with d_A_C = −1 it is the external one, direction (1, −1), which does not.
+    # (1, 1); with d_A_B = −t² it is the external one, direction d_A_C·(B − A) + d_A_B·(C − A) = (t², 0) − t²·(0, 1)
+    # = t²·(1, −1), which does not.
     c = Claim("one-branch", "the internal bisector of ∠BAC passes through (1, 1)")
     (t,) = c.params("t")
     A, B, C = c.point("A", 0, 0), c.point("B", t * t, 0), c.point("C", 0, 1)
@@ -141,7 +142,7 @@ def test_a_statement_true_on_the_internal_branch_only_is_proved_for_that_branch_
     v = prove(c)
     assert v.proved
     assert v.branches.startswith("proved for the named branch only (d_A_B = t**2, d_A_C = 1")
-    assert "d_A_C = -1, aᵀP does not vanish" in v.branches
+    assert "with the sign of d_A_B changed, aᵀP does not vanish" in v.branches
 
 
 def test_equal_lengths_make_the_named_branch_rational():
@@ -156,17 +157,31 @@ def test_equal_lengths_make_the_named_branch_rational():
 
 
 def test_a_named_branch_without_an_evident_sign_stays_unknown():
-    # B = (t, 0), C = (0, t(t² − t + 1)): |AC|² = λ²|AB|² with λ = t² − t + 1, positive (discriminant −3) but not a
-    # sum of even powers, so the engine cannot see that d_A_C = λ d_A_B on the named branch: the internal bisector
-    # passes through (1, 1) at every instance it tries, the external one does not, and the verdict is unknown
+    # B = (t, 0), C = (0, t(t⁴ − t + 1)): |AC|² = λ²|AB|² with λ = t⁴ − t + 1, positive (its minimum, at 4t³ = 1, is
+    # 1 − (3/4)·4^(−1/3) > 0) but neither a sum of even powers nor of degree 2, so the engine cannot see that
+    # d_A_C = λ d_A_B on the named branch: the internal bisector passes through (1, 1) at every instance it tries, the
+    # external one does not, and the verdict is unknown
     c = Claim("not-evident", "the internal bisector of ∠BAC passes through (1, 1)")
     (t,) = c.params("t")
-    A, B, C = c.point("A", 0, 0), c.point("B", t, 0), c.point("C", 0, t * (t * t - t + 1))
+    A, B, C = c.point("A", 0, 0), c.point("B", t, 0), c.point("C", 0, t * (t**4 - t + 1))
     c.conclude_incident(c.point("P", 1, 1), c.angle_bisector("a", B, A, C))
     v = prove(c)
     assert v.status == "unknown" and not v.proved
     assert v.branches.startswith("holds on the named branch only (a is the internal bisector of ∠BAC)")
     assert "not proved" in v.branches and "a is the external bisector of ∠BAC" in v.branches
+
+
+def test_a_quadratic_multiplier_positive_by_its_form_is_proved_on_the_named_branch():
+    # B = (t, 0), C = (0, t(t² − t + 1)): λ = t² − t + 1 = (t − 1/2)² + 3/4 has the positive definite form
+    # [[1, −1/2], [−1/2, 1]] in (t, 1) (minors 1, 1 and 3/4), so d_A_C = λ d_A_B on the named branch, and the internal
+    # bisector, direction d_A_C·(B − A) + d_A_B·(C − A) = λ d_A_B·(t, 0) + d_A_B·(0, tλ) = tλ d_A_B·(1, 1), passes
+    # through (1, 1)
+    c = Claim("quadratic", "the internal bisector of ∠BAC passes through (1, 1)")
+    (t,) = c.params("t")
+    A, B, C = c.point("A", 0, 0), c.point("B", t, 0), c.point("C", 0, t * (t * t - t + 1))
+    c.conclude_incident(c.point("P", 1, 1), c.angle_bisector("a", B, A, C))
+    v = prove(c)
+    assert v.proved and v.branches.startswith("proved for the named branch only (d_A_C = d_A_B*(t**2 - t + 1)")
 
 
 def test_a_polynomial_ratio_of_lengths_with_an_evident_sign_is_proved_on_the_named_branch():
@@ -177,6 +192,50 @@ def test_a_polynomial_ratio_of_lengths_with_an_evident_sign_is_proved_on_the_nam
     c.conclude_incident(c.point("P", 1, 1), c.angle_bisector("a", B, A, C))
     v = prove(c)
     assert v.proved and v.branches.startswith("proved for the named branch only (d_A_C = d_A_B*t**2")
+
+
+RIGHT_TRIANGLE = "points c a\npoint b on line (perpendicular (join c a) c)\npoint d = foot c (join a b)\n"
+
+
+def test_a_product_of_lengths_proves_the_named_branch_in_a_right_triangle():
+    # C = (0, 0), A = (1, 0), B = (0, b), b > 0 (every right triangle up to similarity); s = |AB| = √(1 + b²); the foot
+    # of C on AB is D = (b², b)/s². Internal bisector of ∠CAB: direction (C − A)/1 + (B − A)/s ∝ (−s − 1, b); of
+    # ∠DCB: D/|D| + B/b = (b, 1)/s + (0, 1) ∝ (b, 1 + s). Dot product: −b(s + 1) + b(1 + s) = 0: perpendicular. No
+    # length is a polynomial multiple of another (|AB|² = b² + 1, |CD|² ∝ b²(b² + 1)): only a product of three
+    # lengths is a polynomial on the named branch, |CD|·|AB| = |CA|·|CB|
+    c = parse_statement(RIGHT_TRIANGLE + "line u = anglebisector c a b\nline v = anglebisector d c b\n"
+                        "prove perpendicular u v")
+    v, t = timed(c)
+    assert v.proved and t < 10
+    assert v.branches.startswith("proved for the named branch only (") and "·" in v.branches.split(":")[0]
+    assert "does not vanish" in v.branches
+    assert any("|" in cond.text and "≠ 0 (divided by on the named branch)" in cond.text for cond in v.conditions)
+
+
+@pytest.mark.parametrize("changed", ["line u = exbisector c a b\nline v = anglebisector d c b",
+                                     "line u = anglebisector c a b\nline v = exbisector d c b"])
+def test_the_same_right_triangle_with_an_external_bisector_is_not_proved(changed):
+    # as above with s = |AB|: the external bisector at A has the direction (−1, 0) − (−1, b)/s ∝ (1 − s, −b), and
+    # (1 − s, −b)·(b, 1 + s) = −2bs ≠ 0; the external one at C is perpendicular to the internal one there, hence
+    # parallel to the internal bisector at A (not perpendicular). The other branch holds, the named one fails.
+    c = parse_statement(RIGHT_TRIANGLE + changed + "\nprove perpendicular u v", name="wrong-branch")
+    v = prove(c)
+    assert not v.proved and v.refuted
+    assert v.branches.startswith("fails on the named branch") and v.counterexample.recheck()
+
+
+def test_a_product_over_earlier_lengths_with_a_squared_distance_as_sign():
+    # the tangent at A of the circle ABC meets BC at E, and the internal bisector of ∠BAC meets BC at H. The
+    # tangent-chord angle gives ∠EAC = ∠B (E beyond C), so ∠EAH = ∠B + ∠A/2 = ∠EHA (exterior angle of triangle ABH):
+    # triangle EAH is isosceles, EA = EH, and the bisector at E of ∠AEH = ∠BEA is perpendicular to AH. In the frame
+    # A = (0, 0), B = (1, 0) the proof uses |AC|·|BE|·|AE| = λ, whose sign needs the factor (c_x − 1)² + c_y²
+    # (|BC|²) positive: its form in (c_x, c_y, 1), [[1, 0, −1], [0, 1, 0], [−1, 0, 1]], has the principal minors
+    # 1, 1, 1, 1, 0, 1 and 0, all ≥ 0 (without that the verdict is unknown)
+    c = parse_statement("points a b c\npoint d = centre (circle b a c)\n"
+                        "point e = meet (perpendicular (join a d) a) (join b c)\nline u = anglebisector b e a\n"
+                        "line v = anglebisector b a c\nprove perpendicular u v")
+    v, t = timed(c)
+    assert v.proved and t < 10 and v.branches.startswith("proved for the named branch only (")
 
 
 def test_wu_half_angle_parametrisation_proves_the_internal_bisector():

@@ -435,9 +435,11 @@ def prove_algebraic(claim: Claim, timeout: float | None = 10.0, seed: int = 0, i
                 return proved(certificate, _every_root(roots))
             named = _named_branch_proof(claim, values, tower, deadline)
             if named is not None:
-                text, lines = named
-                certificate = Certificate("ideal membership on the named branch: the named roots replaced by their "
-                                          "rational values there, then reduction modulo the remaining equations",
+                text, lines, extra = named
+                conditions += extra
+                certificate = Certificate("ideal membership on the named branch: named roots written through the other "
+                                          "named roots there (their squares multiply to a square, and the named "
+                                          "signs fix the sign), then reduction modulo the remaining equations",
                                           R.field + f"[{len(R.symbols)} variables, lex, roots first]",
                                           [*steps, *lines], 0, backend=R.backend,
                                           normalisation="" if norm is None else norm.describe())
@@ -514,11 +516,42 @@ def _frame_breaks(claim: Claim, values: dict[Node, Any], tower: _Tower) -> bool:
 
 
 def _evidently_positive(e: sympy.Expr, gens: Sequence[sympy.Symbol]) -> bool:
-    """Every term has even exponents and a positive coefficient: positive wherever it is not zero."""
+    """Positive wherever it is not zero, as its form shows: every term has even exponents and a positive coefficient,
+    or it has degree 2 and its quadratic form in (x₁, …, xₙ, 1) is positive semidefinite (a squared distance such as
+    (x − 1)² + y²: every principal minor of the form's matrix is ≥ 0).
+
+    >>> x, y = sympy.symbols("x y")
+    >>> [_evidently_positive(f, [x, y]) for f in (x**2 + y**4, x**2 - 2*x + y**2 + 1, x**2 - 2*x + y**2, x*y)]
+    [True, True, False, False]
+    """
     poly = sympy.Poly(e, *gens) if gens else None
     if poly is None:
         return bool(e > 0)
-    return not poly.is_zero and all(c > 0 and all(k % 2 == 0 for k in m) for m, c in poly.terms())
+    if poly.is_zero:
+        return False
+    if all(c > 0 and all(k % 2 == 0 for k in m) for m, c in poly.terms()):
+        return True
+    return poly.total_degree() == 2 and _semidefinite(poly)
+
+
+def _semidefinite(poly: sympy.Poly) -> bool:
+    """Whether a polynomial of degree 2 is xᵀMx ≥ 0 for x = (x₁, …, xₙ, 1), M positive semidefinite (Sylvester: all
+    principal minors ≥ 0), over the variables it has."""
+    used = [i for i in range(len(poly.gens)) if any(m[i] for m in poly.monoms())]
+    n = len(used) + 1
+    if n > 8:
+        return False
+    m = sympy.zeros(n, n)
+    for mon, c in poly.terms():
+        idx = [used.index(i) for i in used for _ in range(mon[i])] + [n - 1] * (2 - sum(mon))
+        a, b = idx
+        if a == b:
+            m[a, a] += c
+        else:
+            m[a, b] += sympy.Rational(c, 2)
+            m[b, a] += sympy.Rational(c, 2)
+    return all(m.extract(list(s), list(s)).det() >= 0
+               for k in range(1, n + 1) for s in itertools.combinations(range(n), k))
 
 
 def _rational_root(q: sympy.Expr, gens: Sequence[sympy.Symbol]) -> sympy.Expr | None:
@@ -532,79 +565,157 @@ def _rational_root(q: sympy.Expr, gens: Sequence[sympy.Symbol]) -> sympy.Expr | 
     return c * sympy.Mul(*(f ** (e // 2) for f, e in factors))
 
 
+def _factored(q: sympy.Expr, gens: Sequence[sympy.Symbol]) -> tuple[sympy.Expr, dict[sympy.Expr, int]]:
+    """q as c·∏ fᵏ over ℚ: the rational coefficient c and the irreducible factors f (normalised by SymPy: primitive,
+    positive leading coefficient, so the same factor of two polynomials is the same key) with their exponents."""
+    coeff, factors = sympy.factor_list(q, *gens) if gens else (q, [])
+    out: dict[sympy.Expr, int] = {}
+    for f, k in factors:
+        out[f] = out.get(f, 0) + k
+    return sympy.Rational(coeff), out
+
+
+def _product_root(factored: Sequence[tuple[sympy.Expr, dict[sympy.Expr, int]]]) -> sympy.Expr | None:
+    """λ with λ² = q₀·q₁⋯qₖ (λ a polynomial with rational coefficients), from the factorisations; else None."""
+    coeff, exps = sympy.Integer(1), {}
+    for c, f in factored:
+        coeff *= c
+        for x, k in f.items():
+            exps[x] = exps.get(x, 0) + k
+    if coeff <= 0 or any(k % 2 for k in exps.values()):
+        return None
+    c = sympy.sqrt(coeff)
+    if not c.is_Rational:
+        return None
+    return c * sympy.Mul(*(x ** (k // 2) for x, k in exps.items()))
+
+
+def _compose(R: PolynomialRing, p: Any, sub: dict[sympy.Symbol, Any]) -> Any:
+    """p with some of the ring's variables replaced by elements of the ring (in the ring: the conclusion can have
+    many thousands of terms, which a SymPy expression would take minutes to hold)."""
+    if isinstance(p, int) or not sub:
+        return p
+    if R.backend == "flint":
+        return p.compose(*(sub.get(s, g) for s, g in zip(R.symbols, R.gens, strict=True)))
+    return p.compose([(g, sub[s]) for s, g in zip(R.symbols, R.gens, strict=True) if s in sub])
+
+
 def _named_branch_proof(claim: Claim, values: dict[Node, Any], tower: _Tower, deadline: Any
-                        ) -> tuple[str, list[str]] | None:
-    """Prove the conclusion on the named branch when that branch is rational: a named root whose square is the
-    square of a polynomial s (e.g. |AB| for B = A + p²(1 − t², 2t), the tangent half-angle of Wu's school), or
-    equals the square of an earlier root. The sign of the named root is then evident (s·w_A w_B a sum of even
-    powers with positive coefficients), the root is replaced by ±s, and the conclusion must reduce to zero."""
+                        ) -> tuple[str, list[str], list[Condition]] | None:
+    """Prove the conclusion on the named branch by writing named roots through the others there.
+
+    Named roots d, d₁ … dₖ (d² = q, named sign d·o > 0 with o = w_A w_B; root-free squares) whose squares multiply to
+    the square of a polynomial, q·q₁⋯qₖ = λ², satisfy d·d₁⋯dₖ = ±λ. On the named branch every dⱼ·oⱼ > 0, so
+    d·d₁⋯dₖ has the sign of o·o₁⋯oₖ, and ±λ has the sign of S = λ·o·o₁⋯oₖ times the chosen sign; when the factors
+    of S show its sign σ wherever it is not zero (:func:`_signed_factors`), d·d₁⋯dₖ = σλ on the named branch (where
+    S = 0, either λ = 0 and both sides are 0, or some o = 0 and there is no named branch). With k = 0 the root is a
+    polynomial (|AB| for B = A + p²(1 − t², 2t), the tangent half-angle of Wu's school), with k = 1 a multiple of
+    another length, with k ≥ 2 e.g. |CD|·|AB| = |CA|·|CB| in a right triangle. Then d = σλ·d₁⋯dₖ/(q₁⋯qₖ) where no
+    dⱼ is 0: the conclusion, of degree ≤ 1 in d once reduced, is multiplied by q₁⋯qₖ and d replaced; each root so
+    replaced is removed from the others, and the result must reduce to zero modulo the remaining defining
+    equations. Returns the branch's words, the certificate's lines and the conditions qⱼ ≠ 0, or None."""
     R = tower.R
     roots = roots_of(claim)
-    gens = [g for g in R.symbols if g not in {r.symbol for r in roots}]
-    sub: dict[sympy.Symbol, sympy.Expr] = {}
-    lines = []
-    squares: dict[sympy.Symbol, sympy.Expr] = {}
-    orients: dict[sympy.Symbol, sympy.Expr] = {}
+    rootsyms = {r.symbol for r in roots}
+    gens = [g for g in R.symbols if g not in rootsyms]
+    at = [i for i, x in enumerate(R.symbols) if x in rootsyms]
+
+    def root_free(p: Any) -> bool:
+        return isinstance(p, int) or not any(m[i] for m, _ in R.terms(p) for i in at)
+
+    def expr(p: Any) -> sympy.Expr:
+        return sympy.Integer(p) if isinstance(p, int) else R.to_expr(p)
+
+    named: dict[sympy.Symbol, tuple[Any, sympy.Expr, sympy.Expr, Any, Root]] = {}  # d: (q, q, o, q factored, root)
     for r in roots:
-        deadline.check("looking for a rational named branch")
-        if r.kind == "unity":
+        deadline.check("looking for the named branch in terms of other roots")
+        if r.kind == "unity" or not r.named:
             continue
-        q = R.to_expr(tower.reduce(r.square(values)))
-        squares[r.symbol] = q
-        if not r.named or q.free_symbols & {x.symbol for x in roots}:
+        q = tower.reduce(r.square(values))
+        o = tower.reduce(r.orient(values)) if r.orient is not None else 1
+        if q == 0 or not root_free(q) or not root_free(o) or R.nterms(q) > _MAX_FACTOR_TERMS:
             continue
-        orient = R.to_expr(r.orient(values)) if r.orient is not None else sympy.Integer(1)
-        orients[r.symbol] = orient
-        candidates = []  # (value up to sign, an expression with the sign of value·orient on the named branch)
-        s = _rational_root(q, gens)
-        if s is not None:
-            candidates.append((s, s * orient))
-        # the same square as an earlier length d_j: d = ±d_j; on the named branch d_j·orient_j > 0, so the sign of
-        # d_j·orient is that of orient_j·orient (or d_j's value there, when it has one)
-        # (or d = ±λ d_j when q = λ² q_j for a polynomial λ, e.g. a representative with w = 2)
-        for same, qt in squares.items():
-            if same == r.symbol or qt == 0 or same not in orients:  # only named lengths have a named sign
+        named[r.symbol] = (q, expr(q), expr(o), _factored(expr(q), gens), r)
+    order = list(named)
+    kept = list(order)
+    steps: list[tuple[sympy.Symbol, sympy.Expr, tuple[sympy.Symbol, ...]]] = []  # d·∏dⱼ = value, in this order
+    lines = []
+    for anywhere in (False, True):  # first through earlier roots only, then through any root not yet replaced
+        for d in order:
+            if d not in kept:
                 continue
-            num, den = sympy.fraction(sympy.cancel(q / qt))
-            lam = _rational_root(num, gens) if den == 1 else None
-            if lam is not None:
-                candidates.append((lam * sub[same], lam * sub[same] * orient) if same in sub
-                                  else (lam * same, lam * orients[same] * orient))
+            _q, q, o, fq, _r = named[d]
+            pool = [x for x in kept if x != d and (anywhere or order.index(x) < order.index(d))]
+            for subset in (s for k in range(len(pool) + 1) for s in itertools.combinations(pool, k)):
+                deadline.check("looking for the named branch in terms of other roots")
+                if anywhere and all(order.index(x) < order.index(d) for x in subset):
+                    continue  # tried in the first sweep
+                lam = _product_root([fq, *(named[x][3] for x in subset)])
+                if lam is None:
+                    continue
+                signed = sympy.expand(lam * o * sympy.Mul(*(named[x][2] for x in subset)))
+                if len(sympy.Add.make_args(signed)) > _MAX_FACTOR_TERMS:
+                    continue
+                sign = _signed_factors(signed, gens, {})
+                if sign not in (1, -1):
+                    continue
+                num, den = sympy.fraction(sympy.cancel(lam / sympy.Mul(*(named[x][1] for x in subset))))
+                whole = den == 1  # then d = σ·(λ/q₁⋯qₖ)·d₁⋯dₖ, no division
+                steps.append((d, sign * sympy.factor(num if whole else lam), subset, whole))
+                kept.remove(d)
+                product = "·".join(str(x) for x in (d, *subset))
+                squares = "·".join(f"({sympy.factor(named[x][1])})" for x in (d, *subset))
+                lines.append(f"on the named branch {_step_words(steps[-1])}: the squares multiply to {squares} = "
+                             f"({lam})², so {product} = ±{lam}; every named root has the sign of its w_A w_B, so the "
+                             f"sign is that of {sympy.factor(signed)} ({'positive' if sign > 0 else 'negative'} "
+                             "wherever it is not 0: its factors show it)")
                 break
-        known = [*gens, *(x for x in squares if x != r.symbol)]
-        for value, sign_of in candidates:
-            product = sympy.expand(sign_of)
-            if _evidently_positive(product, known):
-                sub[r.symbol] = value
-                break
-            if _evidently_positive(-product, known):
-                sub[r.symbol] = -value
-                break
-        else:
-            continue
-        lines.append(f"on the named branch {r.symbol} = {sub[r.symbol]} (its square is {r.symbol}² = {q}; "
-                     f"its sign is that of the named root, as ({sub[r.symbol]})·({orient}) > 0)")
-    if not sub:
+    if not steps:
         return None
+
+    def on_branch(p: Any, flip: sympy.Symbol | None = None) -> Any:
+        for d, value, subset, whole in steps:  # d = value·∏dⱼ (/∏qⱼ): times ∏qⱼ, d replaced (degree ≤ 1 in d)
+            deadline.check("reducing the conclusion on the named branch")
+            p = tower.reduce(p)
+            if isinstance(p, int):
+                return p
+            zero = _compose(R, p, {d: R.constant(0)})
+            slope = _compose(R, p, {d: R.constant(1)}) - zero
+            den = R.constant(1)
+            for x in subset if not whole else ():
+                den = den * named[x][0]
+            num = R(-value if d == flip else value)
+            for x in subset:
+                num = num * R(x)
+            p = den * zero + slope * num
+        return tower.reduce(p)
+
     others = []
     for label, poly in conclusion_polys(claim, values):
-        deadline.check("reducing the conclusion on the named branch")
-        expr = R.to_expr(tower.reduce(poly))
-        named = tower.reduce(R(sympy.expand(expr.xreplace(sub))))
-        if named != 0:
+        if on_branch(poly) != 0:
             return None
         lines.append(f"{label} reduces to 0 on the named branch")
-        for signs in itertools.product((1, -1), repeat=len(sub)):
-            flipped = {k: e * v for e, (k, v) in zip(signs, sub.items(), strict=True)}
-            if not others and tower.reduce(R(sympy.expand(expr.xreplace(flipped)))) != 0:
-                others.append((label, flipped))
-    words = ", ".join(f"{k} = {v}" for k, v in sub.items())
+        for d, *_ in steps if not others else ():
+            if on_branch(poly, d) != 0:
+                others.append((label, d))
+                break
+    conditions = [Condition(f"{named[x][4].words[0].lstrip('+')} ≠ 0 (divided by on the named branch)",
+                            raw=[named[x][0]]) for x in dict.fromkeys(x for _, _, s, w in steps if not w for x in s)]
+    words = ", ".join(_step_words(s) for s in steps)
     if others:
-        label, flipped = others[0]
-        other = f"on the other branch {', '.join(f'{k} = {v}' for k, v in flipped.items())}, {label} does not vanish"
+        label, d = others[0]
+        other = f"with the sign of {d} changed, {label} does not vanish"
     else:
         other = "it holds with every sign of these roots as well"
-    return (f"proved for the named branch only ({words}: {_named_words(claim, sub)}); {other}", lines)
+    return (f"proved for the named branch only ({words}: {_named_words(claim, {})}); {other}", lines, conditions)
+
+
+def _step_words(step: tuple[sympy.Symbol, sympy.Expr, tuple[sympy.Symbol, ...], bool]) -> str:
+    """``d = λ·d₁⋯dₖ`` (no division) or ``d·d₁⋯dₖ = λ``."""
+    d, value, subset, whole = step
+    if whole:
+        return f"{d} = {value * sympy.Mul(*subset)}"
+    return f"{'·'.join(str(x) for x in (d, *subset))} = {value}"
 
 
 def _named_words(claim: Claim, sub: dict[sympy.Symbol, sympy.Expr]) -> str:
