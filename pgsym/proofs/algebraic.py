@@ -71,6 +71,7 @@ from ..errors import PgsymError
 from ..exact import is_zero
 from ..exact import sign as exact_sign
 from ..projective_plane import Line, Point
+from . import budget
 from .budget import Deadline, Timeout, TooLarge, alarm
 from .by_evaluation import identity_by_evaluation
 from .claims import Claim, Node
@@ -414,11 +415,12 @@ def prove_algebraic(claim: Claim, timeout: float | None = 10.0, seed: int = 0, i
             failing = None
             for label, poly in conclusion_polys(claim, values, ring=R):
                 deadline.check("reducing the conclusion")
+                poly = tower.reduce(poly)  # the normal form: 0 exactly when the conclusion is in the ideal
                 if poly == 0:
                     steps.append(f"{label} reduces to 0 modulo the defining equations")
                     continue
-                needed = next((text for text, polys in reqs
-                               if polys and all(tower.reduce(c * poly) == 0 for c in polys)), None)
+                kills = _annihilator(tower, poly, deadline)
+                needed = next((text for text, polys in reqs if polys and all(kills(c) for c in polys)), None)
                 if needed is None:
                     failing = (label, poly)
                     break
@@ -448,6 +450,52 @@ def prove_algebraic(claim: Claim, timeout: float | None = 10.0, seed: int = 0, i
                            done=done, counterexample=Counterexample)
     except (TooLarge, Timeout, PgsymError) as err:
         return done(Status.UNKNOWN, reason=_undecided(err, timeout), branches="no decision")
+
+
+def _annihilator(tower: _Tower, p: Any, deadline: Any) -> Callable[[Any], bool]:
+    """For p ≠ 0 in normal form (degree < the leading degree in every root), the test whether c·p reduces to 0.
+
+    Never when c reduces to a nonzero polynomial without roots (c·p is then in normal form and nonzero: the ring has
+    no zero divisors). Otherwise the parameters are first specialised at two points, a ring map that keeps the
+    basis's leading terms: a product whose image does not reduce to 0 does not reduce to 0 itself (exact, and cheap,
+    as only the roots remain; p's images are formed once for all c). Only then is c·p formed (which for a large
+    conclusion and condition takes minutes), and only when its terms times p's stay within the budget's work."""
+    R = tower.R
+    roots = set(tower.order)
+    params = [x for x in R.symbols if x not in roots]
+    rng = random.Random(len(params))
+    points = [{x: R.constant(rng.randint(-97, 97)) for x in params} for _ in range(2)]
+    images: list[tuple[dict, list[Any], Any]] = []
+
+    def image(i: int) -> tuple[dict, list[Any], Any]:
+        while len(images) <= i:
+            point = points[len(images)]
+            images.append((point, [_compose(R, g, point) for g in tower.basis], _compose(R, p, point)))
+        return images[i]
+
+    def kills(c: Any) -> bool:
+        c = tower.reduce(c) if c != 0 else c
+        if c == 0:
+            return True
+        if not _has_roots(tower, c):
+            return False
+        for i in range(len(points)):
+            deadline.check("multiplying the conclusion by a condition at a point")
+            point, basis, p_at = image(i)
+            q = _compose(R, c, point) * p_at
+            if R.backend == "sympy":
+                q = q.rem(basis) if basis else q
+            else:
+                for g in reversed(basis):
+                    q = divmod(q, g)[1]
+            if q != 0:
+                return False
+        if R.nterms(c) * R.nterms(p) > budget.MAX_WORK:
+            return False  # not shown: the caller then looks for another proof or samples
+        deadline.check("multiplying the conclusion by a condition")
+        return tower.reduce(c * p) == 0
+
+    return kills
 
 
 def _framed_values(claim: Claim, norm: Any, deadline: Any, backend: str | None) -> tuple[Any, _Tower, dict]:
@@ -517,12 +565,14 @@ def _frame_breaks(claim: Claim, values: dict[Node, Any], tower: _Tower) -> bool:
 
 def _evidently_positive(e: sympy.Expr, gens: Sequence[sympy.Symbol]) -> bool:
     """Positive wherever it is not zero, as its form shows: every term has even exponents and a positive coefficient,
-    or it has degree 2 and its quadratic form in (x₁, …, xₙ, 1) is positive semidefinite (a squared distance such as
-    (x − 1)² + y²: every principal minor of the form's matrix is ≥ 0).
+    or it is a quadratic form in (x₁^g₁, …, xₙ^gₙ, 1) that is positive semidefinite (a squared distance such as
+    (x − 1)² + y², or x⁴ − x² + 1: :func:`_semidefinite`).
 
     >>> x, y = sympy.symbols("x y")
     >>> [_evidently_positive(f, [x, y]) for f in (x**2 + y**4, x**2 - 2*x + y**2 + 1, x**2 - 2*x + y**2, x*y)]
     [True, True, False, False]
+    >>> [_evidently_positive(f, [x, y]) for f in (x**4 - x**2 + 1, x**4 - x + 1, x**6 - 2*x**3*y + y**2, x**3 + 1)]
+    [True, False, True, False]
     """
     poly = sympy.Poly(e, *gens) if gens else None
     if poly is None:
@@ -531,27 +581,35 @@ def _evidently_positive(e: sympy.Expr, gens: Sequence[sympy.Symbol]) -> bool:
         return False
     if all(c > 0 and all(k % 2 == 0 for k in m) for m, c in poly.terms()):
         return True
-    return poly.total_degree() == 2 and _semidefinite(poly)
+    return _semidefinite(poly)
 
 
 def _semidefinite(poly: sympy.Poly) -> bool:
-    """Whether a polynomial of degree 2 is xᵀMx ≥ 0 for x = (x₁, …, xₙ, 1), M positive semidefinite (Sylvester: all
-    principal minors ≥ 0), over the variables it has."""
+    """Whether the polynomial is F(x₁^g₁, …, xₙ^gₙ) with F of degree 2 and F = uᵀMu ≥ 0 for u = (u₁, …, uₙ, 1), M
+    positive semidefinite (Sylvester: all principal minors ≥ 0), with every gᵢ = 1 or every gᵢ the gcd of xᵢ's
+    exponents (e.g. x⁴ − x² + 1 is F(x²) with F = u² − u + 1). F ≥ 0 everywhere gives f ≥ 0 everywhere."""
     used = [i for i in range(len(poly.gens)) if any(m[i] for m in poly.monoms())]
     n = len(used) + 1
     if n > 8:
         return False
-    m = sympy.zeros(n, n)
-    for mon, c in poly.terms():
-        idx = [used.index(i) for i in used for _ in range(mon[i])] + [n - 1] * (2 - sum(mon))
-        a, b = idx
-        if a == b:
-            m[a, a] += c
-        else:
-            m[a, b] += sympy.Rational(c, 2)
-            m[b, a] += sympy.Rational(c, 2)
-    return all(m.extract(list(s), list(s)).det() >= 0
-               for k in range(1, n + 1) for s in itertools.combinations(range(n), k))
+    gcds = [math.gcd(*(m[i] for m in poly.monoms())) if i in used else 1 for i in range(len(poly.gens))]
+    for g in ([1] * len(poly.gens), gcds) if any(x > 1 for x in gcds) else ([1] * len(poly.gens),):
+        terms = [(tuple(k // gi for k, gi in zip(mon, g, strict=True)), c) for mon, c in poly.terms()]
+        if max(sum(mon) for mon, _ in terms) != 2:
+            continue
+        m = sympy.zeros(n, n)
+        for mon, c in terms:
+            a, b = [used.index(i) for i in used for _ in range(mon[i])] + [n - 1] * (2 - sum(mon))
+            if a == b:
+                m[a, a] += c
+            else:
+                m[a, b] += sympy.Rational(c, 2)
+                m[b, a] += sympy.Rational(c, 2)
+        subsets = (list(s) for k in range(1, n + 1) for s in itertools.combinations(range(n), k))
+        minors = (m.extract(s, s).det() for s in subsets)
+        if all(x >= 0 for x in minors):
+            return True
+    return False
 
 
 def _rational_root(q: sympy.Expr, gens: Sequence[sympy.Symbol]) -> sympy.Expr | None:
@@ -565,29 +623,69 @@ def _rational_root(q: sympy.Expr, gens: Sequence[sympy.Symbol]) -> sympy.Expr | 
     return c * sympy.Mul(*(f ** (e // 2) for f, e in factors))
 
 
-def _factored(q: sympy.Expr, gens: Sequence[sympy.Symbol]) -> tuple[sympy.Expr, dict[sympy.Expr, int]]:
-    """q as c·∏ fᵏ over ℚ: the rational coefficient c and the irreducible factors f (normalised by SymPy: primitive,
-    positive leading coefficient, so the same factor of two polynomials is the same key) with their exponents."""
-    coeff, factors = sympy.factor_list(q, *gens) if gens else (q, [])
-    out: dict[sympy.Expr, int] = {}
-    for f, k in factors:
-        out[f] = out.get(f, 0) + k
-    return sympy.Rational(coeff), out
+@dataclass
+class _Factored:
+    """A polynomial of the proof's ring as c·∏ fᵏ over ℚ (factored by the ring's backend, whose factors are normalised,
+    so the same factor of two polynomials has the same text, the key): the coefficient and key ↦ (factor, k)."""
+
+    coeff: Fraction
+    factors: dict[str, tuple[Any, int]]
+
+    @classmethod
+    def of(cls, R: PolynomialRing, p: Any) -> _Factored:
+        if isinstance(p, int):
+            return cls(Fraction(p), {})
+        coeff, factors = p.factor() if R.backend == "flint" else p.factor_list()
+        coeff = Fraction(int(coeff.p), int(coeff.q)) if hasattr(coeff, "q") else Fraction(coeff.numerator,
+                                                                                           coeff.denominator)
+        out: dict[str, tuple[Any, int]] = {}
+        for f, k in factors:
+            key = str(f)
+            out[key] = (f, out[key][1] + int(k) if key in out else int(k))
+        return cls(coeff, out)
+
+    def times(self, *others: _Factored, half: bool = False) -> _Factored:
+        """The product with others (or, with ``half``, the square root of the product, exponents halved)."""
+        coeff, out = self.coeff, dict(self.factors)
+        for o in others:
+            coeff *= o.coeff
+            for key, (f, k) in o.factors.items():
+                out[key] = (f, out[key][1] + k if key in out else k)
+        if half:
+            return _Factored(coeff, {key: (f, k // 2) for key, (f, k) in out.items() if k // 2})
+        return _Factored(coeff, {key: v for key, v in out.items() if v[1]})
+
+    def value(self, R: PolynomialRing) -> Any:
+        out = R(sympy.Rational(self.coeff.numerator, self.coeff.denominator))
+        for f, k in self.factors.values():
+            out = out * f**k
+        return out
+
+    def text(self, R: PolynomialRing, *extra: sympy.Symbol) -> str:
+        """The product as SymPy writes it (factors kept, times ``extra``)."""
+        return str(sympy.Mul(sympy.Rational(self.coeff.numerator, self.coeff.denominator),
+                             *(R.to_expr(f) ** k for f, k in self.factors.values()), *extra))
+
+    def sign(self, R: PolynomialRing, gens: Sequence[sympy.Symbol]) -> int | None:
+        """The sign wherever the polynomial is not 0, when the factors of odd power all have an evident one."""
+        total = 1 if self.coeff > 0 else -1 if self.coeff < 0 else 0
+        for f, k in self.factors.values():
+            if k % 2:
+                s = _evident_sign(R.to_expr(f), gens)
+                if s is None:
+                    return None
+                total *= s
+        return total
 
 
-def _product_root(factored: Sequence[tuple[sympy.Expr, dict[sympy.Expr, int]]]) -> sympy.Expr | None:
-    """λ with λ² = q₀·q₁⋯qₖ (λ a polynomial with rational coefficients), from the factorisations; else None."""
-    coeff, exps = sympy.Integer(1), {}
-    for c, f in factored:
-        coeff *= c
-        for x, k in f.items():
-            exps[x] = exps.get(x, 0) + k
-    if coeff <= 0 or any(k % 2 for k in exps.values()):
+def _square_root(f: _Factored) -> _Factored | None:
+    """λ with λ² = f (λ with rational coefficients), from the factorisation; else None."""
+    if f.coeff <= 0 or any(k % 2 for _, k in f.factors.values()):
         return None
-    c = sympy.sqrt(coeff)
-    if not c.is_Rational:
+    num, den = (math.isqrt(x) for x in (f.coeff.numerator, f.coeff.denominator))
+    if num * num != f.coeff.numerator or den * den != f.coeff.denominator:
         return None
-    return c * sympy.Mul(*(x ** (k // 2) for x, k in exps.items()))
+    return _Factored(Fraction(num, den), {key: (p, k // 2) for key, (p, k) in f.factors.items()})
 
 
 def _compose(R: PolynomialRing, p: Any, sub: dict[sympy.Symbol, Any]) -> Any:
@@ -600,6 +698,32 @@ def _compose(R: PolynomialRing, p: Any, sub: dict[sympy.Symbol, Any]) -> Any:
     return p.compose([(g, sub[s]) for s, g in zip(R.symbols, R.gens, strict=True) if s in sub])
 
 
+def _has_roots(tower: _Tower, p: Any) -> bool:
+    if isinstance(p, int) or p == 0:
+        return False
+    degrees = p.degrees()
+    return any(degrees[i] for i, x in enumerate(tower.R.symbols) if x in set(tower.order))
+
+
+_MAX_NAMED_TERMS = 5000
+"""The largest square or orientation of a named root that is factored to relate it to the others."""
+
+
+@dataclass
+class _Step:
+    """On the named branch d·d₁⋯dₖ = value (``whole``: d = value·d₁⋯dₖ, no division)."""
+
+    root: sympy.Symbol
+    value: _Factored
+    others: tuple[sympy.Symbol, ...]
+    whole: bool
+
+    def words(self, R: PolynomialRing) -> str:
+        if self.whole:
+            return f"{self.root} = {self.value.text(R, *self.others)}"
+        return f"{'·'.join(str(x) for x in (self.root, *self.others))} = {self.value.text(R)}"
+
+
 def _named_branch_proof(claim: Claim, values: dict[Node, Any], tower: _Tower, deadline: Any
                         ) -> tuple[str, list[str], list[Condition]] | None:
     """Prove the conclusion on the named branch by writing named roots through the others there.
@@ -607,85 +731,84 @@ def _named_branch_proof(claim: Claim, values: dict[Node, Any], tower: _Tower, de
     Named roots d, d₁ … dₖ (d² = q, named sign d·o > 0 with o = w_A w_B; root-free squares) whose squares multiply to
     the square of a polynomial, q·q₁⋯qₖ = λ², satisfy d·d₁⋯dₖ = ±λ. On the named branch every dⱼ·oⱼ > 0, so
     d·d₁⋯dₖ has the sign of o·o₁⋯oₖ, and ±λ has the sign of S = λ·o·o₁⋯oₖ times the chosen sign; when the factors
-    of S show its sign σ wherever it is not zero (:func:`_signed_factors`), d·d₁⋯dₖ = σλ on the named branch (where
-    S = 0, either λ = 0 and both sides are 0, or some o = 0 and there is no named branch). With k = 0 the root is a
-    polynomial (|AB| for B = A + p²(1 − t², 2t), the tangent half-angle of Wu's school), with k = 1 a multiple of
-    another length, with k ≥ 2 e.g. |CD|·|AB| = |CA|·|CB| in a right triangle. Then d = σλ·d₁⋯dₖ/(q₁⋯qₖ) where no
-    dⱼ is 0: the conclusion, of degree ≤ 1 in d once reduced, is multiplied by q₁⋯qₖ and d replaced; each root so
-    replaced is removed from the others, and the result must reduce to zero modulo the remaining defining
-    equations. Returns the branch's words, the certificate's lines and the conditions qⱼ ≠ 0, or None."""
+    of S show its sign σ wherever it is not zero (factors of odd power with an evident sign, :func:`_evident_sign`),
+    d·d₁⋯dₖ = σλ on the named branch (where S = 0, either λ = 0 and both sides are 0, or some o = 0 and there is no
+    named branch). With k = 0 the root is a polynomial (|AB| for B = A + p²(1 − t², 2t), the tangent half-angle of
+    Wu's school), with k = 1 a multiple of another length, with k ≥ 2 e.g. |CD|·|AB| = |CA|·|CB| in a right
+    triangle. Then d = σλ·d₁⋯dₖ/(q₁⋯qₖ) where no dⱼ is 0: the conclusion, of degree ≤ 1 in d once reduced, is
+    multiplied by q₁⋯qₖ and d replaced; each root so replaced is removed from the others, and the result must
+    reduce to zero modulo the remaining defining equations. Returns the branch's words, the certificate's lines
+    and the conditions qⱼ ≠ 0, or None."""
     R = tower.R
     roots = roots_of(claim)
     rootsyms = {r.symbol for r in roots}
     gens = [g for g in R.symbols if g not in rootsyms]
-    at = [i for i, x in enumerate(R.symbols) if x in rootsyms]
-
-    def root_free(p: Any) -> bool:
-        return isinstance(p, int) or not any(m[i] for m, _ in R.terms(p) for i in at)
-
-    def expr(p: Any) -> sympy.Expr:
-        return sympy.Integer(p) if isinstance(p, int) else R.to_expr(p)
-
-    named: dict[sympy.Symbol, tuple[Any, sympy.Expr, sympy.Expr, Any, Root]] = {}  # d: (q, q, o, q factored, root)
+    named: dict[sympy.Symbol, tuple[Any, _Factored, _Factored, Root]] = {}  # d: (q, q and o factored, the root)
     for r in roots:
         deadline.check("looking for the named branch in terms of other roots")
         if r.kind == "unity" or not r.named:
             continue
         q = tower.reduce(r.square(values))
         o = tower.reduce(r.orient(values)) if r.orient is not None else 1
-        if q == 0 or not root_free(q) or not root_free(o) or R.nterms(q) > _MAX_FACTOR_TERMS:
+        if q == 0 or _has_roots(tower, q) or _has_roots(tower, o) or max(R.nterms(q), R.nterms(o)) > _MAX_NAMED_TERMS:
             continue
-        named[r.symbol] = (q, expr(q), expr(o), _factored(expr(q), gens), r)
+        named[r.symbol] = (q, _Factored.of(R, q), _Factored.of(R, o), r)
     order = list(named)
     kept = list(order)
-    steps: list[tuple[sympy.Symbol, sympy.Expr, tuple[sympy.Symbol, ...]]] = []  # d·∏dⱼ = value, in this order
+    steps: list[_Step] = []
     lines = []
     for anywhere in (False, True):  # first through earlier roots only, then through any root not yet replaced
         for d in order:
             if d not in kept:
                 continue
-            _q, q, o, fq, _r = named[d]
+            _q, fq, fo, _r = named[d]
             pool = [x for x in kept if x != d and (anywhere or order.index(x) < order.index(d))]
             for subset in (s for k in range(len(pool) + 1) for s in itertools.combinations(pool, k)):
                 deadline.check("looking for the named branch in terms of other roots")
                 if anywhere and all(order.index(x) < order.index(d) for x in subset):
                     continue  # tried in the first sweep
-                lam = _product_root([fq, *(named[x][3] for x in subset)])
+                lam = _square_root(fq.times(*(named[x][1] for x in subset)))
                 if lam is None:
                     continue
-                signed = sympy.expand(lam * o * sympy.Mul(*(named[x][2] for x in subset)))
-                if len(sympy.Add.make_args(signed)) > _MAX_FACTOR_TERMS:
-                    continue
-                sign = _signed_factors(signed, gens, {})
+                signed = lam.times(fo, *(named[x][2] for x in subset))
+                sign = signed.sign(R, gens)
                 if sign not in (1, -1):
                     continue
-                num, den = sympy.fraction(sympy.cancel(lam / sympy.Mul(*(named[x][1] for x in subset))))
-                whole = den == 1  # then d = σ·(λ/q₁⋯qₖ)·d₁⋯dₖ, no division
-                steps.append((d, sign * sympy.factor(num if whole else lam), subset, whole))
+                # λ/(q₁⋯qₖ) is a polynomial when no factor's power goes below 0: then d = σ·λ/(q₁⋯qₖ)·d₁⋯dₖ
+                den = _Factored(Fraction(1), {}).times(*(named[x][1] for x in subset))
+                whole = all(k <= lam.factors.get(key, (None, 0))[1] for key, (_f, k) in den.factors.items())
+                if whole:
+                    value = _Factored(sign * lam.coeff / den.coeff, {
+                        key: (f, k - den.factors.get(key, (None, 0))[1]) for key, (f, k) in lam.factors.items()
+                        if k - den.factors.get(key, (None, 0))[1]})
+                else:
+                    value = _Factored(sign * lam.coeff, lam.factors)
+                steps.append(_Step(d, value, subset, whole))
                 kept.remove(d)
                 product = "·".join(str(x) for x in (d, *subset))
-                squares = "·".join(f"({sympy.factor(named[x][1])})" for x in (d, *subset))
-                lines.append(f"on the named branch {_step_words(steps[-1])}: the squares multiply to {squares} = "
-                             f"({lam})², so {product} = ±{lam}; every named root has the sign of its w_A w_B, so the "
-                             f"sign is that of {sympy.factor(signed)} ({'positive' if sign > 0 else 'negative'} "
-                             "wherever it is not 0: its factors show it)")
+                squares = "·".join(f"({named[x][1].text(R)})" for x in (d, *subset))
+                lines.append(f"on the named branch {steps[-1].words(R)}: the squares multiply to {squares} = "
+                             f"({lam.text(R)})², so {product} = ±{lam.text(R)}; every named root has the sign of its "
+                             f"w_A w_B, so the sign is that of {signed.text(R)} "
+                             f"({'positive' if sign > 0 else 'negative'} wherever it is not 0: its factors show it)")
                 break
     if not steps:
         return None
+    numerators = {id(s): s.value.value(R) for s in steps}
 
     def on_branch(p: Any, flip: sympy.Symbol | None = None) -> Any:
-        for d, value, subset, whole in steps:  # d = value·∏dⱼ (/∏qⱼ): times ∏qⱼ, d replaced (degree ≤ 1 in d)
+        for s in steps:  # d = value·∏dⱼ (/∏qⱼ): times ∏qⱼ, d replaced (p has degree ≤ 1 in d once reduced)
             deadline.check("reducing the conclusion on the named branch")
             p = tower.reduce(p)
             if isinstance(p, int):
                 return p
-            zero = _compose(R, p, {d: R.constant(0)})
-            slope = _compose(R, p, {d: R.constant(1)}) - zero
+            zero = _compose(R, p, {s.root: R.constant(0)})
+            slope = _compose(R, p, {s.root: R.constant(1)}) - zero
             den = R.constant(1)
-            for x in subset if not whole else ():
+            for x in s.others if not s.whole else ():
                 den = den * named[x][0]
-            num = R(-value if d == flip else value)
-            for x in subset:
+            num = -numerators[id(s)] if s.root == flip else numerators[id(s)]
+            for x in s.others:
                 num = num * R(x)
             p = den * zero + slope * num
         return tower.reduce(p)
@@ -695,27 +818,20 @@ def _named_branch_proof(claim: Claim, values: dict[Node, Any], tower: _Tower, de
         if on_branch(poly) != 0:
             return None
         lines.append(f"{label} reduces to 0 on the named branch")
-        for d, *_ in steps if not others else ():
-            if on_branch(poly, d) != 0:
-                others.append((label, d))
+        for s in steps if not others else ():
+            if on_branch(poly, s.root) != 0:
+                others.append((label, s.root))
                 break
-    conditions = [Condition(f"{named[x][4].words[0].lstrip('+')} ≠ 0 (divided by on the named branch)",
-                            raw=[named[x][0]]) for x in dict.fromkeys(x for _, _, s, w in steps if not w for x in s)]
-    words = ", ".join(_step_words(s) for s in steps)
+    divided = dict.fromkeys(x for s in steps if not s.whole for x in s.others)
+    conditions = [Condition(f"{named[x][3].words[0].lstrip('+')} ≠ 0 (divided by on the named branch)",
+                            raw=[named[x][0]]) for x in divided]
+    words = ", ".join(s.words(R) for s in steps)
     if others:
         label, d = others[0]
         other = f"with the sign of {d} changed, {label} does not vanish"
     else:
         other = "it holds with every sign of these roots as well"
     return (f"proved for the named branch only ({words}: {_named_words(claim, {})}); {other}", lines, conditions)
-
-
-def _step_words(step: tuple[sympy.Symbol, sympy.Expr, tuple[sympy.Symbol, ...], bool]) -> str:
-    """``d = λ·d₁⋯dₖ`` (no division) or ``d·d₁⋯dₖ = λ``."""
-    d, value, subset, whole = step
-    if whole:
-        return f"{d} = {value * sympy.Mul(*subset)}"
-    return f"{'·'.join(str(x) for x in (d, *subset))} = {value}"
 
 
 def _named_words(claim: Claim, sub: dict[sympy.Symbol, sympy.Expr]) -> str:
