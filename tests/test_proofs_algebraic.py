@@ -16,7 +16,15 @@ from strategies import homogeneous_vectors, integers
 
 from pgsym.errors import ObjectTypeError
 from pgsym.proofs import Claim, prove
-from pgsym.proofs.algebraic import _branches, _evaluate, _Tower
+from pgsym.proofs.algebraic import (
+    _annihilator,
+    _branches,
+    _evaluate,
+    _evidently_positive,
+    _framed_values,
+    _primitive,
+    _Tower,
+)
 from pgsym.proofs.budget import Deadline
 from pgsym.proofs.errors import StatementKindError, StatementSyntaxError
 from pgsym.proofs.language import parse_statement
@@ -236,6 +244,87 @@ def test_a_product_over_earlier_lengths_with_a_squared_distance_as_sign():
                         "line v = anglebisector b a c\nprove perpendicular u v")
     v, t = timed(c)
     assert v.proved and t < 10 and v.branches.startswith("proved for the named branch only (")
+
+
+CYCLIC = ("points a b\npoint c on circle (circle a b) through b\npoint d on circle (circle a b) through b\n"
+          "point e on circle (circle a b) through b\npoint f = meet (join b c) (join d e)\n"
+          "point g = meet (join c d) (join b e)\nline u = anglebisector d f b\nline v = anglebisector c g b\n")
+
+
+def test_bisectors_at_the_meets_of_opposite_sides_of_a_cyclic_quadrilateral_are_perpendicular_where_they_meet():
+    # B, C, D, E on a circle, F = BC ∩ DE, G = CD ∩ BE; lines BC, DE, CD, BE at the angles β₁, β₂, γ₁, γ₂ (mod π).
+    # Inscribed angles (directed, mod π): ∠(CD, CB) = ∠(ED, EB), i.e. β₁ − γ₁ = γ₂ − β₂, so β₁ + β₂ = γ₁ + γ₂ and the
+    # bisectors at F, at the angles (β₁ + β₂)/2 mod π/2, are each parallel or perpendicular to those at G: wherever u
+    # and v meet in a finite point they are perpendicular (whichever sign each length root takes)
+    v = prove(parse_statement(CYCLIC + "point j = meet u v\npoint k = reflect j a  # j is a finite point\n"
+                              "prove perpendicular u v"))
+    assert v.proved and v.branches.startswith("proved for every choice of root")
+    assert v.certificate.steps[-1].endswith("it vanishes wherever j is a finite point")
+    # without the finite meet the internal bisectors are parallel in some figures (the order of the points on the
+    # circle decides), so the claim is not proved
+    assert not prove(parse_statement(CYCLIC + "prove perpendicular u v")).proved
+
+
+def test_a_conclusion_scaled_by_free_points_is_tested_against_a_condition_without_its_scale():
+    # as above, with the lines through F and G given by free points H on u and I on v: the conclusion is the one above
+    # times factors of h_t, i_t without roots (hundreds of thousands of terms), and multiplying it by the finite-meet
+    # condition took minutes; its primitive part (the factors without roots divided out) has a few hundred terms
+    statement = CYCLIC.replace("line v", "point h on line u\nline v") + (
+        "point i on line v\npoint j = meet (join f h) (join g i)\npoint k = reflect j a  # j is a finite point\n"
+        "prove perpendicular (join g i) (join f h)")
+    start = time.perf_counter()
+    v = prove(parse_statement(statement), timeout=60)
+    assert v.proved and time.perf_counter() - start < 30
+    assert v.certificate.steps[-1].endswith("it vanishes wherever j is a finite point")
+
+
+def right_angle_tower():
+    # A = (0, 0), B = (t, 0), C = (0, 1): the length root d = d_A_B has d² = t², a square: d − t and d + t are zero
+    # divisors modulo d² − t², since (d − t)(d + t) = d² − t²
+    c = Claim("tower", "x")
+    (t,) = c.params("t")
+    A, B, C = c.point("A", 0, 0), c.point("B", t, 0), c.point("C", 0, 1)
+    c.conclude_incident(c.point("P", 1, 1), c.angle_bisector("a", B, A, C))
+    _norm, tower, _values = _framed_values(c, None, Deadline(None), None)
+    R = tower.R
+    return tower, R(sympy.Symbol("d_A_B")), R(t)
+
+
+def test_a_primitive_part_divides_out_the_factors_without_roots():
+    tower, d, t = right_angle_tower()
+    p = (d + t) * (t * t + 1) * 6
+    q = _primitive(tower, p)
+    # p = 6(t² + 1)·(d + t): the gcd of p at d = 2 and d = −5 is a multiple of (t² + 1) times a constant, and the
+    # quotient is (d + t) up to a rational factor
+    assert divmod(p, q)[1] == 0
+    ratio = [c for _, c in tower.R.terms(q)]
+    assert tower.R.nterms(q) == 2 and ratio[0] == ratio[1]
+    assert _primitive(tower, t * t + 1) == t * t + 1  # no roots: unchanged
+
+
+def test_a_condition_kills_the_conclusion_only_as_a_zero_divisor():
+    tower, d, t = right_angle_tower()
+    kills = _annihilator(tower, (d + t) * (t + 3), Deadline(None))
+    assert kills(d - t)           # (d − t)(d + t)(t + 3) = (d² − t²)(t + 3) ≡ 0
+    assert not kills(d + 2 * t)   # (d + 2t)(d + t) = d² + 3td + 2t² ≡ 3td + 3t² ≠ 0
+    assert not kills(t + 1)       # no roots: (t + 1)(d + t)(t + 3) is a nonzero normal form
+    assert kills(tower.R.constant(0))
+
+
+@settings(max_examples=60, deadline=None)
+@given(integers(5), integers(5), integers(5), integers(5), integers(5), integers(5), integers(3), integers(3),
+       integers(4), integers(4))
+def test_evidently_positive_forms_are_never_negative(a, b, c, e, f, g, u, w, x0, y0):
+    # f = u²·(a x + b y + c)² + w²·(e x² + f y + g)², a sum of squares of polynomials; the claim "positive wherever
+    # not 0" must hold at every point tried, and the form itself (or its negative minus 1) at (x0, y0) decides it
+    x, y = sympy.symbols("x y")
+    poly = sympy.expand(u**2 * (a * x + b * y + c) ** 2 + w**2 * (e * x**2 + f * y + g) ** 2)
+    for candidate in (poly, -poly - 1, poly - (x0**2 + 1)):
+        if candidate != 0 and _evidently_positive(candidate, [x, y]):
+            for px, py in ((x0, y0), (y0, x0), (0, 0), (x0, 0), (1, -1)):
+                assert candidate.subs({x: px, y: py}) >= 0
+    if u and (a or b) and not (e or f or g or w):  # a nonzero square of a linear form: recognised by its form
+        assert _evidently_positive(poly, [x, y])
 
 
 def test_wu_half_angle_parametrisation_proves_the_internal_bisector():

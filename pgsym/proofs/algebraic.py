@@ -452,6 +452,26 @@ def prove_algebraic(claim: Claim, timeout: float | None = 10.0, seed: int = 0, i
         return done(Status.UNKNOWN, reason=_undecided(err, timeout), branches="no decision")
 
 
+def _primitive(tower: _Tower, p: Any) -> Any:
+    """p divided by a common factor h of its coefficients as a polynomial in the roots (h has no roots; h is the gcd
+    of p at two integer values of the roots, kept when it divides p exactly). Multiplying by a nonzero h without
+    roots maps normal forms to normal forms, so p·c reduces to 0 exactly when (p/h)·c does, and p vanishes wherever
+    p/h does: a conclusion's factor that only scales it (a free point's position on its line) is dropped."""
+    R = tower.R
+    if not _has_roots(tower, p) or R.nterms(p) < 2:
+        return p
+    roots = [x for x in R.symbols if x in set(tower.order)]
+    values = ((2, -3, 5, -7, 11, -13, 17, -19, 23, -29), (-5, 7, 3, 13, -2, 19, -11, 29, -17, 31))
+    a, b = (_compose(R, p, {r: R.constant(v) for r, v in zip(roots, vs, strict=False)}) for vs in values)
+    if a == 0 or b == 0:
+        return p
+    h = a.gcd(b)
+    if R.degree(h) < 1:
+        return p
+    q, r = divmod(p, h)
+    return q if r == 0 else p
+
+
 def _annihilator(tower: _Tower, p: Any, deadline: Any) -> Callable[[Any], bool]:
     """For p ≠ 0 in normal form (degree < the leading degree in every root), the test whether c·p reduces to 0.
 
@@ -464,6 +484,7 @@ def _annihilator(tower: _Tower, p: Any, deadline: Any) -> Callable[[Any], bool]:
     roots = set(tower.order)
     params = [x for x in R.symbols if x not in roots]
     rng = random.Random(len(params))
+    p = _primitive(tower, p)
     points = [{x: R.constant(rng.randint(-97, 97)) for x in params} for _ in range(2)]
     images: list[tuple[dict, list[Any], Any]] = []
 
@@ -479,6 +500,7 @@ def _annihilator(tower: _Tower, p: Any, deadline: Any) -> Callable[[Any], bool]:
             return True
         if not _has_roots(tower, c):
             return False
+        c = _primitive(tower, c)
         for i in range(len(points)):
             deadline.check("multiplying the conclusion by a condition at a point")
             point, basis, p_at = image(i)
