@@ -697,7 +697,7 @@ def _centre(node: Any, v: list[Any], scalar: Scalar) -> tuple[Any, ...]:
     # circle ((a, 0, b), (0, a, c), (b, c, f)) that column is a·(−b, −c, a), and the point is (−b, −c, a): the same
     # point wherever a ≠ 0 (the circle's own condition), with a polynomial of lower degree for what is built on it
     k = v[0]
-    if node.args[0].operation.circle:
+    if getattr(getattr(node.args[0], "operation", None), "circle", False):  # (a bare node: the general formula)
         return (-k[0][2], -k[1][2], k[0][0])
     return (k[0][1] * k[1][2] - k[0][2] * k[1][1], k[0][2] * k[1][0] - k[0][0] * k[1][2],
             k[0][0] * k[1][1] - k[0][1] * k[1][0])
