@@ -666,15 +666,13 @@ class _Factored:
             out[key] = (f, out[key][1] + int(k) if key in out else int(k))
         return cls(coeff, out)
 
-    def times(self, *others: _Factored, half: bool = False) -> _Factored:
-        """The product with others (or, with ``half``, the square root of the product, exponents halved)."""
+    def times(self, *others: _Factored) -> _Factored:
+        """The product with others, factored."""
         coeff, out = self.coeff, dict(self.factors)
         for o in others:
             coeff *= o.coeff
             for key, (f, k) in o.factors.items():
                 out[key] = (f, out[key][1] + k if key in out else k)
-        if half:
-            return _Factored(coeff, {key: (f, k // 2) for key, (f, k) in out.items() if k // 2})
         return _Factored(coeff, {key: v for key, v in out.items() if v[1]})
 
     def value(self, R: PolynomialRing) -> Any:
