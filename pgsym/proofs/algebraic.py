@@ -27,18 +27,20 @@ conclusion polynomial whose remainder modulo them is zero vanishes on every poin
 every choice of the roots — this is Wu's method with unit initials. For roots of unity only this is also
 necessary: a rational statement true for ζ is true for every conjugate (apply the Galois automorphism).
 
-**Named branches.** When the remainder is not zero, the named branch is tried as a rational branch: a
-named length whose square is the square of a polynomial s (Wu's school: B = 0, A = p²(1 − t², 2t) gives
-|BA| = p²(1 + t²)), or a polynomial multiple λ of an earlier length, is replaced by ±s (or ±λ·d_j) with the sign
-the named root has wherever that sign is evident (a sum of even powers with positive coefficients); if the
-conclusion then reduces to zero the verdict is "proved for the named branch only", naming the other branch
-where it fails. Otherwise the claim is evaluated exactly at random rational instances on every choice of signs
-of the square roots (exact algebraic numbers, decided by :func:`pgsym.exact.is_zero`). A failure on the named
-branch (principal lengths, either intersection root) refutes the claim, with the branch said; a claim that
-holds on the named branch at every instance but fails on another is *unknown* ("holds on the named branch
-only … not proved"), never *proved*. When the defining equations generate a field (generic lengths, a single
-root of unity) a rational statement true on one branch is true on all (the Galois group permutes them), so
-one-branch statements need a reducible tower, which is exactly what the rational named branch detects.
+**Named branches.** When the remainder is not zero, named lengths are written through each other on the
+named branch: lengths whose squares multiply to the square of a polynomial λ (one length: Wu's school, B = 0,
+A = p²(1 − t², 2t) gives |BA| = p²(1 + t²); two: |AC| = λ|AB|; more: |CD|·|AB| = |CA|·|CB| in a right triangle)
+have the product ±λ, with the sign the named roots give it (each has the sign of its w_A w_B) wherever the factors
+of that product show a sign (factors of even power, sums of even powers, positive semidefinite quadratic forms);
+if the conclusion, with one length of each such product replaced, then reduces to zero the verdict is "proved for
+the named branch only", naming a sign change where it fails. Otherwise the claim is evaluated exactly at random
+rational instances on every choice of signs of the square roots (exact algebraic numbers, decided by
+:func:`pgsym.exact.is_zero`). A failure on the named branch (principal lengths, either intersection root) refutes
+the claim, with the branch said; a claim that holds on the named branch at every instance but fails on another is
+*unknown* ("holds on the named branch only … not proved"), never *proved*. When the defining equations generate a
+field (generic lengths, a single root of unity) a rational statement true on one branch is true on all (the Galois
+group permutes them), so one-branch statements need a reducible tower — squares whose product is a square — which
+is exactly what the products of lengths detect.
 
 >>> from pgsym.proofs.claims import Claim
 >>> from pgsym.proofs.engine import prove
