@@ -481,19 +481,20 @@ def _annihilator(tower: _Tower, p: Any, deadline: Any) -> Callable[[Any], bool]:
     no zero divisors). Otherwise the parameters are first specialised at two points, a ring map that keeps the
     basis's leading terms: a product whose image does not reduce to 0 does not reduce to 0 itself (exact, and cheap,
     as only the roots remain; p's images are formed once for all c). Only then is c·p formed (which for a large
-    conclusion and condition takes minutes), and only when its terms times p's stay within the budget's work."""
+    conclusion and condition takes minutes), and only when its terms times p's stay within the budget's work. Both
+    are first divided by their factors without roots (:func:`_primitive`), which changes none of these answers."""
     R = tower.R
     roots = set(tower.order)
     params = [x for x in R.symbols if x not in roots]
     rng = random.Random(len(params))
-    p = _primitive(tower, p)
     points = [{x: R.constant(rng.randint(-97, 97)) for x in params} for _ in range(2)]
     images: list[tuple[dict, list[Any], Any]] = []
+    primitive: list[Any] = []  # p's primitive part, formed for the first condition with roots
 
     def image(i: int) -> tuple[dict, list[Any], Any]:
         while len(images) <= i:
             point = points[len(images)]
-            images.append((point, [_compose(R, g, point) for g in tower.basis], _compose(R, p, point)))
+            images.append((point, [_compose(R, g, point) for g in tower.basis], _compose(R, primitive[0], point)))
         return images[i]
 
     def kills(c: Any) -> bool:
@@ -502,6 +503,8 @@ def _annihilator(tower: _Tower, p: Any, deadline: Any) -> Callable[[Any], bool]:
             return True
         if not _has_roots(tower, c):
             return False
+        if not primitive:
+            primitive.append(_primitive(tower, p))
         c = _primitive(tower, c)
         for i in range(len(points)):
             deadline.check("multiplying the conclusion by a condition at a point")
@@ -514,10 +517,10 @@ def _annihilator(tower: _Tower, p: Any, deadline: Any) -> Callable[[Any], bool]:
                     q = divmod(q, g)[1]
             if q != 0:
                 return False
-        if R.nterms(c) * R.nterms(p) > budget.MAX_WORK:
+        if R.nterms(c) * R.nterms(primitive[0]) > budget.MAX_WORK:
             return False  # not shown: the caller then looks for another proof or samples
         deadline.check("multiplying the conclusion by a condition")
-        return tower.reduce(c * p) == 0
+        return tower.reduce(c * primitive[0]) == 0
 
     return kills
 
