@@ -720,7 +720,13 @@ def _compose(R: PolynomialRing, p: Any, sub: dict[sympy.Symbol, Any]) -> Any:
         return p
     if R.backend == "flint":
         return p.compose(*(sub.get(s, g) for s, g in zip(R.symbols, R.gens, strict=True)))
-    return p.compose([(g, sub[s]) for s, g in zip(R.symbols, R.gens, strict=True) if s in sub])
+    # SymPy's ring: numbers by subs (its compose fails on 0 for a variable's power 0), polynomials by compose
+    pairs = [(g, sub[s]) for s, g in zip(R.symbols, R.gens, strict=True) if s in sub]
+    numbers = [(g, v.LC if v else 0) for g, v in pairs if not v or v.is_ground]
+    if numbers:
+        p = p.subs(numbers)
+    rest = [(g, v) for g, v in pairs if v and not v.is_ground]
+    return p.compose(rest) if rest else p
 
 
 def _has_roots(tower: _Tower, p: Any) -> bool:
@@ -730,7 +736,7 @@ def _has_roots(tower: _Tower, p: Any) -> bool:
     return any(degrees[i] for i, x in enumerate(tower.R.symbols) if x in set(tower.order))
 
 
-_MAX_NAMED_TERMS = 5000
+_MAX_NAMED_TERMS = 2000
 """The largest square or orientation of a named root that is factored to relate it to the others."""
 
 

@@ -255,7 +255,8 @@ def _pairs(a: Sequence[Any], b: Sequence[Any]) -> list[Any]:
 
 def _moment(t: Any) -> tuple[Any, Any, Any]:
     """(1, t, t²): a point of the conic y² = xw (or a tangent of its dual), used to sweep a pencil or a line."""
-    return (t ** 0, t, t * t)
+    one = t ** 0 if t else t + 1  # SymPy's ring has no 0**0
+    return (one, t, t * t)
 
 
 def _conic_tangent_to(node: Any, v: list[Any], scalar: Scalar) -> Any:
