@@ -16,7 +16,15 @@ from strategies import homogeneous_vectors, integers
 
 from pgsym.errors import ObjectTypeError
 from pgsym.proofs import Claim, prove
-from pgsym.proofs.algebraic import _branches, _evaluate, _Tower
+from pgsym.proofs.algebraic import (
+    _annihilator,
+    _branches,
+    _evaluate,
+    _evidently_positive,
+    _framed_values,
+    _primitive,
+    _Tower,
+)
 from pgsym.proofs.budget import Deadline
 from pgsym.proofs.errors import StatementKindError, StatementSyntaxError
 from pgsym.proofs.language import parse_statement
@@ -133,7 +141,8 @@ def test_two_internal_bisectors_and_one_external_are_not_concurrent():
 def test_a_statement_true_on_the_internal_branch_only_is_proved_for_that_branch_only():
     # A = (0, 0), B = (t², 0), C = (0, 1): |AB| = t², |AC| = 1 are polynomials, so the named branch is rational:
     # d_A_B = t², d_A_C = 1. The internal bisector at A has the direction (1, 0) + (0, 1) and passes through
-    # (1, 1); with d_A_C = −1 it is the external one, direction (1, −1), which does not.
+    # (1, 1); with d_A_B = −t² it is the external one, direction d_A_C·(B − A) + d_A_B·(C − A) = (t², 0) − t²·(0, 1)
+    # = t²·(1, −1), which does not.
     c = Claim("one-branch", "the internal bisector of ∠BAC passes through (1, 1)")
     (t,) = c.params("t")
     A, B, C = c.point("A", 0, 0), c.point("B", t * t, 0), c.point("C", 0, 1)
@@ -141,7 +150,7 @@ def test_a_statement_true_on_the_internal_branch_only_is_proved_for_that_branch_
     v = prove(c)
     assert v.proved
     assert v.branches.startswith("proved for the named branch only (d_A_B = t**2, d_A_C = 1")
-    assert "d_A_C = -1, aᵀP does not vanish" in v.branches
+    assert "with the sign of d_A_B changed, aᵀP does not vanish" in v.branches
 
 
 def test_equal_lengths_make_the_named_branch_rational():
@@ -156,17 +165,31 @@ def test_equal_lengths_make_the_named_branch_rational():
 
 
 def test_a_named_branch_without_an_evident_sign_stays_unknown():
-    # B = (t, 0), C = (0, t(t² − t + 1)): |AC|² = λ²|AB|² with λ = t² − t + 1, positive (discriminant −3) but not a
-    # sum of even powers, so the engine cannot see that d_A_C = λ d_A_B on the named branch: the internal bisector
-    # passes through (1, 1) at every instance it tries, the external one does not, and the verdict is unknown
+    # B = (t, 0), C = (0, t(t⁴ − t + 1)): |AC|² = λ²|AB|² with λ = t⁴ − t + 1, positive (its minimum, at 4t³ = 1, is
+    # 1 − (3/4)·4^(−1/3) > 0) but neither a sum of even powers nor of degree 2, so the engine cannot see that
+    # d_A_C = λ d_A_B on the named branch: the internal bisector passes through (1, 1) at every instance it tries, the
+    # external one does not, and the verdict is unknown
     c = Claim("not-evident", "the internal bisector of ∠BAC passes through (1, 1)")
     (t,) = c.params("t")
-    A, B, C = c.point("A", 0, 0), c.point("B", t, 0), c.point("C", 0, t * (t * t - t + 1))
+    A, B, C = c.point("A", 0, 0), c.point("B", t, 0), c.point("C", 0, t * (t**4 - t + 1))
     c.conclude_incident(c.point("P", 1, 1), c.angle_bisector("a", B, A, C))
     v = prove(c)
     assert v.status == "unknown" and not v.proved
     assert v.branches.startswith("holds on the named branch only (a is the internal bisector of ∠BAC)")
     assert "not proved" in v.branches and "a is the external bisector of ∠BAC" in v.branches
+
+
+def test_a_quadratic_multiplier_positive_by_its_form_is_proved_on_the_named_branch():
+    # B = (t, 0), C = (0, t(t² − t + 1)): λ = t² − t + 1 = (t − 1/2)² + 3/4 has the positive definite form
+    # [[1, −1/2], [−1/2, 1]] in (t, 1) (minors 1, 1 and 3/4), so d_A_C = λ d_A_B on the named branch, and the internal
+    # bisector, direction d_A_C·(B − A) + d_A_B·(C − A) = λ d_A_B·(t, 0) + d_A_B·(0, tλ) = tλ d_A_B·(1, 1), passes
+    # through (1, 1)
+    c = Claim("quadratic", "the internal bisector of ∠BAC passes through (1, 1)")
+    (t,) = c.params("t")
+    A, B, C = c.point("A", 0, 0), c.point("B", t, 0), c.point("C", 0, t * (t * t - t + 1))
+    c.conclude_incident(c.point("P", 1, 1), c.angle_bisector("a", B, A, C))
+    v = prove(c)
+    assert v.proved and v.branches.startswith("proved for the named branch only (d_A_C = d_A_B*(t**2 - t + 1)")
 
 
 def test_a_polynomial_ratio_of_lengths_with_an_evident_sign_is_proved_on_the_named_branch():
@@ -177,6 +200,131 @@ def test_a_polynomial_ratio_of_lengths_with_an_evident_sign_is_proved_on_the_nam
     c.conclude_incident(c.point("P", 1, 1), c.angle_bisector("a", B, A, C))
     v = prove(c)
     assert v.proved and v.branches.startswith("proved for the named branch only (d_A_C = d_A_B*t**2")
+
+
+RIGHT_TRIANGLE = "points c a\npoint b on line (perpendicular (join c a) c)\npoint d = foot c (join a b)\n"
+
+
+def test_a_product_of_lengths_proves_the_named_branch_in_a_right_triangle():
+    # C = (0, 0), A = (1, 0), B = (0, b), b > 0 (every right triangle up to similarity); s = |AB| = √(1 + b²); the foot
+    # of C on AB is D = (b², b)/s². Internal bisector of ∠CAB: direction (C − A)/1 + (B − A)/s ∝ (−s − 1, b); of
+    # ∠DCB: D/|D| + B/b = (b, 1)/s + (0, 1) ∝ (b, 1 + s). Dot product: −b(s + 1) + b(1 + s) = 0: perpendicular. No
+    # length is a polynomial multiple of another (|AB|² = b² + 1, |CD|² ∝ b²(b² + 1)): only a product of three
+    # lengths is a polynomial on the named branch, |CD|·|AB| = |CA|·|CB|
+    c = parse_statement(RIGHT_TRIANGLE + "line u = anglebisector c a b\nline v = anglebisector d c b\n"
+                        "prove perpendicular u v")
+    v, t = timed(c)
+    assert v.proved and t < 10
+    assert v.branches.startswith("proved for the named branch only (") and "·" in v.branches.split(":")[0]
+    assert "does not vanish" in v.branches
+    assert any("|" in cond.text and "≠ 0 (divided by on the named branch)" in cond.text for cond in v.conditions)
+
+
+@pytest.mark.parametrize("changed", ["line u = exbisector c a b\nline v = anglebisector d c b",
+                                     "line u = anglebisector c a b\nline v = exbisector d c b"])
+def test_the_same_right_triangle_with_an_external_bisector_is_not_proved(changed):
+    # as above with s = |AB|: the external bisector at A has the direction (−1, 0) − (−1, b)/s ∝ (1 − s, −b), and
+    # (1 − s, −b)·(b, 1 + s) = −2bs ≠ 0; the external one at C is perpendicular to the internal one there, hence
+    # parallel to the internal bisector at A (not perpendicular). The other branch holds, the named one fails.
+    c = parse_statement(RIGHT_TRIANGLE + changed + "\nprove perpendicular u v", name="wrong-branch")
+    v = prove(c)
+    assert not v.proved and v.refuted
+    assert v.branches.startswith("fails on the named branch") and v.counterexample.recheck()
+
+
+def test_a_product_over_earlier_lengths_with_a_squared_distance_as_sign():
+    # the tangent at A of the circle ABC meets BC at E, and the internal bisector of ∠BAC meets BC at H. The
+    # tangent-chord angle gives ∠EAC = ∠B (E beyond C), so ∠EAH = ∠B + ∠A/2 = ∠EHA (exterior angle of triangle ABH):
+    # triangle EAH is isosceles, EA = EH, and the bisector at E of ∠AEH = ∠BEA is perpendicular to AH. In the frame
+    # A = (0, 0), B = (1, 0) the proof uses |AC|·|BE|·|AE| = λ, whose sign needs the factor (c_x − 1)² + c_y²
+    # (|BC|²) positive: its form in (c_x, c_y, 1), [[1, 0, −1], [0, 1, 0], [−1, 0, 1]], has the principal minors
+    # 1, 1, 1, 1, 0, 1 and 0, all ≥ 0 (without that the verdict is unknown)
+    c = parse_statement("points a b c\npoint d = centre (circle b a c)\n"
+                        "point e = meet (perpendicular (join a d) a) (join b c)\nline u = anglebisector b e a\n"
+                        "line v = anglebisector b a c\nprove perpendicular u v")
+    v, t = timed(c)
+    assert v.proved and t < 10 and v.branches.startswith("proved for the named branch only (")
+
+
+CYCLIC = ("points a b\npoint c on circle (circle a b) through b\npoint d on circle (circle a b) through b\n"
+          "point e on circle (circle a b) through b\npoint f = meet (join b c) (join d e)\n"
+          "point g = meet (join c d) (join b e)\nline u = anglebisector d f b\nline v = anglebisector c g b\n")
+
+
+def test_bisectors_at_the_meets_of_opposite_sides_of_a_cyclic_quadrilateral_are_perpendicular_where_they_meet():
+    # B, C, D, E on a circle, F = BC ∩ DE, G = CD ∩ BE; lines BC, DE, CD, BE at the angles β₁, β₂, γ₁, γ₂ (mod π).
+    # Inscribed angles (directed, mod π): ∠(CD, CB) = ∠(ED, EB), i.e. β₁ − γ₁ = γ₂ − β₂, so β₁ + β₂ = γ₁ + γ₂ and the
+    # bisectors at F, at the angles (β₁ + β₂)/2 mod π/2, are each parallel or perpendicular to those at G: wherever u
+    # and v meet in a finite point they are perpendicular (whichever sign each length root takes)
+    v = prove(parse_statement(CYCLIC + "point j = meet u v\npoint k = reflect j a  # j is a finite point\n"
+                              "prove perpendicular u v"))
+    assert v.proved and v.branches.startswith("proved for every choice of root")
+    assert v.certificate.steps[-1].endswith("it vanishes wherever j is a finite point")
+    # without the finite meet the internal bisectors are parallel in some figures (the order of the points on the
+    # circle decides), so the claim is not proved
+    assert not prove(parse_statement(CYCLIC + "prove perpendicular u v")).proved
+
+
+def test_a_conclusion_scaled_by_free_points_is_tested_against_a_condition_without_its_scale():
+    # as above, with the lines through F and G given by free points H on u and I on v: the conclusion is the one above
+    # times factors of h_t, i_t without roots (hundreds of thousands of terms), and multiplying it by the finite-meet
+    # condition took minutes; its primitive part (the factors without roots divided out) has a few hundred terms
+    statement = CYCLIC.replace("line v", "point h on line u\nline v") + (
+        "point i on line v\npoint j = meet (join f h) (join g i)\npoint k = reflect j a  # j is a finite point\n"
+        "prove perpendicular (join g i) (join f h)")
+    start = time.perf_counter()
+    v = prove(parse_statement(statement), timeout=60)
+    assert v.proved and time.perf_counter() - start < 30
+    assert v.certificate.steps[-1].endswith("it vanishes wherever j is a finite point")
+
+
+def right_angle_tower():
+    # A = (0, 0), B = (t, 0), C = (0, 1): the length root d = d_A_B has d² = t², a square: d − t and d + t are zero
+    # divisors modulo d² − t², since (d − t)(d + t) = d² − t²
+    c = Claim("tower", "x")
+    (t,) = c.params("t")
+    A, B, C = c.point("A", 0, 0), c.point("B", t, 0), c.point("C", 0, 1)
+    c.conclude_incident(c.point("P", 1, 1), c.angle_bisector("a", B, A, C))
+    _norm, tower, _values = _framed_values(c, None, Deadline(None), None)
+    R = tower.R
+    return tower, R(sympy.Symbol("d_A_B")), R(t)
+
+
+def test_a_primitive_part_divides_out_the_factors_without_roots():
+    tower, d, t = right_angle_tower()
+    p = (d + t) * (t * t + 1) * 6
+    q = _primitive(tower, p)
+    # p = 6(t² + 1)·(d + t): the gcd of p at d = 2 and d = −5 is a multiple of (t² + 1) times a constant, and the
+    # quotient is (d + t) up to a rational factor
+    assert divmod(p, q)[1] == 0
+    ratio = [c for _, c in tower.R.terms(q)]
+    assert tower.R.nterms(q) == 2 and ratio[0] == ratio[1]
+    assert _primitive(tower, t * t + 1) == t * t + 1  # no roots: unchanged
+
+
+def test_a_condition_kills_the_conclusion_only_as_a_zero_divisor():
+    tower, d, t = right_angle_tower()
+    kills = _annihilator(tower, (d + t) * (t + 3), Deadline(None))
+    assert kills(d - t)           # (d − t)(d + t)(t + 3) = (d² − t²)(t + 3) ≡ 0
+    assert not kills(d + 2 * t)   # (d + 2t)(d + t) = d² + 3td + 2t² ≡ 3td + 3t² ≠ 0
+    assert not kills(t + 1)       # no roots: (t + 1)(d + t)(t + 3) is a nonzero normal form
+    assert kills(tower.R.constant(0))
+
+
+@settings(max_examples=60, deadline=None)
+@given(integers(5), integers(5), integers(5), integers(5), integers(5), integers(5), integers(3), integers(3),
+       integers(4), integers(4))
+def test_evidently_positive_forms_are_never_negative(a, b, c, e, f, g, u, w, x0, y0):
+    # f = u²·(a x + b y + c)² + w²·(e x² + f y + g)², a sum of squares of polynomials; the claim "positive wherever
+    # not 0" must hold at every point tried, and the form itself (or its negative minus 1) at (x0, y0) decides it
+    x, y = sympy.symbols("x y")
+    poly = sympy.expand(u**2 * (a * x + b * y + c) ** 2 + w**2 * (e * x**2 + f * y + g) ** 2)
+    for candidate in (poly, -poly - 1, poly - (x0**2 + 1)):
+        if candidate != 0 and _evidently_positive(candidate, [x, y]):
+            for px, py in ((x0, y0), (y0, x0), (0, 0), (x0, 0), (1, -1)):
+                assert candidate.subs({x: px, y: py}) >= 0
+    if u and (a or b) and not (e or f or g or w):  # a nonzero square of a linear form: recognised by its form
+        assert _evidently_positive(poly, [x, y])
 
 
 def test_wu_half_angle_parametrisation_proves_the_internal_bisector():

@@ -27,18 +27,20 @@ conclusion polynomial whose remainder modulo them is zero vanishes on every poin
 every choice of the roots — this is Wu's method with unit initials. For roots of unity only this is also
 necessary: a rational statement true for ζ is true for every conjugate (apply the Galois automorphism).
 
-**Named branches.** When the remainder is not zero, the named branch is tried as a rational branch: a
-named length whose square is the square of a polynomial s (Wu's school: B = 0, A = p²(1 − t², 2t) gives
-|BA| = p²(1 + t²)), or a polynomial multiple λ of an earlier length, is replaced by ±s (or ±λ·d_j) with the sign
-the named root has wherever that sign is evident (a sum of even powers with positive coefficients); if the
-conclusion then reduces to zero the verdict is "proved for the named branch only", naming the other branch
-where it fails. Otherwise the claim is evaluated exactly at random rational instances on every choice of signs
-of the square roots (exact algebraic numbers, decided by :func:`pgsym.exact.is_zero`). A failure on the named
-branch (principal lengths, either intersection root) refutes the claim, with the branch said; a claim that
-holds on the named branch at every instance but fails on another is *unknown* ("holds on the named branch
-only … not proved"), never *proved*. When the defining equations generate a field (generic lengths, a single
-root of unity) a rational statement true on one branch is true on all (the Galois group permutes them), so
-one-branch statements need a reducible tower, which is exactly what the rational named branch detects.
+**Named branches.** When the remainder is not zero, named lengths are written through each other on the
+named branch: lengths whose squares multiply to the square of a polynomial λ (one length: Wu's school, B = 0,
+A = p²(1 − t², 2t) gives |BA| = p²(1 + t²); two: |AC| = λ|AB|; more: |CD|·|AB| = |CA|·|CB| in a right triangle)
+have the product ±λ, with the sign the named roots give it (each has the sign of its w_A w_B) wherever the factors
+of that product show a sign (factors of even power, sums of even powers, positive semidefinite quadratic forms);
+if the conclusion, with one length of each such product replaced, then reduces to zero the verdict is "proved for
+the named branch only", naming a sign change where it fails. Otherwise the claim is evaluated exactly at random
+rational instances on every choice of signs of the square roots (exact algebraic numbers, decided by
+:func:`pgsym.exact.is_zero`). A failure on the named branch (principal lengths, either intersection root) refutes
+the claim, with the branch said; a claim that holds on the named branch at every instance but fails on another is
+*unknown* ("holds on the named branch only … not proved"), never *proved*. When the defining equations generate a
+field (generic lengths, a single root of unity) a rational statement true on one branch is true on all (the Galois
+group permutes them), so one-branch statements need a reducible tower — squares whose product is a square — which
+is exactly what the products of lengths detect.
 
 >>> from pgsym.proofs.claims import Claim
 >>> from pgsym.proofs.engine import prove
@@ -71,6 +73,7 @@ from ..errors import PgsymError
 from ..exact import is_zero
 from ..exact import sign as exact_sign
 from ..projective_plane import Line, Point
+from . import budget
 from .budget import Deadline, Timeout, TooLarge, alarm
 from .by_evaluation import identity_by_evaluation
 from .claims import Claim, Node
@@ -415,11 +418,12 @@ def prove_algebraic(claim: Claim, timeout: float | None = 10.0, seed: int = 0, i
             failing = None
             for label, poly in conclusion_polys(claim, values, ring=R):
                 deadline.check("reducing the conclusion")
+                poly = tower.reduce(poly)  # the normal form: 0 exactly when the conclusion is in the ideal
                 if poly == 0:
                     steps.append(f"{label} reduces to 0 modulo the defining equations")
                     continue
-                needed = next((text for text, polys in reqs
-                               if polys and all(tower.reduce(c * poly) == 0 for c in polys)), None)
+                kills = _annihilator(tower, poly, deadline)
+                needed = next((text for text, polys in reqs if polys and all(kills(c) for c in polys)), None)
                 if needed is None:
                     failing = (label, poly)
                     break
@@ -436,9 +440,11 @@ def prove_algebraic(claim: Claim, timeout: float | None = 10.0, seed: int = 0, i
                 return proved(certificate, _every_root(roots))
             named = _named_branch_proof(claim, values, tower, deadline)
             if named is not None:
-                text, lines = named
-                certificate = Certificate("ideal membership on the named branch: the named roots replaced by their "
-                                          "rational values there, then reduction modulo the remaining equations",
+                text, lines, extra = named
+                conditions += extra
+                certificate = Certificate("ideal membership on the named branch: named roots written through the other "
+                                          "named roots there (their squares multiply to a square, and the named "
+                                          "signs fix the sign), then reduction modulo the remaining equations",
                                           R.field + f"[{len(R.symbols)} variables, lex, roots first]",
                                           [*steps, *lines], 0, backend=R.backend,
                                           normalisation="" if norm is None else norm.describe())
@@ -447,6 +453,77 @@ def prove_algebraic(claim: Claim, timeout: float | None = 10.0, seed: int = 0, i
                            done=done, counterexample=Counterexample)
     except (TooLarge, Timeout, PgsymError) as err:
         return done(Status.UNKNOWN, reason=_undecided(err, timeout), branches="no decision")
+
+
+def _primitive(tower: _Tower, p: Any) -> Any:
+    """p divided by a common factor h of its coefficients as a polynomial in the roots (h has no roots; h is the gcd
+    of p at two integer values of the roots, kept when it divides p exactly). Multiplying by a nonzero h without
+    roots maps normal forms to normal forms, so p·c reduces to 0 exactly when (p/h)·c does, and p vanishes wherever
+    p/h does: a conclusion's factor that only scales it (a free point's position on its line) is dropped."""
+    R = tower.R
+    if not _has_roots(tower, p) or R.nterms(p) < 2:
+        return p
+    roots = [x for x in R.symbols if x in set(tower.order)]
+    values = ((2, -3, 5, -7, 11, -13, 17, -19, 23, -29), (-5, 7, 3, 13, -2, 19, -11, 29, -17, 31))
+    a, b = (_compose(R, p, {r: R.constant(v) for r, v in zip(roots, vs, strict=False)}) for vs in values)
+    if a == 0 or b == 0:
+        return p
+    h = a.gcd(b)
+    if R.degree(h) < 1:
+        return p
+    q, r = divmod(p, h)
+    return q if r == 0 else p
+
+
+def _annihilator(tower: _Tower, p: Any, deadline: Any) -> Callable[[Any], bool]:
+    """For p ≠ 0 in normal form (degree < the leading degree in every root), the test whether c·p reduces to 0.
+
+    Never when c reduces to a nonzero polynomial without roots (c·p is then in normal form and nonzero: the ring has
+    no zero divisors). Otherwise the parameters are first specialised at two points, a ring map that keeps the
+    basis's leading terms: a product whose image does not reduce to 0 does not reduce to 0 itself (exact, and cheap,
+    as only the roots remain; p's images are formed once for all c). Only then is c·p formed (which for a large
+    conclusion and condition takes minutes), and only when its terms times p's stay within the budget's work. Both
+    are first divided by their factors without roots (:func:`_primitive`), which changes none of these answers."""
+    R = tower.R
+    roots = set(tower.order)
+    params = [x for x in R.symbols if x not in roots]
+    rng = random.Random(len(params))
+    points = [{x: R.constant(rng.randint(-97, 97)) for x in params} for _ in range(2)]
+    images: list[tuple[dict, list[Any], Any]] = []
+    primitive: list[Any] = []  # p's primitive part, formed for the first condition with roots
+
+    def image(i: int) -> tuple[dict, list[Any], Any]:
+        while len(images) <= i:
+            point = points[len(images)]
+            images.append((point, [_compose(R, g, point) for g in tower.basis], _compose(R, primitive[0], point)))
+        return images[i]
+
+    def kills(c: Any) -> bool:
+        c = tower.reduce(c) if c != 0 else c
+        if c == 0:
+            return True
+        if not _has_roots(tower, c):
+            return False
+        if not primitive:
+            primitive.append(_primitive(tower, p))
+        c = _primitive(tower, c)
+        for i in range(len(points)):
+            deadline.check("multiplying the conclusion by a condition at a point")
+            point, basis, p_at = image(i)
+            q = _compose(R, c, point) * p_at
+            if R.backend == "sympy":
+                q = q.rem(basis) if basis else q
+            else:
+                for g in reversed(basis):
+                    q = divmod(q, g)[1]
+            if q != 0:
+                return False
+        if R.nterms(c) * R.nterms(primitive[0]) > budget.MAX_WORK:
+            return False  # not shown: the caller then looks for another proof or samples
+        deadline.check("multiplying the conclusion by a condition")
+        return tower.reduce(c * primitive[0]) == 0
+
+    return kills
 
 
 def _framed_values(claim: Claim, norm: Any, deadline: Any, backend: str | None) -> tuple[Any, _Tower, dict]:
@@ -515,11 +592,52 @@ def _frame_breaks(claim: Claim, values: dict[Node, Any], tower: _Tower) -> bool:
 
 
 def _evidently_positive(e: sympy.Expr, gens: Sequence[sympy.Symbol]) -> bool:
-    """Every term has even exponents and a positive coefficient: positive wherever it is not zero."""
+    """Positive wherever it is not zero, as its form shows: every term has even exponents and a positive coefficient,
+    or it is a quadratic form in (x₁^g₁, …, xₙ^gₙ, 1) that is positive semidefinite (a squared distance such as
+    (x − 1)² + y², or x⁴ − x² + 1: :func:`_semidefinite`).
+
+    >>> x, y = sympy.symbols("x y")
+    >>> [_evidently_positive(f, [x, y]) for f in (x**2 + y**4, x**2 - 2*x + y**2 + 1, x**2 - 2*x + y**2, x*y)]
+    [True, True, False, False]
+    >>> [_evidently_positive(f, [x, y]) for f in (x**4 - x**2 + 1, x**4 - x + 1, x**6 - 2*x**3*y + y**2, x**3 + 1)]
+    [True, False, True, False]
+    """
     poly = sympy.Poly(e, *gens) if gens else None
     if poly is None:
         return bool(e > 0)
-    return not poly.is_zero and all(c > 0 and all(k % 2 == 0 for k in m) for m, c in poly.terms())
+    if poly.is_zero:
+        return False
+    if all(c > 0 and all(k % 2 == 0 for k in m) for m, c in poly.terms()):
+        return True
+    return _semidefinite(poly)
+
+
+def _semidefinite(poly: sympy.Poly) -> bool:
+    """Whether the polynomial is F(x₁^g₁, …, xₙ^gₙ) with F of degree 2 and F = uᵀMu ≥ 0 for u = (u₁, …, uₙ, 1), M
+    positive semidefinite (Sylvester: all principal minors ≥ 0), with every gᵢ = 1 or every gᵢ the gcd of xᵢ's
+    exponents (e.g. x⁴ − x² + 1 is F(x²) with F = u² − u + 1). F ≥ 0 everywhere gives f ≥ 0 everywhere."""
+    used = [i for i in range(len(poly.gens)) if any(m[i] for m in poly.monoms())]
+    n = len(used) + 1
+    if n > 8:
+        return False
+    gcds = [math.gcd(*(m[i] for m in poly.monoms())) if i in used else 1 for i in range(len(poly.gens))]
+    for g in ([1] * len(poly.gens), gcds) if any(x > 1 for x in gcds) else ([1] * len(poly.gens),):
+        terms = [(tuple(k // gi for k, gi in zip(mon, g, strict=True)), c) for mon, c in poly.terms()]
+        if max(sum(mon) for mon, _ in terms) != 2:
+            continue
+        m = sympy.zeros(n, n)
+        for mon, c in terms:
+            a, b = [used.index(i) for i in used for _ in range(mon[i])] + [n - 1] * (2 - sum(mon))
+            if a == b:
+                m[a, a] += c
+            else:
+                m[a, b] += sympy.Rational(c, 2)
+                m[b, a] += sympy.Rational(c, 2)
+        subsets = (list(s) for k in range(1, n + 1) for s in itertools.combinations(range(n), k))
+        minors = (m.extract(s, s).det() for s in subsets)
+        if all(x >= 0 for x in minors):
+            return True
+    return False
 
 
 def _rational_root(q: sympy.Expr, gens: Sequence[sympy.Symbol]) -> sympy.Expr | None:
@@ -533,79 +651,219 @@ def _rational_root(q: sympy.Expr, gens: Sequence[sympy.Symbol]) -> sympy.Expr | 
     return c * sympy.Mul(*(f ** (e // 2) for f, e in factors))
 
 
+@dataclass
+class _Factored:
+    """A polynomial of the proof's ring as c·∏ fᵏ over ℚ (factored by the ring's backend, whose factors are normalised,
+    so the same factor of two polynomials has the same text, the key): the coefficient and key ↦ (factor, k)."""
+
+    coeff: Fraction
+    factors: dict[str, tuple[Any, int]]
+
+    @classmethod
+    def of(cls, R: PolynomialRing, p: Any) -> _Factored:
+        if isinstance(p, int):
+            return cls(Fraction(p), {})
+        coeff, factors = p.factor() if R.backend == "flint" else p.factor_list()
+        coeff = Fraction(int(coeff.p), int(coeff.q)) if hasattr(coeff, "q") else Fraction(coeff.numerator,
+                                                                                           coeff.denominator)
+        out: dict[str, tuple[Any, int]] = {}
+        for f, k in factors:
+            key = str(f)
+            out[key] = (f, out[key][1] + int(k) if key in out else int(k))
+        return cls(coeff, out)
+
+    def times(self, *others: _Factored) -> _Factored:
+        """The product with others, factored."""
+        coeff, out = self.coeff, dict(self.factors)
+        for o in others:
+            coeff *= o.coeff
+            for key, (f, k) in o.factors.items():
+                out[key] = (f, out[key][1] + k if key in out else k)
+        return _Factored(coeff, {key: v for key, v in out.items() if v[1]})
+
+    def value(self, R: PolynomialRing) -> Any:
+        out = R(sympy.Rational(self.coeff.numerator, self.coeff.denominator))
+        for f, k in self.factors.values():
+            out = out * f**k
+        return out
+
+    def text(self, R: PolynomialRing, *extra: sympy.Symbol) -> str:
+        """The product as SymPy writes it (factors kept, times ``extra``)."""
+        return str(sympy.Mul(sympy.Rational(self.coeff.numerator, self.coeff.denominator),
+                             *(R.to_expr(f) ** k for f, k in self.factors.values()), *extra))
+
+    def sign(self, R: PolynomialRing, gens: Sequence[sympy.Symbol]) -> int | None:
+        """The sign wherever the polynomial is not 0, when the factors of odd power all have an evident one."""
+        total = 1 if self.coeff > 0 else -1 if self.coeff < 0 else 0
+        for f, k in self.factors.values():
+            if k % 2:
+                s = _evident_sign(R.to_expr(f), gens)
+                if s is None:
+                    return None
+                total *= s
+        return total
+
+
+def _square_root(f: _Factored) -> _Factored | None:
+    """λ with λ² = f (λ with rational coefficients), from the factorisation; else None."""
+    if f.coeff <= 0 or any(k % 2 for _, k in f.factors.values()):
+        return None
+    num, den = (math.isqrt(x) for x in (f.coeff.numerator, f.coeff.denominator))
+    if num * num != f.coeff.numerator or den * den != f.coeff.denominator:
+        return None
+    return _Factored(Fraction(num, den), {key: (p, k // 2) for key, (p, k) in f.factors.items()})
+
+
+def _compose(R: PolynomialRing, p: Any, sub: dict[sympy.Symbol, Any]) -> Any:
+    """p with some of the ring's variables replaced by elements of the ring (in the ring: the conclusion can have
+    many thousands of terms, which a SymPy expression would take minutes to hold)."""
+    if isinstance(p, int) or not sub:
+        return p
+    if R.backend == "flint":
+        return p.compose(*(sub.get(s, g) for s, g in zip(R.symbols, R.gens, strict=True)))
+    # SymPy's ring: numbers by subs (its compose fails on 0 for a variable's power 0), polynomials by compose
+    pairs = [(g, sub[s]) for s, g in zip(R.symbols, R.gens, strict=True) if s in sub]
+    numbers = [(g, v.LC if v else 0) for g, v in pairs if not v or v.is_ground]
+    if numbers:
+        p = p.subs(numbers)
+    rest = [(g, v) for g, v in pairs if v and not v.is_ground]
+    return p.compose(rest) if rest else p
+
+
+def _has_roots(tower: _Tower, p: Any) -> bool:
+    if isinstance(p, int) or p == 0:
+        return False
+    degrees = p.degrees()
+    return any(degrees[i] for i, x in enumerate(tower.R.symbols) if x in set(tower.order))
+
+
+_MAX_NAMED_TERMS = 2000
+"""The largest square or orientation of a named root that is factored to relate it to the others."""
+
+
+@dataclass
+class _Step:
+    """On the named branch d·d₁⋯dₖ = value (``whole``: d = value·d₁⋯dₖ, no division)."""
+
+    root: sympy.Symbol
+    value: _Factored
+    others: tuple[sympy.Symbol, ...]
+    whole: bool
+
+    def words(self, R: PolynomialRing) -> str:
+        if self.whole:
+            return f"{self.root} = {self.value.text(R, *self.others)}"
+        return f"{'·'.join(str(x) for x in (self.root, *self.others))} = {self.value.text(R)}"
+
+
 def _named_branch_proof(claim: Claim, values: dict[Node, Any], tower: _Tower, deadline: Any
-                        ) -> tuple[str, list[str]] | None:
-    """Prove the conclusion on the named branch when that branch is rational: a named root whose square is the
-    square of a polynomial s (e.g. |AB| for B = A + p²(1 − t², 2t), the tangent half-angle of Wu's school), or
-    equals the square of an earlier root. The sign of the named root is then evident (s·w_A w_B a sum of even
-    powers with positive coefficients), the root is replaced by ±s, and the conclusion must reduce to zero."""
+                        ) -> tuple[str, list[str], list[Condition]] | None:
+    """Prove the conclusion on the named branch by writing named roots through the others there.
+
+    Named roots d, d₁ … dₖ (d² = q, named sign d·o > 0 with o = w_A w_B; root-free squares) whose squares multiply to
+    the square of a polynomial, q·q₁⋯qₖ = λ², satisfy d·d₁⋯dₖ = ±λ. On the named branch every dⱼ·oⱼ > 0, so
+    d·d₁⋯dₖ has the sign of o·o₁⋯oₖ, and ±λ has the sign of S = λ·o·o₁⋯oₖ times the chosen sign; when the factors
+    of S show its sign σ wherever it is not zero (factors of odd power with an evident sign, :func:`_evident_sign`),
+    d·d₁⋯dₖ = σλ on the named branch (where S = 0, either λ = 0 and both sides are 0, or some o = 0 and there is no
+    named branch). With k = 0 the root is a polynomial (|AB| for B = A + p²(1 − t², 2t), the tangent half-angle of
+    Wu's school), with k = 1 a multiple of another length, with k ≥ 2 e.g. |CD|·|AB| = |CA|·|CB| in a right
+    triangle. Then d = σλ·d₁⋯dₖ/(q₁⋯qₖ) where no dⱼ is 0: the conclusion, of degree ≤ 1 in d once reduced, is
+    multiplied by q₁⋯qₖ and d replaced; each root so replaced is removed from the others, and the result must
+    reduce to zero modulo the remaining defining equations. Returns the branch's words, the certificate's lines
+    and the conditions qⱼ ≠ 0, or None."""
     R = tower.R
     roots = roots_of(claim)
-    gens = [g for g in R.symbols if g not in {r.symbol for r in roots}]
-    sub: dict[sympy.Symbol, sympy.Expr] = {}
-    lines = []
-    squares: dict[sympy.Symbol, sympy.Expr] = {}
-    orients: dict[sympy.Symbol, sympy.Expr] = {}
+    rootsyms = {r.symbol for r in roots}
+    gens = [g for g in R.symbols if g not in rootsyms]
+    named: dict[sympy.Symbol, tuple[Any, _Factored, _Factored, Root]] = {}  # d: (q, q and o factored, the root)
     for r in roots:
-        deadline.check("looking for a rational named branch")
-        if r.kind == "unity":
+        deadline.check("looking for the named branch in terms of other roots")
+        if r.kind == "unity" or not r.named:
             continue
-        q = R.to_expr(tower.reduce(r.square(values)))
-        squares[r.symbol] = q
-        if not r.named or q.free_symbols & {x.symbol for x in roots}:
+        q = tower.reduce(r.square(values))
+        o = tower.reduce(r.orient(values)) if r.orient is not None else 1
+        if q == 0 or _has_roots(tower, q) or _has_roots(tower, o) or max(R.nterms(q), R.nterms(o)) > _MAX_NAMED_TERMS:
             continue
-        orient = R.to_expr(r.orient(values)) if r.orient is not None else sympy.Integer(1)
-        orients[r.symbol] = orient
-        candidates = []  # (value up to sign, an expression with the sign of value·orient on the named branch)
-        s = _rational_root(q, gens)
-        if s is not None:
-            candidates.append((s, s * orient))
-        # the same square as an earlier length d_j: d = ±d_j; on the named branch d_j·orient_j > 0, so the sign of
-        # d_j·orient is that of orient_j·orient (or d_j's value there, when it has one)
-        # (or d = ±λ d_j when q = λ² q_j for a polynomial λ, e.g. a representative with w = 2)
-        for same, qt in squares.items():
-            if same == r.symbol or qt == 0 or same not in orients:  # only named lengths have a named sign
+        named[r.symbol] = (q, _Factored.of(R, q), _Factored.of(R, o), r)
+    order = list(named)
+    kept = list(order)
+    steps: list[_Step] = []
+    lines = []
+    for anywhere in (False, True):  # first through earlier roots only, then through any root not yet replaced
+        for d in order:
+            if d not in kept:
                 continue
-            num, den = sympy.fraction(sympy.cancel(q / qt))
-            lam = _rational_root(num, gens) if den == 1 else None
-            if lam is not None:
-                candidates.append((lam * sub[same], lam * sub[same] * orient) if same in sub
-                                  else (lam * same, lam * orients[same] * orient))
+            _q, fq, fo, _r = named[d]
+            pool = [x for x in kept if x != d and (anywhere or order.index(x) < order.index(d))]
+            for subset in (s for k in range(len(pool) + 1) for s in itertools.combinations(pool, k)):
+                deadline.check("looking for the named branch in terms of other roots")
+                if anywhere and all(order.index(x) < order.index(d) for x in subset):
+                    continue  # tried in the first sweep
+                lam = _square_root(fq.times(*(named[x][1] for x in subset)))
+                if lam is None:
+                    continue
+                signed = lam.times(fo, *(named[x][2] for x in subset))
+                sign = signed.sign(R, gens)
+                if sign not in (1, -1):
+                    continue
+                # λ/(q₁⋯qₖ) is a polynomial when no factor's power goes below 0: then d = σ·λ/(q₁⋯qₖ)·d₁⋯dₖ
+                den = _Factored(Fraction(1), {}).times(*(named[x][1] for x in subset))
+                whole = all(k <= lam.factors.get(key, (None, 0))[1] for key, (_f, k) in den.factors.items())
+                if whole:
+                    value = _Factored(sign * lam.coeff / den.coeff, {
+                        key: (f, k - den.factors.get(key, (None, 0))[1]) for key, (f, k) in lam.factors.items()
+                        if k - den.factors.get(key, (None, 0))[1]})
+                else:
+                    value = _Factored(sign * lam.coeff, lam.factors)
+                steps.append(_Step(d, value, subset, whole))
+                kept.remove(d)
+                product = "·".join(str(x) for x in (d, *subset))
+                squares = "·".join(f"({named[x][1].text(R)})" for x in (d, *subset))
+                lines.append(f"on the named branch {steps[-1].words(R)}: the squares multiply to {squares} = "
+                             f"({lam.text(R)})², so {product} = ±{lam.text(R)}; every named root has the sign of its "
+                             f"w_A w_B, so the sign is that of {signed.text(R)} "
+                             f"({'positive' if sign > 0 else 'negative'} wherever it is not 0: its factors show it)")
                 break
-        known = [*gens, *(x for x in squares if x != r.symbol)]
-        for value, sign_of in candidates:
-            product = sympy.expand(sign_of)
-            if _evidently_positive(product, known):
-                sub[r.symbol] = value
-                break
-            if _evidently_positive(-product, known):
-                sub[r.symbol] = -value
-                break
-        else:
-            continue
-        lines.append(f"on the named branch {r.symbol} = {sub[r.symbol]} (its square is {r.symbol}² = {q}; "
-                     f"its sign is that of the named root, as ({sub[r.symbol]})·({orient}) > 0)")
-    if not sub:
+    if not steps:
         return None
+    numerators = {id(s): s.value.value(R) for s in steps}
+
+    def on_branch(p: Any, flip: sympy.Symbol | None = None) -> Any:
+        for s in steps:  # d = value·∏dⱼ (/∏qⱼ): times ∏qⱼ, d replaced (p has degree ≤ 1 in d once reduced)
+            deadline.check("reducing the conclusion on the named branch")
+            p = tower.reduce(p)
+            if isinstance(p, int):
+                return p
+            zero = _compose(R, p, {s.root: R.constant(0)})
+            slope = _compose(R, p, {s.root: R.constant(1)}) - zero
+            den = R.constant(1)
+            for x in s.others if not s.whole else ():
+                den = den * named[x][0]
+            num = -numerators[id(s)] if s.root == flip else numerators[id(s)]
+            for x in s.others:
+                num = num * R(x)
+            p = den * zero + slope * num
+        return tower.reduce(p)
+
     others = []
     for label, poly in conclusion_polys(claim, values):
-        deadline.check("reducing the conclusion on the named branch")
-        expr = R.to_expr(tower.reduce(poly))
-        named = tower.reduce(R(sympy.expand(expr.xreplace(sub))))
-        if named != 0:
+        if on_branch(poly) != 0:
             return None
         lines.append(f"{label} reduces to 0 on the named branch")
-        for signs in itertools.product((1, -1), repeat=len(sub)):
-            flipped = {k: e * v for e, (k, v) in zip(signs, sub.items(), strict=True)}
-            if not others and tower.reduce(R(sympy.expand(expr.xreplace(flipped)))) != 0:
-                others.append((label, flipped))
-    words = ", ".join(f"{k} = {v}" for k, v in sub.items())
+        for s in steps if not others else ():
+            if on_branch(poly, s.root) != 0:
+                others.append((label, s.root))
+                break
+    divided = dict.fromkeys(x for s in steps if not s.whole for x in s.others)
+    conditions = [Condition(f"{named[x][3].words[0].lstrip('+')} ≠ 0 (divided by on the named branch)",
+                            raw=[named[x][0]]) for x in divided]
+    words = ", ".join(s.words(R) for s in steps)
     if others:
-        label, flipped = others[0]
-        other = f"on the other branch {', '.join(f'{k} = {v}' for k, v in flipped.items())}, {label} does not vanish"
+        label, d = others[0]
+        other = f"with the sign of {d} changed, {label} does not vanish"
     else:
         other = "it holds with every sign of these roots as well"
-    return (f"proved for the named branch only ({words}: {_named_words(claim, sub)}); {other}", lines)
+    return (f"proved for the named branch only ({words}: {_named_words(claim, {})}); {other}", lines, conditions)
 
 
 def _named_words(claim: Claim, sub: dict[sympy.Symbol, sympy.Expr]) -> str:

@@ -141,7 +141,8 @@ class Operation:
       its own: ``combine``), ``node_group(data, own)`` the group when it depends on the node's data (``own(e)``:
       ``e`` is a parameter used nowhere else), ``ratio_scaling`` ``(a, b)`` when a ratio changes by
       det(M)^a · k^b under an affine map or a similarity of scale k, ``ratio_arithmetic`` ``"sum"`` or
-      ``"product"`` for the arithmetic of ratios.
+      ``"product"`` for the arithmetic of ratios; ``circle``: the value is a circle's matrix
+      ((a, 0, b), (0, a, c), (b, c, f)) for every value of the arguments (its centre is then (−b, −c, a)).
     """
 
     name: str
@@ -168,6 +169,7 @@ class Operation:
     lies_on: tuple[int, ...] = ()
     through: tuple[int, ...] = ()
     polar_of: tuple[int, int] | None = None
+    circle: bool = False
 
     def result_kind(self, arg_kinds: Sequence[str]) -> str:
         """The kind of the result for arguments of the given kinds."""
@@ -253,7 +255,8 @@ def _pairs(a: Sequence[Any], b: Sequence[Any]) -> list[Any]:
 
 def _moment(t: Any) -> tuple[Any, Any, Any]:
     """(1, t, t²): a point of the conic y² = xw (or a tangent of its dual), used to sweep a pencil or a line."""
-    return (t ** 0, t, t * t)
+    one = t ** 0 if t else t + 1  # SymPy's ring has no 0**0
+    return (one, t, t * t)
 
 
 def _conic_tangent_to(node: Any, v: list[Any], scalar: Scalar) -> Any:
@@ -691,9 +694,14 @@ def _circle_three(node: Any, v: list[Any], scalar: Scalar) -> Any:
 
 
 def _centre(node: Any, v: list[Any], scalar: Scalar) -> tuple[Any, ...]:
-    # the pole of l∞: adj(K) (0, 0, 1)ᵀ (pgsym.conic_metric.center)
-    adj = alg.adjugate(v[0])
-    return (adj[0][2], adj[1][2], adj[2][2])
+    # the pole of l∞: adj(K) (0, 0, 1)ᵀ (pgsym.conic_metric.center), the last column of the adjugate only; for a
+    # circle ((a, 0, b), (0, a, c), (b, c, f)) that column is a·(−b, −c, a), and the point is (−b, −c, a): the same
+    # point wherever a ≠ 0 (the circle's own condition), with a polynomial of lower degree for what is built on it
+    k = v[0]
+    if getattr(getattr(node.args[0], "operation", None), "circle", False):  # (a bare node: the general formula)
+        return (-k[0][2], -k[1][2], k[0][0])
+    return (k[0][1] * k[1][2] - k[0][2] * k[1][1], k[0][2] * k[1][0] - k[0][0] * k[1][2],
+            k[0][0] * k[1][1] - k[0][1] * k[1][0])
 
 
 def _circles_second(node: Any, v: list[Any], scalar: Scalar) -> tuple[Any, ...]:
@@ -866,20 +874,20 @@ _EUCLIDEAN = (
          lambda n, name, d: [f"{name} has nonzero radius ({n[0]} ≠ {n[1]})", f"{n[0]} is a finite point",
                              f"{n[1]} is a finite point"],
          lambda node, value, a: [_distinct(a[0], a[1]), *_finite(a[0], a[1])],
-         lambda node, a, exact: _circle_core(a[0], metric.squared_distance(a[0], a[1])), through=(1,)),
+         lambda node, a, exact: _circle_core(a[0], metric.squared_distance(a[0], a[1])), through=(1,), circle=True),
     _sim("circle_radius", (_POINT,), "conic", _circle_centre_radius,
          lambda n, d: f"circle with centre {n[0]} and squared radius {d[0]}",
          lambda n, name, d: [f"{name} has nonzero radius ({d[0]} ≠ 0)", f"{n[0]} is a finite point"],
          lambda node, value, a: [[value[2][2] * value[0][0] - value[0][2] * value[0][2] - value[1][2] * value[1][2]],
                                  *_finite(a[0])],
          lambda node, a, exact: _circle_core(a[0], exact(node.data[0])), coefficients=True,
-         node_group=_radius_group),
+         node_group=_radius_group, circle=True),
     _sim("circle3", (_POINT,) * 3, "conic", _circle_three, lambda n, d: f"circle through {', '.join(n)}",
          lambda n, name, d: [f"{', '.join(n)} are finite and not collinear"],
          lambda node, value, a: [[value[0][0]]],
          lambda node, a, exact: _circle_core(_circumcentre_core(*a),
                                              metric.squared_distance(_circumcentre_core(*a), a[0])),
-         through=(0, 1, 2)),
+         through=(0, 1, 2), circle=True),
     _sim("centre", (_C2,), "point", _centre, lambda n, d: f"centre of {n[0]} (the pole of l∞)",
          lambda n, name, d: [f"{n[0]} has a finite centre (it is no parabola)"],
          lambda node, value, a: [[value[2]]],

@@ -317,7 +317,7 @@ def _turn(claim: Claim, name: str, x: Node, o: Node, turns: Fraction, powers: Se
         args.append(_zeta(claim, modulus).node)
 
     def rotated(px: Any, po: Any, z: Any = None) -> tuple[Any, ...]:
-        one = px[2] ** 0
+        one = px[2] ** 0 if px[2] else px[2] + 1  # SymPy's ring has no 0**0
         cr = _apply_terms(re, z) if not rational else sum(c for _, c in re) * one
         ci = _apply_terms(im, z) if not rational else sum(c for _, c in im) * one
         u = affine_vector(po, px)
