@@ -77,31 +77,33 @@ def three_distances() -> Claim:
     return c
 
 
-def test_two_squared_distances_from_one_point_lose_its_weight_before_cross_multiplying(monkeypatch):
-    # |AB|² = nAB / (w_A w_B)², |AC|² = nAC / (w_A w_C)²: the gcd of the denominators is w_A², so the conclusion
-    # polynomial is nAB·w_C² − nAC·w_B² (not nAB·w_A²w_C² − nAC·w_A²w_B², its multiple by w_A²)
-    monkeypatch.setattr(evaluation, "CANCEL_FROM", 0)
+def three_distances_conclusion() -> tuple:
+    """The conclusion |AB|² = |AC|² of three_distances as an expression, and the numerators nAB, nAC and the
+    weights w_A, w_B, w_C written out by hand."""
     c = three_distances()
     R = PolynomialRing(c.parameters)
     [(label, poly)] = conclusion_polys(c, evaluate(c, R, ring=R), ring=R)
     ax, ay, aw, bx, by, bw, cx, cy, cw = sympy.symbols("A_x A_y A_w B_x B_y B_w C_x C_y C_w")
     n_ab = (ax * bw - bx * aw) ** 2 + (ay * bw - by * aw) ** 2
     n_ac = (ax * cw - cx * aw) ** 2 + (ay * cw - cy * aw) ** 2
+    return label, R.to_expr(poly), n_ab, n_ac, (aw, bw, cw)
+
+
+def test_two_squared_distances_from_one_point_lose_its_weight_before_cross_multiplying(monkeypatch):
+    # |AB|² = nAB / (w_A w_B)², |AC|² = nAC / (w_A w_C)²: the gcd of the denominators is w_A², so the conclusion
+    # polynomial is nAB·w_C² − nAC·w_B² (not nAB·w_A²w_C² − nAC·w_A²w_B², its multiple by w_A²)
+    monkeypatch.setattr(evaluation, "CANCEL_FROM", 0)
+    label, poly, n_ab, n_ac, (_, bw, cw) = three_distances_conclusion()
     expected = n_ab * cw ** 2 - n_ac * bw ** 2
     assert label.startswith("the numerator of")
     # the gcd is defined up to its sign: the polynomial is ± the expected one
-    assert sympy.expand(R.to_expr(poly) - expected) == 0 or sympy.expand(R.to_expr(poly) + expected) == 0
+    assert sympy.expand(poly - expected) == 0 or sympy.expand(poly + expected) == 0
 
 
 def test_below_the_threshold_the_denominators_are_kept():
     # the same claim: a few hundred term products, below CANCEL_FROM: nAB·(w_A w_C)² − nAC·(w_A w_B)²
-    c = three_distances()
-    R = PolynomialRing(c.parameters)
-    [(_, poly)] = conclusion_polys(c, evaluate(c, R, ring=R), ring=R)
-    ax, ay, aw, bx, by, bw, cx, cy, cw = sympy.symbols("A_x A_y A_w B_x B_y B_w C_x C_y C_w")
-    n_ab = (ax * bw - bx * aw) ** 2 + (ay * bw - by * aw) ** 2
-    n_ac = (ax * cw - cx * aw) ** 2 + (ay * cw - cy * aw) ** 2
-    assert sympy.expand(R.to_expr(poly) - (n_ab * (aw * cw) ** 2 - n_ac * (aw * bw) ** 2)) == 0
+    _, poly, n_ab, n_ac, (aw, bw, cw) = three_distances_conclusion()
+    assert sympy.expand(poly - (n_ab * (aw * cw) ** 2 - n_ac * (aw * bw) ** 2)) == 0
 
 
 def test_a_claim_whose_cross_multiplication_is_too_large_is_expanded_after_the_cancellation(monkeypatch):
