@@ -257,3 +257,23 @@ def test_a_root_the_conditions_do_not_name_may_take_either_branch() -> None:
     text = BISECTOR.format(where="point g = intersection (join a c) (circle b c)\nwhere onray e a b")
     verdict = prove(parse_statement(text), timeout=30)
     assert str(verdict.status) == "proved" and "order conditions select" in verdict.branches
+
+
+TWO_ROOTS = """points c a e
+point b = rotate a c 0 1
+point d = intersection (join c a) (circle c e)
+point f = intersection (join c b) (circle c e)
+where {side} d f c (midpoint a b)
+prove parallel (join d f) (join a b)
+"""
+
+
+def test_two_roots_whose_product_is_rational_are_selected_by_one_condition() -> None:
+    # |ca| = |cb| (b is a turned about c by 90°) and d, f are the points at distance |ce| from c on the lines ca,
+    # cb: d = ±r·u_a, f = ±r·u_b (unit vectors). With equal signs d − f = ±r(u_a − u_b) is parallel to a − b,
+    # and d, f are mirror images in the bisector c(midpoint a b): on opposite sides of it. With different signs
+    # d − f = ±r(u_a + u_b) is perpendicular to a − b, and d, f are on the same side
+    proved = prove(parse_statement(TWO_ROOTS.format(side="oppositeside")), timeout=30)
+    assert str(proved.status) == "proved" and "component" in proved.branches
+    wrong = prove(parse_statement(TWO_ROOTS.format(side="sameside")), timeout=30)
+    assert str(wrong.status) == "false" and wrong.counterexample.recheck()

@@ -1095,6 +1095,60 @@ def _sign_over_named_root(t: sympy.Expr, params: Sequence[sympy.Symbol], known: 
     return None
 
 
+def _component_proof(claim: Claim, tower: _Tower, values: dict[Node, Any], pair: list[Root],
+                     params: list[sympy.Symbol], deadline: Any) -> tuple[list[str], str] | str:
+    """Prove the conclusion where the order conditions select, for two intersection roots e₁, e₂ (eᵢ² = Δᵢ) whose
+    squares multiply to a square, Δ₁Δ₂ = λ²: then e₁e₂ = ±λ, and the figure has two components. On the
+    component e₁e₂ = σλ, e₂ = σλe₁/Δ₁, so a polynomial a + b·e₁ + c·e₂ + d·e₁e₂ times Δ₁ > 0 is
+    (a + dσλ)Δ₁ + (bΔ₁ + cσλ)·e₁. The conclusion must vanish identically there for one σ; on the other component
+    an order condition p₀ + p₁e₁ must be ≤ 0 at both e₁ = ±√Δ₁, i.e. p₀ ≤ 0 and p₀² − p₁²Δ₁ ≥ 0 (their factors
+    show it): the condition then excludes every branch of that component. Returns the certificate's lines and the
+    branch words, or why it does not apply."""
+    R = tower.R
+    one, two = sorted(pair, key=lambda r: tower.order.index(r.symbol) if r.symbol in tower.order else 0)
+    e1, e2 = one.symbol, two.symbol
+    if [r for r in roots_of(claim) if r not in pair]:
+        return "the exact selection over two roots handles claims with no other square roots"
+
+    def reduced(x: Any) -> sympy.Expr:
+        return sympy.expand(R.to_expr(tower.reduce(x)))
+
+    d1, d2 = reduced(one.square(values)), reduced(two.square(values))
+    lam = None if d1.has(e1, e2) or d2.has(e1, e2) else _rational_root(sympy.expand(d1 * d2), params)
+    if lam is None:
+        return "the two roots' squares do not multiply to a square: no component to select"
+
+    def on(x: Any, sigma: int) -> tuple[sympy.Expr, sympy.Expr] | None:
+        p = sympy.Poly(reduced(x), e1, e2)
+        if p.degree(e1) > 1 or p.degree(e2) > 1:
+            return None
+        a, b, c, d = (p.coeff_monomial(m) for m in (1, e1, e2, e1 * e2))
+        return sympy.expand((a + d * sigma * lam) * d1), sympy.expand(b * d1 + c * sigma * lam)
+
+    goals = list(conclusion_polys(claim, values))
+    good = [sigma for sigma in (1, -1) if all(on(p, sigma) == (0, 0) for _label, p in goals)]
+    if len(good) != 1:
+        return "the conclusion does not vanish on exactly one of the components e₁e₂ = ±λ"
+    sigma = good[0]
+    for text, poly in condition_values(claim, values):
+        deadline.check("the order conditions on the other component")
+        split = on(poly, -sigma)
+        if split is None:
+            continue
+        p0, p1 = split
+        s0 = _signed_factors(p0, params, {})
+        sn = _signed_factors(sympy.expand(p0 * p0 - p1 * p1 * d1), params, {})
+        if s0 is not None and s0 <= 0 and sn is not None and sn >= 0:
+            sign = "+" if sigma > 0 else "−"
+            return ([f"{e1}² = Δ₁ and {e2}² = Δ₂ with Δ₁Δ₂ = λ², λ = {lam}: {e1}{e2} = ±λ, two components",
+                     f"on the component {e1}{e2} = {sign}λ every conclusion polynomial, times Δ₁ and with "
+                     f"{e2} = {sign}λ{e1}/Δ₁, reduces to 0 modulo {e1}² = Δ₁",
+                     f"on the other, '{text}' times Δ₁ is p₀ + p₁{e1} with p₀ ≤ 0 and p₀² − p₁²Δ₁ ≥ 0 (their "
+                     f"factors show it): ≤ 0 at both {e1} = ±√Δ₁, so the condition excludes that component"],
+                    f"the component {e1}{e2} = {sign}λ")
+    return "no order condition's sign on the other component is fixed by its factors"
+
+
 def _selected_branch_proof(claim: Claim, deadline: Any, backend: str | None
                            ) -> tuple[list[str], list[Condition], str] | str:
     """Prove the conclusion on the branch the order conditions select, for one intersection root e (e² = Δ).
@@ -1119,19 +1173,25 @@ def _selected_branch_proof(claim: Claim, deadline: Any, backend: str | None
     # the other roots (the norm below is 0 modulo all their equations, and T must not involve them)
     named = [r for r in free if any(not isinstance(p, int) and tower.reduce(p) != 0 and R.to_expr(
         tower.reduce(p)).has(r.symbol) for _t, p in condition_values(claim, values))]
-    if len(named) != 1:
-        return (f"the exact selection handles one intersection root named by the order conditions; they name "
+    if len(named) not in (1, 2):
+        return (f"the exact selection handles one or two intersection roots named by the order conditions; they name "
                 f"{len(named)} of the {len(free)} roots whose branch the statement leaves open")
-    root = named[0]
-    e = root.symbol
     params = [g for g in R.symbols if g not in {r.symbol for r in roots}]
-    others = {r.symbol for r in roots} - {e}
     conditions = []
     for text, polys in _requirements(claim, values):
         if all(p == 0 for p in polys):
             return f"the condition {text} fails identically"
         if not text.endswith("is not the zero vector"):
             conditions.append(Condition(text, raw=[p for p in polys if p != 0][:3]))
+    if norm is not None and norm.condition:
+        conditions.append(Condition(f"{norm.condition} (frame)"))
+    frame = [norm.describe() + " (similarities keep every order condition)"] if norm is not None else []
+    if len(named) == 2:
+        found = _component_proof(claim, tower, values, named, params, deadline)
+        return found if isinstance(found, str) else (frame + found[0], conditions, found[1])
+    root = named[0]
+    e = root.symbol
+    others = {r.symbol for r in roots} - {e}
 
     def split(p: Any) -> tuple[Any, Any]:  # p = p₀ + p₁·e modulo the defining equations, in the ring
         x = R.to_expr(tower.reduce(p))
@@ -1156,11 +1216,7 @@ def _selected_branch_proof(claim: Claim, deadline: Any, backend: str | None
     known = _known_signs([(t, x) for t, c0, c1 in conds if c1 == 0
                           for x in [reduced(c0)] if not x.free_symbols & others], params)
     lines = [f"{e}² = Δ (the branches ±{e}); the order conditions, each > 0: "
-             + "; ".join(t for t, _, _ in conds)]
-    if norm is not None:
-        lines.append(norm.describe() + " (similarities keep every order condition)")
-        if norm.condition:
-            conditions.append(Condition(f"{norm.condition} (frame)"))
+             + "; ".join(t for t, _, _ in conds), *frame]
     for label, poly in conclusion_polys(claim, values):
         deadline.check("the conclusion on the selected branch")
         g0, g1 = split(poly)
