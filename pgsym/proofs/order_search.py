@@ -114,8 +114,9 @@ def selecting_conditions(figures: Sequence[Figure], either: Sequence[str], point
     None when no such conditions are found.
 
     ``either`` names the points taken at random (the bits of a choice, in order), ``points`` every point
-    the conditions may name (in definition order). A condition names a random point and earlier points of
-    ``points`` (or any point, when those do not suffice)."""
+    the conditions may name (in definition order). A condition names a random point and points of ``points`` or
+    the midpoint ``(midpoint P Q)`` of two that are not random; one naming a single random point and earlier
+    points is preferred."""
     choices = sorted({c for f in figures for c in f})
     fixed = [p for p in points if p not in either]
     midpoints = [f"(midpoint {p} {q})" for p, q in itertools.combinations(fixed, 2)][:MAX_MIDPOINTS]
