@@ -1171,8 +1171,9 @@ def _selected_branch_proof(claim: Claim, deadline: Any, backend: str | None
     R = tower.R
     # the root the conditions select: the conclusion must then hold on its selected branch for every branch of
     # the other roots (the norm below is 0 modulo all their equations, and T must not involve them)
-    named = [r for r in free if any(not isinstance(p, int) and tower.reduce(p) != 0 and R.to_expr(
-        tower.reduce(p)).has(r.symbol) for _t, p in condition_values(claim, values))]
+    # (read off the monomials: a large condition as an expression took minutes)
+    polys = [p for _t, c in condition_values(claim, values) if not isinstance(p := tower.reduce(c), int)]
+    named = [r for r in free if any(m[i] for p in polys for m, _ in R.terms(p) for i in [R.symbols.index(r.symbol)])]
     if len(named) not in (1, 2):
         return (f"the exact selection handles one or two intersection roots named by the order conditions; they name "
                 f"{len(named)} of the {len(free)} roots whose branch the statement leaves open")

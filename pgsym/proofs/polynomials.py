@@ -152,14 +152,11 @@ class PolynomialRing:
         """p as a SymPy expression in the ring's symbols."""
         if self.backend == "sympy" and hasattr(p, "as_expr"):
             return p.as_expr()
-        total = sympy.Integer(0)
+        terms = []  # one Add at the end: adding term by term re-sorts the sum each time (quadratic)
         for m, c in self.terms(p):
-            term = sympy.Rational(c.numerator, c.denominator)
-            for s, e in zip(self.symbols, m, strict=True):
-                if e:
-                    term *= s**e
-            total += term
-        return total
+            terms.append(sympy.Mul(sympy.Rational(c.numerator, c.denominator),
+                                   *(s**e for s, e in zip(self.symbols, m, strict=True) if e)))
+        return sympy.Add(*terms)
 
     def text(self, p: Any, max_terms: int = 40) -> str:
         """p as text; long polynomials are summarised by degree and number of terms."""
