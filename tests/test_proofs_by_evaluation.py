@@ -246,9 +246,13 @@ def expanded(c: Claim):
     return R, evaluate(c, R)
 
 
+CLAIM_PARTS = (st.lists(st.tuples(linear, linear), min_size=4, max_size=4), steps,
+               st.tuples(st.integers(0, 9), st.integers(0, 9)))
+"""The points, construction plan and target of a random claim (random_claim's arguments)."""
+
+
 @settings(max_examples=40, deadline=None)
-@given(st.lists(st.tuples(linear, linear), min_size=4, max_size=4), steps, st.tuples(st.integers(0, 9),
-                                                                                              st.integers(0, 9)))
+@given(*CLAIM_PARTS)
 def test_evaluation_agrees_with_the_full_expansion(points, plan, target):
     c = random_claim(points, plan, target)
     _, values = expanded(c)
@@ -267,8 +271,7 @@ def test_evaluation_agrees_with_the_full_expansion(points, plan, target):
 
 
 @settings(max_examples=40, deadline=None)
-@given(st.lists(st.tuples(linear, linear), min_size=4, max_size=4), steps, st.tuples(st.integers(0, 9),
-                                                                                              st.integers(0, 9)))
+@given(*CLAIM_PARTS)
 def test_the_degree_bounds_bound_the_expanded_polynomials(points, plan, target):
     c = random_claim(points, plan, target)
     R, values = expanded(c)
