@@ -710,15 +710,34 @@ def test_a_goal_true_at_one_of_two_rational_common_points_is_written_at_that_poi
     assert solve(read).status == "proved"
 
 
-def test_a_goal_true_for_one_random_choice_that_nothing_selects_needs_a_branch_condition():
-    # g on the altitude from a with |ag| = |bc| (a square abde on ab): the goal holds at one of the two points,
-    # which are not rational, and no order condition of the figure's points tells them apart in every figure
+def test_a_goal_true_at_one_of_two_turned_common_points_is_written_at_that_point():
+    # g on the altitude from a with |ag| = |bc| is a + (c − b) turned by ±90° (rational); with the square abde on
+    # ab (d = b + (a − b) turned by −90°) gb ⊥ cd holds at one of them only. With b = 0, c = 1, a = p + qi:
+    # d = q − pi, g = p + (q + τ)i, (g − b)·(d − c) = (p, q + τ)·(q − 1, −p) = pq − p − pq − τp = −p(1 + τ):
+    # zero for τ = −1 only, g = a − i(c − b) = a + i(b − c), which the translation writes
     problem = ("a b c = triangle a b c; d e = square a b d e; f = foot f a b c; g = on_line g a f, "
                "eqdistance g a b c ? perp g b c d")
     goal = problem.split("?")[1]
     pts = [figure(problem, Branches((bit,)), random.Random(3)) for bit in (0, 1)]
+    turned = pts[0]["a"] - 1j * (pts[0]["c"] - pts[0]["b"])
+    assert [goal_holds(goal, p) for p in pts] == [abs(p["g"] - turned) < 1e-9 for p in pts]
+    text = translate(problem)
+    assert "point g = translate (rotate b c 0 1) c a  # the common point of on_line/eqdistance where the goal" in text
+    [read] = read_alphageometry("turned\n" + problem)
+    assert solve(read).status == "proved"
+
+
+def test_a_goal_true_for_one_random_choice_that_nothing_selects_needs_a_branch_condition():
+    # f on line ad with |df| = |eb| (|da| = |bc|, e on line bc): |af| = ||bc| − τ|eb|| and |ce| = |bc| − |be| when
+    # e is on the ray bc, |bc| + |be| otherwise, so |af| = |ce| holds at f on the ray da when e is on the ray bc
+    # and at the other f otherwise: "f on the ray da exactly when e is on the ray bc", which no order condition
+    # (nor two together) says, and both points are irrational
+    problem = ("a b c = triangle a b c; d = eqdistance d a b c; e = on_line e b c; f = on_line f a d, "
+               "eqdistance f d e b ? cong a f c e")
+    goal = problem.split("?")[1]
+    pts = [figure(problem, Branches((bit,)), random.Random(3)) for bit in (0, 1)]
     assert goal_holds(goal, pts[0]) != goal_holds(goal, pts[1])
-    with pytest.raises(UnsupportedConstructionError, match=r"on_line/eqdistance of g needs a branch condition.*no "
+    with pytest.raises(UnsupportedConstructionError, match=r"on_line/eqdistance of f needs a branch condition.*no "
                                                            r"order condition"):
         translate(problem)
 

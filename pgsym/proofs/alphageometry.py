@@ -26,9 +26,10 @@ numerically: a point already in the figure is avoided, otherwise either is taken
   until the goal holds) means that one: the translator looks for order conditions on the figure's points that
   select it in every random figure (:mod:`pgsym.proofs.order_search`) and writes them as ``where`` lines, which
   the engine proves on the branch they select; when none is found but both points are rational (one is the
-  fourth vertex P + Q − R of a parallelogram of earlier points, the other its mirror image), the one where the
-  goal holds in every random figure is written as it is, with a comment; otherwise the problem is refused with
-  :class:`~pgsym.proofs.errors.UnsupportedConstructionError` ("needs a branch condition"), never guessed.
+  fourth vertex P + Q − R of a parallelogram of earlier points, or P + (Q − R) turned by ±90°, the other its
+  mirror image), the one where the goal holds in every random figure is written as it is, with a comment;
+  otherwise the problem is refused with :class:`~pgsym.proofs.errors.UnsupportedConstructionError` ("needs a
+  branch condition"), never guessed.
 
 Two lines of a problem meet in the plane (AlphaGeometry's ``npara``), while pgsym's ``meet`` of parallel lines
 is their point at infinity: once a square root with two signs is in the statement, each meet is followed by a
@@ -339,8 +340,8 @@ def _translate_drawn(problem: str, line: int, title: str, orientation: bool | No
                     figures += drawn[3]
             found = selecting_conditions(figures, *named) if len(either) <= 3 else None
             if found is None and not pick:
-                # both common points may be rational (one the fourth vertex of a parallelogram): then the one where
-                # the goal holds in every random figure is written as it is
+                # both common points may be rational (a parallelogram's fourth vertex, a vector turned by 90° from
+                # a point): then the one where the goal holds in every random figure is written as it is
                 for ag, choice in itertools.product(random_ag, (0, 1)):
                     try:
                         picked, held = _translate_drawn(problem, line, title, orientation, {ag: choice})
@@ -646,7 +647,7 @@ class _Translator:
             self.emit(f"point {x} = reflect {self.p(common[0])} (join {one.centre} {two.centre})")
         else:
             x = self.define(ag)
-            vertex = self.numeric.parallelogram_common(one.expr, two.expr, self) if ag in self.pick else ""
+            vertex = self.numeric.rational_common(one.expr, two.expr, self) if ag in self.pick else ""
             if vertex:  # both common points are rational: the one the goal holds at (see _translate)
                 mirror = (f"(foot {two.centre} ({one.expr}))" if one.kind == "line"
                           else f"(join {one.centre} {two.centre})")
@@ -1438,18 +1439,26 @@ class _Numeric:
         return [*known, *(ag for ag in near if ag not in known)]
 
 
-    def parallelogram_common(self, one: str, two: str, t: _Translator) -> str:
-        """A common point of the loci that is P + Q − R for three earlier points (the fourth vertex of a
-        parallelogram, e.g. the point of the parallel to DC through B at distance |CB| from D), as pgsym text; or ""."""
+    def rational_common(self, one: str, two: str, t: _Translator) -> str:
+        """A common point of the loci that is rational in earlier points, as pgsym text, or "": the fourth vertex
+        P + Q − R of a parallelogram (e.g. the point of the parallel to DC through B at distance |CB| from D), else
+        P + (Q − R) turned by ±90° (e.g. the point of the perpendicular to BC through A at distance |BC| from A)."""
         first, second = (self._expr(_TOKENS.findall(e), 0)[0] for e in (one, two))
         points = _meet(first, second)
         scale = 1 + max(abs(v) for v in self.values.values() if isinstance(v, complex))
         names = [n for n in t.defined.values() if isinstance(self.values.get(n), complex)]
+
+        def common(x: complex) -> bool:
+            return min(abs(x - c) for c in points) < 1e-7 * scale
+
         for p, q in itertools.combinations(names, 2):
             for r in names:
-                x = self.values[p] + self.values[q] - self.values[r]
-                if r not in (p, q) and min(abs(x - c) for c in points) < 1e-7 * scale:
+                if r not in (p, q) and common(self.values[p] + self.values[q] - self.values[r]):
                     return f"translate {p} {r} {q}"
+        for p, q, r in itertools.product(names, repeat=3):
+            for turn in (1, -1):
+                if q != r and common(self.values[p] + turn * 1j * (self.values[q] - self.values[r])):
+                    return f"translate (rotate {q} {r} 0 {'-' if turn < 0 else ''}1) {r} {p}"
         return ""
 
 

@@ -28,8 +28,8 @@ from typing import Any
 from .operations import map_nested
 from .polynomials import PolynomialRing
 
-__all__ = ["MAX_TERMS", "MAX_WORK", "PRODUCTS_PER_SECOND", "Cost", "Deadline", "Metered", "Timeout", "TooLarge",
-           "alarm", "estimate", "metered"]
+__all__ = ["ALARM_REPEAT", "MAX_TERMS", "MAX_WORK", "PRODUCTS_PER_SECOND", "Cost", "Deadline", "Metered", "Timeout",
+           "TooLarge", "alarm", "estimate", "metered"]
 
 
 class Timeout(Exception):
@@ -110,6 +110,8 @@ def estimate(compute: Callable[[list[Any]], Any], args: list[Any], R: Polynomial
                  for a in args]
     try:
         compute(stand_ins)
+    except Timeout:
+        raise
     except Exception:  # a computation that compares or converts its values: no estimate, MAX_TERMS still holds
         return None
     return tally[0]
@@ -226,9 +228,17 @@ class Deadline:
             raise Timeout(self.stage)
 
 
+ALARM_REPEAT = 0.25
+"""Seconds between the repeats of a proof's alarm once its time is up (see :func:`alarm`)."""
+
+
 @contextmanager
 def alarm(seconds: float | None):  # type: ignore[no-untyped-def]
-    """Interrupt long single computations with SIGALRM (main thread on Unix only)."""
+    """Interrupt long single computations with SIGALRM (main thread on Unix only).
+
+    The alarm then fires again every :data:`ALARM_REPEAT` seconds until the block is left: Python drops an
+    exception raised in a finaliser or a garbage-collector callback ("Exception ignored in ..."), and a single
+    alarm that lands there would let the computation run on past its limit."""
     usable = (seconds is not None and seconds > 0 and hasattr(signal, "setitimer")
               and threading.current_thread() is threading.main_thread())
     if not usable:
@@ -239,7 +249,7 @@ def alarm(seconds: float | None):  # type: ignore[no-untyped-def]
         raise Timeout("interrupted")
 
     old = signal.signal(signal.SIGALRM, handler)
-    signal.setitimer(signal.ITIMER_REAL, seconds + 0.05)
+    signal.setitimer(signal.ITIMER_REAL, seconds + 0.05, ALARM_REPEAT)
     try:
         yield
     finally:

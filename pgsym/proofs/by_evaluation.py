@@ -342,6 +342,8 @@ def identity_by_evaluation(claim: Claim, substitution: dict[sympy.Symbol, Any], 
         stand_ins = _stand_in_values(claim, gens, substitution)
         polys = conclusion_polynomials(claim, stand_ins)
         requirements = _requirements(claim, stand_ins)
+    except Timeout:
+        raise
     except Exception as err:  # a formula that compares or converts its values: no degree bound, no proof here
         raise TooLarge(f"{why}; no degree bound for proof by evaluation ({type(err).__name__})") from err
     degree = [max((_bound(p, n)[i] for _, p in polys), default=0) for i in range(n)]
