@@ -277,3 +277,26 @@ def test_two_roots_whose_product_is_rational_are_selected_by_one_condition() -> 
     assert str(proved.status) == "proved" and "component" in proved.branches
     wrong = prove(parse_statement(TWO_ROOTS.format(side="sameside")), timeout=30)
     assert str(wrong.status) == "false" and wrong.counterexample.recheck()
+
+
+EQUAL_STEPS = """points a b c
+line bis = anglebisector b a c
+point d = meet bis (join b c)
+point e on line a b
+point f = intersection (join a c) (circle c (translate c b e))
+where {side} f e b c
+prove parallel (join (midpoint e f) (midpoint b c)) (join a d)
+"""
+
+
+def test_equal_steps_from_two_vertices_meet_the_bisector_parallel_on_the_branch_selected() -> None:
+    # |cf| = |be| (f on ac, e on ab): the midpoint line of ef and bc is parallel to the internal bisector of ∠bac
+    # when e, f are both moved towards a or both away from it, i.e. e and f on the same side of bc: with u, v the
+    # unit vectors along ab, ac, e = b + s·u and f = c + s·v (the same s), so (e + f)/2 − (b + c)/2 = s(u + v)/2,
+    # along u + v. With a = 0, b = 1, the sign on the failing branch is that of A + |ac|·B once T's content free
+    # of the roots is set apart, with B = q²(t + 1)⁴ + 6q(t + 1)² + 1 (q = |ac|², t the parameter of e), whose
+    # sign the shift t ↦ t − 1 shows
+    proved = prove(parse_statement(EQUAL_STEPS.format(side="sameside")), timeout=30)
+    assert str(proved.status) == "proved" and "order conditions select" in proved.branches
+    wrong = prove(parse_statement(EQUAL_STEPS.format(side="oppositeside")), timeout=30)
+    assert str(wrong.status) == "false" and wrong.counterexample.recheck()

@@ -1,5 +1,7 @@
 """The sign of a polynomial on the whole real plane, decided exactly (pgsym.proofs.real_signs)."""
 
+from fractions import Fraction
+
 import sympy
 from hypothesis import given, settings
 from hypothesis import strategies as st
@@ -67,3 +69,50 @@ def test_a_decided_sign_holds_at_rational_points(terms, points):
             assert s is None or s * poly.eval((px, py)) >= 0
     assert plane_sign(sympy.expand(f**2 + 1), [x, y]) == 1  # a square plus one is positive
     assert plane_sign(sympy.expand(-(f**2) * (x**2 + 1)), [x, y]) == -1
+
+
+def test_a_shifted_variable_shows_the_sign():
+    from pgsym.proofs.algebraic import _depressed, _signed_factors
+    z = sympy.Symbol("z")
+    # q²(z + 1)⁴ + 6q(z + 1)² + 1 with q = x² + y²: even in z + 1 and in x, y, positive; expanded in z, its odd
+    # powers have positive coefficients and no factor shows the sign, three variables are too many for the plane
+    q = x**2 + y**2
+    b = sympy.expand(q**2 * (z + 1)**4 + 6 * q * (z + 1)**2 + 1)
+    assert plane_sign(b, [x, y, z]) is None
+    assert _depressed(b, [x, y, z]) == sympy.expand(q**2 * z**4 + 6 * q * z**2 + 1)
+    assert _signed_factors(b, [x, y, z], {}) == 1
+    assert _signed_factors(-b, [x, y, z], {}) == -1
+    # ((z − 1)² − 1)(x² + 1) = z(z − 2)(x² + 1) changes sign: its factors z and z − 2 have no sign
+    assert _signed_factors(sympy.expand(((z - 1)**2 - 1) * (x**2 + 1)), [x, z], {}) is None
+
+
+def test_the_content_in_the_roots_is_set_apart():
+    from pgsym.proofs.algebraic import _root_content
+    r, s = sympy.symbols("r s")
+    # T = −4y⁶(x² + 1)³·(r·(x² + 1) − 2x·s): the content in r, s is 4y⁶(x² + 1)³, the sign goes with the rest
+    t = sympy.expand(-4 * y**6 * (x**2 + 1)**3 * (r * (x**2 + 1) - 2 * x * s))
+    content, rest = _root_content(t, [r, s])
+    assert sympy.factor(content) == 4 * y**6 * (x**2 + 1)**3
+    assert sympy.expand(rest) == sympy.expand(-(r * (x**2 + 1) - 2 * x * s))
+    assert _root_content(x**2 + 1, [r]) == (x**2 + 1, 1)
+
+
+@settings(max_examples=40, deadline=None)
+@given(st.lists(st.tuples(small, st.integers(0, 2), st.integers(0, 2), st.integers(0, 2)), min_size=1, max_size=4),
+       small, small, st.lists(st.tuples(small, small, small), min_size=3, max_size=3))
+def test_a_sign_decided_through_a_shift_holds_at_rational_points(terms, sx, sz, points):
+    from pgsym.proofs.algebraic import _signed_factors
+    z = sympy.Symbol("z")
+    # polynomials in (x − sx)², y², (z − sz)² (even: a shift shows their sign when the coefficients have one) and
+    # the same less 1 (which may change sign)
+    f = sum(c * (x - sx)**(2 * i) * y**(2 * j) * (z - sz)**(2 * k) for c, i, j, k in terms)
+    grid = [Fraction(k, 2) for k in range(-8, 9)]
+    for g in (f, f - 1, -f, f + 1):
+        g = sympy.expand(g)
+        s = _signed_factors(g, [x, y, z], {})
+        value = sympy.lambdify((x, y, z), g, "math")  # integer coefficients: exact on fractions
+        for q in [*((Fraction(a, 2), Fraction(b, 3), Fraction(c, 5)) for a, b, c in points),
+                  *((gx, gy, gz) for gx in grid for gy in grid[::4] for gz in grid)]:
+            assert s is None or s * value(*q) >= 0, (g, q)
+    if all(c > 0 for c, *_ in terms):  # positive coefficients: the shift shows f + 1 > 0
+        assert _signed_factors(sympy.expand(f + 1), [x, y, z], {}) == 1

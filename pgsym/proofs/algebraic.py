@@ -1016,6 +1016,8 @@ def _signed_factors(expr: sympy.Expr, gens: Sequence[sympy.Symbol], known: dict[
                 s = -known[sympy.expand(-f)]
         if s is None:
             s = plane_sign(f, gens)  # one or two variables: decided by a cylindrical decomposition
+        if s is None and (moved := _depressed(f, gens)) is not None:
+            s = _evident_sign(moved, gens)
         if s is None:
             return None
         total *= s
@@ -1047,6 +1049,46 @@ def _known_signs(conditions: list[tuple[str, sympy.Expr]], gens: Sequence[sympy.
                 rest *= _evident_sign(f, gens) or 1
         known[sympy.expand(odd[0])] = rest
     return known
+
+
+def _root_content(t: sympy.Expr, roots: Sequence[sympy.Symbol]) -> tuple[sympy.Expr, sympy.Expr]:
+    """T = content × rest, the content the gcd of T's coefficients as a polynomial in the roots (free of them):
+    the content's sign is read from its factors alone, and the rest is smaller to split by the roots.
+
+    >>> x, r = sympy.symbols("x r")
+    >>> _root_content(sympy.expand(x**2 * (x + 1) * (r - x)), [r])
+    (x**3 + x**2, r - x)
+    """
+    present = [r for r in roots if t.has(r)]
+    if not present:
+        return t, sympy.Integer(1)
+    poly = sympy.Poly(t, *present)
+    if not poly.domain.is_PolynomialRing:
+        return sympy.Integer(1), t
+    content, rest = poly.primitive()
+    return poly.domain.to_sympy(content), rest.as_expr()
+
+
+def _depressed(f: sympy.Expr, gens: Sequence[sympy.Symbol]) -> sympy.Expr | None:
+    """f with each variable x moved to x − c, where the shift c = a₁/(d·a₀) that removes the second highest power
+    of x (a₀, a₁ its two highest coefficients, d its degree) is a number: a polynomial in (x + 1)² + y² or in
+    (x − 2)² shows its sign then. A shift of the variables is a bijection of the space, so the sign everywhere
+    is kept. None when no variable has such a shift.
+
+    >>> x, y = sympy.symbols("x y")
+    >>> _depressed(sympy.expand(((x + 1)**2 + y**2)**2 + 1), [x, y])
+    x**4 + 2*x**2*y**2 + y**4 + 1
+    """
+    shift = {}
+    for x in gens:
+        p = sympy.Poly(f, x)
+        if p.degree() < 2:
+            continue
+        a0, a1 = p.all_coeffs()[:2]
+        c = sympy.cancel(a1 / (p.degree() * a0))
+        if c.is_Rational and c != 0:
+            shift[x] = x - c
+    return sympy.expand(f.xreplace(shift)) if shift else None
 
 
 def _sign_over_named_root(t: sympy.Expr, params: Sequence[sympy.Symbol], known: dict[sympy.Expr, int],
@@ -1237,9 +1279,12 @@ def _selected_branch_proof(claim: Claim, deadline: Any, backend: str | None
             if R.nterms(t) > _MAX_FACTOR_TERMS:
                 continue  # too large to factor
             if involves_others(t):
-                if R.nterms(t) > _MAX_SIGN_TERMS:
+                content, rest = _root_content(reduced(t), [r.symbol for r in roots])
+                if len(sympy.Add.make_args(rest)) > _MAX_SIGN_TERMS:
                     continue  # its sign involves the named roots, and it is too large to split by them
-                s = _sign_over_named_root(reduced(t), params, known, roots, values, small)
+                sc = _signed_factors(content, params, known)
+                s = sc and _sign_over_named_root(rest, params, known, roots, values, small)
+                s = None if s is None else sc * s
             else:
                 s = _signed_factors(reduced(t), params, known)
             if s is not None and s <= 0:

@@ -60,7 +60,9 @@ def plane_sign(f: sympy.Expr, gens: Sequence[sympy.Symbol]) -> int | None:
     """1 when f ≥ 0 on the whole real plane (or line) of its one or two variables, −1 when f ≤ 0, else None
     (f changes sign, has more variables, or is too large to decide)."""
     free = [g for g in gens if f.has(g)]
-    if not free or len(free) > 2:
+    if not free:
+        return int(sympy.sign(f)) or None
+    if len(free) > 2:
         return None
     if sympy.Poly(f, *free).total_degree() > MAX_DEGREE:
         return None
