@@ -753,3 +753,22 @@ def test_a_shape_drawn_mirrored_at_random_is_drawn_the_way_the_goal_holds():
     assert solve(read).status == "proved"
     # the same figure turned the other way: c = d, and a is not their midpoint
     assert "point c = rotate b a 0 1" in translate("a b c = risos a b c; d = psquare d a b ? cong c d c d")
+
+
+def test_a_goal_true_in_some_figures_only_is_stated_for_the_figures_an_order_condition_keeps():
+    # g on ac and on the internal bisector of ∠cbf, f a free point of the line ab: with f on the ray from b through a,
+    # ∠cbf is ∠cba and g is on the bisector through the incentre h; with f beyond b it is the external bisector at b
+    # (perpendicular to the internal one), and b, g, h are not collinear
+    problem = ("a b c = triangle a b c; f = on_line f a b; g = angle_bisector g c b f, on_line g a c; "
+               "h = incenter h a b c ? coll b g h")
+    goal = problem.split("?")[1]
+    pts = [figure(problem, Branches(()), random.Random(k)) for k in range(12)]
+    ahead = [((p["f"] - p["b"]) * (p["a"] - p["b"]).conjugate()).real > 0 for p in pts]
+    assert [goal_holds(goal, p) for p in pts] == ahead and len(set(ahead)) == 2
+    text = translate(problem)
+    assert "where onray f b a  # the figures where the goal holds" in text
+    [read] = read_alphageometry("side\n" + problem)
+    outcome = solve(read)
+    assert outcome.status == "proved" and "named branch" in outcome.verdict.branches
+    beyond = parse_statement(text.replace("where onray f b a", "where between b a f"))
+    assert prove(beyond).status == "false"

@@ -300,3 +300,26 @@ def test_equal_steps_from_two_vertices_meet_the_bisector_parallel_on_the_branch_
     assert str(proved.status) == "proved" and "order conditions select" in proved.branches
     wrong = prove(parse_statement(EQUAL_STEPS.format(side="oppositeside")), timeout=30)
     assert str(wrong.status) == "false" and wrong.counterexample.recheck()
+
+
+BISECTOR_SIDE = """points a b c
+point f on line a b
+line bis = anglebisector c b f
+point g = meet bis (join a c)
+line at_a = anglebisector b a c
+line at_b = anglebisector a b c
+point h = meet at_a at_b
+where {where}
+prove collinear b g h
+"""
+
+
+def test_a_named_bisector_is_proved_on_the_figures_a_condition_without_roots_selects() -> None:
+    # the internal bisector of ∠cbf is that of ∠cba, through the incentre h, when f is on the ray from b through a,
+    # and the external bisector at b when b is between a and f: the named branch's sign is fixed by the condition
+    proved = prove(parse_statement(BISECTOR_SIDE.format(where="onray f b a")), timeout=30)
+    assert str(proved.status) == "proved" and "named branch" in proved.branches
+    assert "order conditions fix" in proved.certificate.method
+    assert any("some by the order conditions" in line for line in proved.certificate.steps)
+    wrong = prove(parse_statement(BISECTOR_SIDE.format(where="between b a f")), timeout=30)
+    assert str(wrong.status) == "false" and wrong.counterexample.recheck()

@@ -692,12 +692,17 @@ class _Factored:
         return str(sympy.Mul(sympy.Rational(self.coeff.numerator, self.coeff.denominator),
                              *(R.to_expr(f) ** k for f, k in self.factors.values()), *extra))
 
-    def sign(self, R: PolynomialRing, gens: Sequence[sympy.Symbol]) -> int | None:
-        """The sign wherever the polynomial is not 0, when the factors of odd power all have an evident one."""
+    def sign(self, R: PolynomialRing, gens: Sequence[sympy.Symbol], known: dict[sympy.Expr, int] | None = None
+             ) -> int | None:
+        """The sign wherever the polynomial is not 0, when the factors of odd power all have an evident one or one
+        that a root-free order condition fixes (``known``, see :func:`_known_signs`)."""
         total = 1 if self.coeff > 0 else -1 if self.coeff < 0 else 0
         for f, k in self.factors.values():
             if k % 2:
-                s = _evident_sign(R.to_expr(f), gens)
+                x = sympy.expand(R.to_expr(f))
+                s = _evident_sign(x, gens)
+                if s is None and known:
+                    s = known.get(x, -known[-x] if -x in known else None)
                 if s is None:
                     return None
                 total *= s
@@ -756,8 +761,8 @@ class _Step:
         return f"{'·'.join(str(x) for x in (self.root, *self.others))} = {self.value.text(R)}"
 
 
-def _named_branch_proof(claim: Claim, values: dict[Node, Any], tower: _Tower, deadline: Any
-                        ) -> tuple[str, list[str], list[Condition]] | None:
+def _named_branch_proof(claim: Claim, values: dict[Node, Any], tower: _Tower, deadline: Any,
+                        known: dict[sympy.Expr, int] | None = None) -> tuple[str, list[str], list[Condition]] | None:
     """Prove the conclusion on the named branch by writing named roots through the others there.
 
     Named roots d, d₁ … dₖ (d² = q, named sign d·o > 0 with o = w_A w_B; root-free squares) whose squares multiply to
@@ -770,7 +775,8 @@ def _named_branch_proof(claim: Claim, values: dict[Node, Any], tower: _Tower, de
     triangle. Then d = σλ·d₁⋯dₖ/(q₁⋯qₖ) where no dⱼ is 0: the conclusion, of degree ≤ 1 in d once reduced, is
     multiplied by q₁⋯qₖ and d replaced; each root so replaced is removed from the others, and the result must
     reduce to zero modulo the remaining defining equations. Returns the branch's words, the certificate's lines
-    and the conditions qⱼ ≠ 0, or None."""
+    and the conditions qⱼ ≠ 0, or None. With ``known`` (the signs root-free order conditions give to factors), the
+    sign of S may come from them: the proof then covers the figures those conditions select."""
     R = tower.R
     roots = roots_of(claim)
     rootsyms = {r.symbol for r in roots}
@@ -803,7 +809,7 @@ def _named_branch_proof(claim: Claim, values: dict[Node, Any], tower: _Tower, de
                 if lam is None:
                     continue
                 signed = lam.times(fo, *(named[x][2] for x in subset))
-                sign = signed.sign(R, gens)
+                sign = signed.sign(R, gens, known)
                 if sign not in (1, -1):
                     continue
                 # λ/(q₁⋯qₖ) is a polynomial when no factor's power goes below 0: then d = σ·λ/(q₁⋯qₖ)·d₁⋯dₖ
@@ -822,7 +828,8 @@ def _named_branch_proof(claim: Claim, values: dict[Node, Any], tower: _Tower, de
                 lines.append(f"on the named branch {steps[-1].words(R)}: the squares multiply to {squares} = "
                              f"({lam.text(R)})², so {product} = ±{lam.text(R)}; every named root has the sign of its "
                              f"w_A w_B, so the sign is that of {signed.text(R)} "
-                             f"({'positive' if sign > 0 else 'negative'} wherever it is not 0: its factors show it)")
+                             f"({'positive' if sign > 0 else 'negative'} wherever it is not 0: its factors show it"
+                             f"{', some by the order conditions' if signed.sign(R, gens) is None else ''})")
                 break
     if not steps:
         return None
@@ -1191,8 +1198,16 @@ def _component_proof(claim: Claim, tower: _Tower, values: dict[Node, Any], pair:
     return "no order condition's sign on the other component is fixed by its factors"
 
 
+_NORM_METHOD = ("the norm over the conjugate branches is 0, and the order conditions select the branch where the "
+                "conclusion vanishes")
+_COMPONENT_METHOD = ("the conclusion vanishes on one component of two roots, and the order conditions exclude the "
+                     "other")
+_NAMED_METHOD = ("ideal membership on the named branch, the named roots written through each other with the signs "
+                 "the order conditions fix")
+
+
 def _selected_branch_proof(claim: Claim, deadline: Any, backend: str | None
-                           ) -> tuple[list[str], list[Condition], str] | str:
+                           ) -> tuple[list[str], list[Condition], str, str] | str:
     """Prove the conclusion on the branch the order conditions select, for one intersection root e (e² = Δ).
 
     Each conclusion polynomial reduces to g = g₀ + g₁e. (1) Its norm over the two branches, g₀² − g₁²Δ, is 0
@@ -1200,11 +1215,13 @@ def _selected_branch_proof(claim: Claim, deadline: Any, backend: str | None
     an order condition c = c₀ + c₁e > 0, T = g₁e·(c₀·g₁e + c₁e·g₀) = Δ·g₁(c₀g₁ + c₁g₀) is root-free; where the
     conclusion fails on a branch, it holds on the other, so g₁e = g₀ there and c = (c₀g₁ + c₁g₀)/g₁ has the sign
     of T. When T ≤ 0 wherever it is defined (its factors show it), the condition excludes every branch where
-    the conclusion fails. Returns the certificate's lines, the non-degeneracy conditions and the branch words, or
-    why it does not apply."""
+    the conclusion fails. Two roots: :func:`_component_proof`. Named roots only (bisectors, whose branch the
+    statement names): :func:`_named_branch_proof` with the signs the root-free conditions fix. Returns the
+    certificate's lines, the non-degeneracy conditions, the branch words and the method, or why it does not
+    apply."""
     roots = roots_of(claim)
     free = [r for r in roots if not r.named]
-    if not free or any(r.kind == "unity" for r in free):
+    if not roots or any(r.kind == "unity" for r in free):
         return "the exact selection handles the branches of an intersection root; the claim has none"
     norm, _why = normalise(claim)
     if norm is not None and norm.group not in ("similarity", "euclidean"):
@@ -1216,7 +1233,7 @@ def _selected_branch_proof(claim: Claim, deadline: Any, backend: str | None
     # (read off the monomials: a large condition as an expression took minutes)
     polys = [p for _t, c in condition_values(claim, values) if not isinstance(p := tower.reduce(c), int)]
     named = [r for r in free if any(m[i] for p in polys for m, _ in R.terms(p) for i in [R.symbols.index(r.symbol)])]
-    if len(named) not in (1, 2):
+    if free and len(named) not in (1, 2):
         return (f"the exact selection handles one or two intersection roots named by the order conditions; they name "
                 f"{len(named)} of the {len(free)} roots whose branch the statement leaves open")
     params = [g for g in R.symbols if g not in {r.symbol for r in roots}]
@@ -1229,9 +1246,18 @@ def _selected_branch_proof(claim: Claim, deadline: Any, backend: str | None
     if norm is not None and norm.condition:
         conditions.append(Condition(f"{norm.condition} (frame)"))
     frame = [norm.describe() + " (similarities keep every order condition)"] if norm is not None else []
+    if not free:  # named roots only (bisectors): their branch, with the signs the root-free conditions fix
+        known = _known_signs([(text, sympy.expand(R.to_expr(c))) for text, poly in condition_values(claim, values)
+                              if not _has_roots(tower, c := tower.reduce(poly))], params)
+        on_named = _named_branch_proof(claim, values, tower, deadline, known) if known else None
+        if on_named is None:
+            return "the signs the order conditions fix do not decide the named roots' branch"
+        text, lines, extra = on_named
+        return (frame + lines, conditions + extra, text.replace("proved for the named branch only", "the named branch"),
+                _NAMED_METHOD)
     if len(named) == 2:
         found = _component_proof(claim, tower, values, named, params, deadline)
-        return found if isinstance(found, str) else (frame + found[0], conditions, found[1])
+        return found if isinstance(found, str) else (frame + found[0], conditions, found[1], _COMPONENT_METHOD)
     root = named[0]
     e = root.symbol
     others = {r.symbol for r in roots} - {e}
@@ -1298,7 +1324,7 @@ def _selected_branch_proof(claim: Claim, deadline: Any, backend: str | None
         else:
             return (f"no order condition's sign on the failing branch of {label} is fixed by its factors (a "
                     "condition selects the branch only where a polynomial keeps its sign)")
-    return lines, conditions, f"the sign of {e} at which they hold"
+    return lines, conditions, f"the sign of {e} at which they hold", _NORM_METHOD
 
 
 def prove_ordered(claim: Claim, plain: Callable[[Claim], Any], timeout: float | None = 10.0, seed: int = 0,
@@ -1308,9 +1334,10 @@ def prove_ordered(claim: Claim, plain: Callable[[Claim], Any], timeout: float | 
 
     ``plain`` proves the claim without its conditions. Proved without them: proved (the conditions only narrow the
     claim), once a random instance shows they can hold together. Otherwise: the exact selection of
-    :func:`_selected_branch_proof` (one intersection root), else exact evaluation at random rational instances on
-    every branch the conditions select — false with a counterexample there, unknown when it holds at every instance
-    tried. A branch the conditions exclude never refutes the claim.
+    :func:`_selected_branch_proof` (one or two intersection roots, or named roots whose branch root-free conditions
+    fix), else exact evaluation at random rational instances on every branch the conditions select — false with a
+    counterexample there, unknown when it holds at every instance tried. A branch the conditions exclude never
+    refutes the claim.
 
     >>> c = Claim("ray", "the point of the line AB at distance |AB| from A on the ray AB is B")
     >>> A, B = c.free_point("A"), c.free_point("B")
@@ -1364,12 +1391,10 @@ def prove_ordered(claim: Claim, plain: Callable[[Claim], Any], timeout: float | 
             if roots_of(claim):
                 found = _selected_branch_proof(claim, deadline, backend)
                 if not isinstance(found, str):
-                    lines, conditions, branch = found
+                    lines, conditions, branch, method = found
                     witness = _ordered_witness(claim, rng, deadline)
                     if witness is not None:
-                        certificate = Certificate("the norm over the conjugate branches is 0, and the order "
-                                                  "conditions select the branch where the conclusion vanishes",
-                                                  "ℚ[parameters, roots] modulo the defining equations", lines)
+                        certificate = Certificate(method, "ℚ[parameters, roots] modulo the defining equations", lines)
                         core = _core_check(claim, rng, deadline)
                         if not core.startswith("MISMATCH"):
                             return done(Status.PROVED, certificate=certificate, method=certificate.method,

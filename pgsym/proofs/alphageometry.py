@@ -44,8 +44,11 @@ other common point too. The goal is then evaluated in a few random figures, on e
 common points and with the shapes AlphaGeometry mirrors at random (``isquare``, ``risos``,
 ``ieq_triangle``) mirrored: a goal that holds on some choices only needs a branch condition (found as above, or
 the problem is refused), one that holds in one orientation of a mirrored shape is written in that orientation
-(a comment says so), one that holds in some figures only needs a condition on the figure (refused): never a
-statement pgsym would refute. A goal that held in every random figure but that the engine refutes exactly holds in part
+(a comment says so), one that holds in some figures only needs a condition on the figure: order conditions on
+the figure's points that keep only figures where the goal holds, and at least half of those
+(:func:`pgsym.proofs.order_search.restricting_conditions`; e.g. a free point of a line beyond a vertex), are
+written as ``where`` lines (``# the figures where the goal holds``), or the problem is refused: never a statement
+pgsym would refute. A goal that held in every random figure but that the engine refutes exactly holds in part
 of the figures only (AlphaGeometry's figure is drawn until the goal holds): :func:`solve` reports it
 unsupported with that reason, not refuted.
 
@@ -81,7 +84,7 @@ from ..limits import MAX_ARGUMENT_CHARS, MAX_STATEMENT_LINE_CHARS, MAX_STATEMENT
 from .engine import prove
 from .errors import AlphaGeometryError, StatementError, UnsupportedConstructionError
 from .language import KEYWORDS, parse_statement, read_statement_text
-from .order_search import Figure, selecting_conditions
+from .order_search import Figure, restricting_conditions, selecting_conditions
 
 __all__ = ["MAX_AG_BYTES", "MAX_AG_LINE_CHARS", "MAX_AG_PROBLEMS", "OUTCOMES", "Outcome", "Problem",
            "read_alphageometry", "read_alphageometry_file", "solve", "translate"]
@@ -304,7 +307,7 @@ def _translate_drawn(problem: str, line: int, title: str, orientation: bool | No
     the random common points of ``pick`` taken as said there."""
     # Random float figures, on every choice of the points AlphaGeometry takes at random (at most 2³ choices):
     # a goal that holds on some choices only needs a branch condition, one that holds in some figures only a
-    # condition on the figure; neither can be written in pgsym's language, so such a problem is refused.
+    # condition on the figure: order conditions found on the figures' points, or the problem is refused.
     text, either, truths = None, [], []
     figures: list[Figure] = []  # each random figure: per choice, its points and whether the goal holds
     seed = 0
@@ -330,14 +333,14 @@ def _translate_drawn(problem: str, line: int, title: str, orientation: bool | No
         by_seed: dict[int, set[bool]] = {}
         for seed, holds in truths:
             by_seed.setdefault(seed, set()).add(holds)
+        # more figures than for the verdict above: a condition must hold in every one of them
+        for extra in range(seed + 1, seed + 1 + _SELECTION_TRIES):
+            drawn = _drawn(problem, line, title, extra, orientation, pick)
+            if drawn is not None and drawn[1] == text:
+                figures += drawn[3]
         if any(len(v) == 2 for v in by_seed.values()):
             # AlphaGeometry draws its figure until the goal holds: the point it means is the one an order condition
             # of every figure selects, if one does; the engine then proves the goal on the branch it selects
-            # more figures than for the verdict above: a condition must hold in every one of them
-            for extra in range(seed + 1, seed + 1 + _SELECTION_TRIES):
-                drawn = _drawn(problem, line, title, extra, orientation, pick)
-                if drawn is not None and drawn[1] == text:
-                    figures += drawn[3]
             found = selecting_conditions(figures, *named) if len(either) <= 3 else None
             if found is None and not pick:
                 # both common points may be rational (a parallelogram's fourth vertex, a vector turned by 90° from
@@ -347,7 +350,7 @@ def _translate_drawn(problem: str, line: int, title: str, orientation: bool | No
                         picked, held = _translate_drawn(problem, line, title, orientation, {ag: choice})
                     except UnsupportedConstructionError:
                         continue
-                    if held and "where the goal holds" in picked:
+                    if held and "# the common point of" in picked:
                         return picked, True
             if found is None:
                 raise _Translator(line).branch(either, "the goal holds for one of the two common points only, and "
@@ -357,9 +360,17 @@ def _translate_drawn(problem: str, line: int, title: str, orientation: bool | No
             where = [f"where {word} {' '.join(args)}  # selects the common point where the goal holds"
                      for word, args in found]
             return "\n".join([head, *where, "prove " + prove]), True
-        raise UnsupportedConstructionError("unsupported: the goal holds in some random figures only (AlphaGeometry's "
-                                           "figure fixes an order or a side that pgsym's language cannot state)",
-                                           line, construction="figure")
+        # the goal holds in some figures only: AlphaGeometry's figure is one where it holds, which an order condition
+        # on the figure's points may say (a point beyond a vertex rather than before it)
+        found = restricting_conditions(figures, named[1])
+        if found is None:
+            raise UnsupportedConstructionError("unsupported: the goal holds in some random figures only, and no order "
+                                               "condition on the figure's points (one, or two together) keeps only "
+                                               "figures where it holds (AlphaGeometry draws its figure until it does)",
+                                               line, construction="figure")
+        head, prove = text.split("\nprove ", 1)
+        where = [f"where {word} {' '.join(args)}  # the figures where the goal holds" for word, args in found]
+        return "\n".join([head, *where, "prove " + prove]), True
     return text, all(h for _, h in truths)
 
 

@@ -19,7 +19,7 @@ from __future__ import annotations
 import itertools
 from collections.abc import Iterator, Sequence
 
-__all__ = ["Condition", "Figure", "condition_holds", "selecting_conditions"]
+__all__ = ["Condition", "Figure", "condition_holds", "restricting_conditions", "selecting_conditions"]
 
 Condition = tuple[str, tuple[str, ...]]
 """An order condition as its word of the statement language and its point names."""
@@ -162,6 +162,81 @@ def selecting_conditions(figures: Sequence[Figure], either: Sequence[str], point
         if all(k and not k & ~h for k, h in zip(kept, holds, strict=True)):
             return [one, two]
     return None
+
+
+def restricting_conditions(figures: Sequence[Figure], points: Sequence[str]) -> list[Condition] | None:
+    """One or two order conditions that keep only figures (and choices) where the goal holds, and some in at least
+    half of the figures where it holds somewhere: the figure AlphaGeometry means when its goal holds in some random
+    figures only (a point on the other side of a vertex, say); the one that keeps most, simple words and early
+    points first. None when none is found.
+
+    >>> inside = {(): ({"A": 0j, "B": 2 + 0j, "F": 1 + 0j}, True)}
+    >>> outside = {(): ({"A": 0j, "B": 2 + 0j, "F": 3 + 0j}, False)}
+    >>> restricting_conditions([inside, outside, inside], ["A", "B", "F"])
+    [('between', ('F', 'A', 'B'))]
+    """
+    choices = sorted({c for f in figures for c in f})
+    tables = [[f[c][0] if c in f else None for c in choices] for f in figures]
+    holds = [sum(1 << i for i, c in enumerate(choices) if c in f and f[c][1]) for f in figures]
+    need = (sum(1 for h in holds if h) + 1) // 2
+    if not need:
+        return None
+    seen: set[Condition] = set()
+    ranked = []
+    for x in reversed(points):  # conditions on later points first (the point the figure restricts is drawn late)
+        if len(ranked) > MAX_CANDIDATES:
+            break
+        for c in _candidates(x, points):
+            key = (c[0], c[1])
+            if key not in seen:
+                seen.add(key)
+                ranked.append(((max(points.index(a) for a in c[1]),), c))
+            if len(ranked) > MAX_CANDIDATES:
+                break
+    ranked.sort(key=lambda kc: kc[0])
+    budget = [MAX_EVALUATIONS]
+    best: tuple[int, list[Condition]] | None = None
+    useful: list[tuple[Condition, list[int]]] = []
+    for _, cond in ranked:
+        kept = _masks(tables, cond, budget)
+        if budget[0] < 0:
+            break
+        if kept is None:
+            continue
+        count = sum(1 for k in kept if k)
+        if count < need:
+            continue
+        if all(not k & ~h for k, h in zip(kept, holds, strict=True)):
+            if best is None or count > best[0]:
+                best = (count, [cond])
+        elif len(useful) < MAX_PAIRS:
+            useful.append((cond, kept))
+    if best is not None:
+        return best[1]
+    for (one, a), (two, b) in itertools.combinations(useful, 2):
+        kept = [x & y for x, y in zip(a, b, strict=True)]
+        count = sum(1 for k in kept if k)
+        if count >= need and all(not k & ~h for k, h in zip(kept, holds, strict=True)) and (
+                best is None or count > best[0]):
+            best = (count, [one, two])
+    return None if best is None else best[1]
+
+
+def _masks(tables: list[list[dict[str, complex] | None]], cond: Condition, budget: list[int]) -> list[int] | None:
+    """For each figure, the choices (bits of a mask) the condition keeps; None if it is undecided in one."""
+    word, args = cond
+    out = []
+    for table in tables:
+        mask = 0
+        for i, values in enumerate(table):
+            if values is not None:
+                budget[0] -= 1
+                verdict = condition_holds(word, [values[a] for a in args])
+                if verdict is None:
+                    return None
+                mask |= verdict << i
+        out.append(mask)
+    return out
 
 
 def _kept(tables: list[list[dict[str, complex] | None]], cond: Condition, holds: list[int], budget: list[int]
