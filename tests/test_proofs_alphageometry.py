@@ -695,35 +695,31 @@ def test_a_goal_true_for_one_random_choice_only_gets_the_order_condition_that_se
     assert outcome.status == "proved" and "branch the order conditions select" in outcome.verdict.branches
 
 
-def test_a_goal_true_at_one_of_two_rational_common_points_is_written_at_that_point():
+RATIONAL_COMMON_POINTS = [
     # a on the parallel to cd through b with |da| = |cb|: abcd is a parallelogram (a = b + d − c, rational) or an
     # isosceles trapezoid (that point reflected in the foot of d on the parallel); its diagonals ac and bd are
     # equally long in the trapezoid only
-    problem = "c d = segment c d; b = free b; a = eqdistance a d c b, on_pline a b d c ? cong a c b d"
-    goal = problem.split("?")[1]
-    pts = [figure(problem, Branches((bit,)), random.Random(3)) for bit in (0, 1)]
-    vertex = pts[0]["b"] + pts[0]["d"] - pts[0]["c"]
-    assert [goal_holds(goal, p) for p in pts] == [abs(p["a"] - vertex) > 1e-9 for p in pts]
-    text = translate(problem)
-    assert "point a = reflect (translate d c b) (foot d (parallel (join d c) b))" in text
-    [read] = read_alphageometry("trapezoid\n" + problem)
-    assert solve(read).status == "proved"
-
-
-def test_a_goal_true_at_one_of_two_turned_common_points_is_written_at_that_point():
+    ("c d = segment c d; b = free b; a = eqdistance a d c b, on_pline a b d c ? cong a c b d", "a",
+     lambda p: p["b"] + p["d"] - p["c"], False, "point a = reflect (translate d c b) (foot d (parallel (join d c) b))"),
     # g on the altitude from a with |ag| = |bc| is a + (c − b) turned by ±90° (rational); with the square abde on
     # ab (d = b + (a − b) turned by −90°) gb ⊥ cd holds at one of them only. With b = 0, c = 1, a = p + qi:
     # d = q − pi, g = p + (q + τ)i, (g − b)·(d − c) = (p, q + τ)·(q − 1, −p) = pq − p − pq − τp = −p(1 + τ):
     # zero for τ = −1 only, g = a − i(c − b) = a + i(b − c), which the translation writes
-    problem = ("a b c = triangle a b c; d e = square a b d e; f = foot f a b c; g = on_line g a f, "
-               "eqdistance g a b c ? perp g b c d")
+    ("a b c = triangle a b c; d e = square a b d e; f = foot f a b c; g = on_line g a f, eqdistance g a b c ? "
+     "perp g b c d", "g", lambda p: p["a"] - 1j * (p["c"] - p["b"]), True,
+     "point g = translate (rotate b c 0 1) c a  # the common point of on_line/eqdistance where the goal holds"),
+]
+
+
+@pytest.mark.parametrize(("problem", "name", "rational", "there", "written"), RATIONAL_COMMON_POINTS)
+def test_a_goal_true_at_one_of_two_rational_common_points_is_written_at_that_point(problem, name, rational, there,
+                                                                                   written):
+    # the goal holds at the rational common point (there) or at its mirror image (not there), in every figure
     goal = problem.split("?")[1]
     pts = [figure(problem, Branches((bit,)), random.Random(3)) for bit in (0, 1)]
-    turned = pts[0]["a"] - 1j * (pts[0]["c"] - pts[0]["b"])
-    assert [goal_holds(goal, p) for p in pts] == [abs(p["g"] - turned) < 1e-9 for p in pts]
-    text = translate(problem)
-    assert "point g = translate (rotate b c 0 1) c a  # the common point of on_line/eqdistance where the goal" in text
-    [read] = read_alphageometry("turned\n" + problem)
+    assert [goal_holds(goal, p) for p in pts] == [(abs(p[name] - rational(pts[0])) < 1e-9) == there for p in pts]
+    assert translate(problem).count(written) == 1
+    [read] = read_alphageometry("rational\n" + problem)
     assert solve(read).status == "proved"
 
 

@@ -242,13 +242,21 @@ prove perpendicular (join a d) (join c e)
 """
 
 
+def selected_and_refuted(good: str, bad: str, words: str) -> object:
+    """The verdict on ``good``: proved, its branch words naming ``words``; ``bad`` (the other branch or figures) is
+    refuted with a counterexample that re-checks."""
+    proved = prove(parse_statement(good), timeout=30)
+    assert str(proved.status) == "proved" and words in proved.branches
+    wrong = prove(parse_statement(bad), timeout=30)
+    assert str(wrong.status) == "false" and wrong.counterexample.recheck()
+    return proved
+
+
 def test_a_branch_selected_through_a_named_root_is_proved_and_the_other_refuted() -> None:
     # |ae| = |ac| with e on the ray ab: the triangle ace is isosceles with apex a, so ce is perpendicular to the
     # internal bisector of ∠bac; on the opposite ray it is perpendicular to the external bisector instead
-    proved = prove(parse_statement(BISECTOR.format(where="where onray e a b")), timeout=30)
-    assert str(proved.status) == "proved" and "order conditions select" in proved.branches
-    wrong = prove(parse_statement(BISECTOR.format(where="where onray e a (reflect b a)")), timeout=30)
-    assert str(wrong.status) == "false"
+    selected_and_refuted(BISECTOR.format(where="where onray e a b"),
+                         BISECTOR.format(where="where onray e a (reflect b a)"), "order conditions select")
 
 
 def test_a_root_the_conditions_do_not_name_may_take_either_branch() -> None:
@@ -273,10 +281,7 @@ def test_two_roots_whose_product_is_rational_are_selected_by_one_condition() -> 
     # cb: d = ±r·u_a, f = ±r·u_b (unit vectors). With equal signs d − f = ±r(u_a − u_b) is parallel to a − b,
     # and d, f are mirror images in the bisector c(midpoint a b): on opposite sides of it. With different signs
     # d − f = ±r(u_a + u_b) is perpendicular to a − b, and d, f are on the same side
-    proved = prove(parse_statement(TWO_ROOTS.format(side="oppositeside")), timeout=30)
-    assert str(proved.status) == "proved" and "component" in proved.branches
-    wrong = prove(parse_statement(TWO_ROOTS.format(side="sameside")), timeout=30)
-    assert str(wrong.status) == "false" and wrong.counterexample.recheck()
+    selected_and_refuted(TWO_ROOTS.format(side="oppositeside"), TWO_ROOTS.format(side="sameside"), "component")
 
 
 EQUAL_STEPS = """points a b c
@@ -296,10 +301,8 @@ def test_equal_steps_from_two_vertices_meet_the_bisector_parallel_on_the_branch_
     # along u + v. With a = 0, b = 1, the sign on the failing branch is that of A + |ac|·B once T's content free
     # of the roots is set apart, with B = q²(t + 1)⁴ + 6q(t + 1)² + 1 (q = |ac|², t the parameter of e), whose
     # sign the shift t ↦ t − 1 shows
-    proved = prove(parse_statement(EQUAL_STEPS.format(side="sameside")), timeout=30)
-    assert str(proved.status) == "proved" and "order conditions select" in proved.branches
-    wrong = prove(parse_statement(EQUAL_STEPS.format(side="oppositeside")), timeout=30)
-    assert str(wrong.status) == "false" and wrong.counterexample.recheck()
+    selected_and_refuted(EQUAL_STEPS.format(side="sameside"), EQUAL_STEPS.format(side="oppositeside"),
+                         "order conditions select")
 
 
 BISECTOR_SIDE = """points a b c
@@ -317,9 +320,7 @@ prove collinear b g h
 def test_a_named_bisector_is_proved_on_the_figures_a_condition_without_roots_selects() -> None:
     # the internal bisector of ∠cbf is that of ∠cba, through the incentre h, when f is on the ray from b through a,
     # and the external bisector at b when b is between a and f: the named branch's sign is fixed by the condition
-    proved = prove(parse_statement(BISECTOR_SIDE.format(where="onray f b a")), timeout=30)
-    assert str(proved.status) == "proved" and "named branch" in proved.branches
+    proved = selected_and_refuted(BISECTOR_SIDE.format(where="onray f b a"),
+                                  BISECTOR_SIDE.format(where="between b a f"), "named branch")
     assert "order conditions fix" in proved.certificate.method
     assert any("some by the order conditions" in line for line in proved.certificate.steps)
-    wrong = prove(parse_statement(BISECTOR_SIDE.format(where="between b a f")), timeout=30)
-    assert str(wrong.status) == "false" and wrong.counterexample.recheck()

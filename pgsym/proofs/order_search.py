@@ -148,7 +148,7 @@ def selecting_conditions(figures: Sequence[Figure], either: Sequence[str], point
     budget = [MAX_EVALUATIONS]
     for (_, midpoint, _), cond in ranked:
         budget[0] -= 1
-        kept = _kept(tables, cond, holds, budget)
+        kept = _kept(tables, cond, budget, holds)
         if budget[0] < 0:
             break
         if kept is None:
@@ -198,7 +198,7 @@ def restricting_conditions(figures: Sequence[Figure], points: Sequence[str]) -> 
     best: tuple[int, list[Condition]] | None = None
     useful: list[tuple[Condition, list[int]]] = []
     for _, cond in ranked:
-        kept = _masks(tables, cond, budget)
+        kept = _kept(tables, cond, budget)
         if budget[0] < 0:
             break
         if kept is None:
@@ -222,11 +222,14 @@ def restricting_conditions(figures: Sequence[Figure], points: Sequence[str]) -> 
     return None if best is None else best[1]
 
 
-def _masks(tables: list[list[dict[str, complex] | None]], cond: Condition, budget: list[int]) -> list[int] | None:
-    """For each figure, the choices (bits of a mask) the condition keeps; None if it is undecided in one."""
+def _kept(tables: list[list[dict[str, complex] | None]], cond: Condition, budget: list[int],
+          holds: list[int] | None = None) -> list[int] | None:
+    """For each figure, the choices (bits of a mask) the condition keeps; None if it is undecided in one, or, with
+    ``holds``, keeps no choice where the goal holds in one (then neither it nor a pair with it selects; most
+    candidates stop at the first figure)."""
     word, args = cond
     out = []
-    for table in tables:
+    for k, table in enumerate(tables):
         mask = 0
         for i, values in enumerate(table):
             if values is not None:
@@ -235,27 +238,7 @@ def _masks(tables: list[list[dict[str, complex] | None]], cond: Condition, budge
                 if verdict is None:
                     return None
                 mask |= verdict << i
-        out.append(mask)
-    return out
-
-
-def _kept(tables: list[list[dict[str, complex] | None]], cond: Condition, holds: list[int], budget: list[int]
-          ) -> list[int] | None:
-    """For each figure, the choices (bits of a mask) the condition keeps; None if it is undecided in one, or keeps
-    no choice where the goal holds in one (then neither it nor a pair with it selects; most candidates stop at
-    the first figure)."""
-    word, args = cond
-    out = []
-    for table, good in zip(tables, holds, strict=True):
-        mask = 0
-        for i, values in enumerate(table):
-            if values is not None:
-                budget[0] -= 1
-                verdict = condition_holds(word, [values[a] for a in args])
-                if verdict is None:
-                    return None
-                mask |= verdict << i
-        if not mask & good or budget[0] < 0:
+        if (holds is not None and not mask & holds[k]) or budget[0] < 0:
             return None
         out.append(mask)
     return out
