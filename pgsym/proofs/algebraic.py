@@ -573,12 +573,10 @@ def _frame_breaks(claim: Claim, values: dict[Node, Any], tower: _Tower) -> bool:
     branch collapses to 0 while the other is P: the second common point would be lost, and a claim about it
     'proved' of P. Detected as the discriminant being a square s² with the point's coordinates 0 at e = ±s."""
     R = tower.R
-    rootsyms = {r.symbol for r in roots_of(claim)}
-    gens = [g for g in R.symbols if g not in rootsyms]
     for r in roots_of(claim):
         if r.kind != "intersection":
             continue
-        s = _rational_root(R.to_expr(tower.reduce(r.square(values))), gens)
+        s = _rational_root(R, tower.reduce(r.square(values)))
         if s is None:
             continue
         for node in claim.nodes.values():
@@ -640,15 +638,11 @@ def _semidefinite(poly: sympy.Poly) -> bool:
     return False
 
 
-def _rational_root(q: sympy.Expr, gens: Sequence[sympy.Symbol]) -> sympy.Expr | None:
-    """s with s² = q when q is the square of a polynomial with rational coefficients (else None)."""
-    coeff, factors = sympy.factor_list(q, *gens) if gens else (q, [])
-    if coeff < 0 or any(e % 2 for _, e in factors):
-        return None
-    c = sympy.sqrt(coeff)
-    if not c.is_Rational:
-        return None
-    return c * sympy.Mul(*(f ** (e // 2) for f, e in factors))
+def _rational_root(R: PolynomialRing, q: Any) -> sympy.Expr | None:
+    """s with s² = q (a polynomial of the ring) when q is the square of a polynomial with rational coefficients, as
+    an expression (else None): :func:`_square_root` of its factors."""
+    s = _square_root(_Factored.of(R, q))
+    return None if s is None else sympy.expand(R.to_expr(s.value(R)))
 
 
 @dataclass
@@ -702,7 +696,7 @@ class _Factored:
                 x = sympy.expand(R.to_expr(f))
                 s = _evident_sign(x, gens)
                 if s is None and known:
-                    s = known.get(x, -known[-x] if -x in known else None)
+                    s = _known_sign(x, known)
                 if s is None:
                     return None
                 total *= s
@@ -717,6 +711,27 @@ def _square_root(f: _Factored) -> _Factored | None:
     if num * num != f.coeff.numerator or den * den != f.coeff.denominator:
         return None
     return _Factored(Fraction(num, den), {key: (p, k // 2) for key, (p, k) in f.factors.items()})
+
+
+def _named_value(R: PolynomialRing, square: _Factored, orient: _Factored, gens: Sequence[sympy.Symbol],
+                 known: dict[sympy.Expr, int] | None = None) -> tuple[_Factored, _Factored, int] | None:
+    """The value on the named branch of a named root (or a product of named roots) whose square is a square λ²:
+    ±λ, with the sign σ of λ·o, o the product of the orientations (each named root has the sign of its own),
+    when the factors of λ·o show it (some may be fixed by root-free order conditions, ``known``). Returns λ, λ·o
+    and σ, or None.
+
+    >>> R = PolynomialRing([sympy.Symbol("t")])
+    >>> (t,) = R.gens
+    >>> lam, _, sign = _named_value(R, _Factored.of(R, (t - 1)**2), _Factored.of(R, 1 - t), [R.symbols[0]])
+    >>> lam.text(R), sign
+    ('t - 1', -1)
+    """
+    lam = _square_root(square)
+    if lam is None:
+        return None
+    signed = lam.times(orient)
+    sign = signed.sign(R, gens, known)
+    return (lam, signed, sign) if sign in (1, -1) else None
 
 
 def _compose(R: PolynomialRing, p: Any, sub: dict[sympy.Symbol, Any]) -> Any:
@@ -805,13 +820,11 @@ def _named_branch_proof(claim: Claim, values: dict[Node, Any], tower: _Tower, de
                 deadline.check("looking for the named branch in terms of other roots")
                 if anywhere and all(order.index(x) < order.index(d) for x in subset):
                     continue  # tried in the first sweep
-                lam = _square_root(fq.times(*(named[x][1] for x in subset)))
-                if lam is None:
+                found = _named_value(R, fq.times(*(named[x][1] for x in subset)),
+                                     fo.times(*(named[x][2] for x in subset)), gens, known)
+                if found is None:
                     continue
-                signed = lam.times(fo, *(named[x][2] for x in subset))
-                sign = signed.sign(R, gens, known)
-                if sign not in (1, -1):
-                    continue
+                lam, signed, sign = found
                 # λ/(q₁⋯qₖ) is a polynomial when no factor's power goes below 0: then d = σ·λ/(q₁⋯qₖ)·d₁⋯dₖ
                 den = _Factored(Fraction(1), {}).times(*(named[x][1] for x in subset))
                 whole = all(k <= lam.factors.get(key, (None, 0))[1] for key, (_f, k) in den.factors.items())
@@ -1018,9 +1031,7 @@ def _signed_factors(expr: sympy.Expr, gens: Sequence[sympy.Symbol], known: dict[
             continue
         s = _evident_sign(f, gens)
         if s is None:
-            s = known.get(sympy.expand(f))
-            if s is None and sympy.expand(-f) in known:
-                s = -known[sympy.expand(-f)]
+            s = _known_sign(sympy.expand(f), known)
         if s is None:
             s = plane_sign(f, gens)  # one or two variables: decided by a cylindrical decomposition
         if s is None and (moved := _depressed(f, gens)) is not None:
@@ -1029,6 +1040,11 @@ def _signed_factors(expr: sympy.Expr, gens: Sequence[sympy.Symbol], known: dict[
             return None
         total *= s
     return total
+
+
+def _known_sign(f: sympy.Expr, known: dict[sympy.Expr, int]) -> int | None:
+    """The sign an order condition fixes for the expanded factor f or for −f (see :func:`_known_signs`), or None."""
+    return known.get(f, -known[-f] if -f in known else None)
 
 
 def _evident_sign(f: sympy.Expr, gens: Sequence[sympy.Symbol]) -> int | None:
@@ -1099,24 +1115,24 @@ def _depressed(f: sympy.Expr, gens: Sequence[sympy.Symbol]) -> sympy.Expr | None
 
 
 def _sign_over_named_root(t: sympy.Expr, params: Sequence[sympy.Symbol], known: dict[sympy.Expr, int],
-                          roots: Sequence[Any], values: dict[Any, Any], small: Callable[[Any], sympy.Expr | None]
-                          ) -> int | None:
+                          roots: Sequence[Any], values: dict[Any, Any], tower: _Tower) -> int | None:
     """The sign of T (wherever it is not 0) when T involves named length roots, whose principal sign is that of
-    their orientation: a root r whose square is a square s² is ±s (the sign of its orientation times that of s);
-    for T = A + r·B with one root r left (r² = q), A and r·B of one sign, or |A| ≤ |r·B| (A² − q·B² ≤ 0) and
-    the sign of r·B known, or |A| ≥ |r·B| and the sign of A known. ``small`` gives a polynomial of the tower as an
-    expression, or None when it is too large to factor. Else None."""
+    their orientation: a root r whose square is a square λ² is ±λ (:func:`_named_value`); for T = A + r·B with one
+    root r left (r² = q), A and r·B of one sign, or |A| ≤ |r·B| (A² − q·B² ≤ 0) and the sign of r·B known, or
+    |A| ≥ |r·B| and the sign of A known. Else None (also when a square or an orientation has more than
+    _MAX_SIGN_TERMS terms)."""
+    R = tower.R
     present = [r for r in roots if r.named and r.kind == "length" and t.has(r.symbol) and r.orient is not None]
     signs = {}
     for root in present:
-        q, orient = small(root.square(values)), small(root.orient(values))
-        if q is None or orient is None or (q.free_symbols | orient.free_symbols) - set(params):
+        q, orient = tower.reduce(root.square(values)), tower.reduce(root.orient(values))
+        if any(_has_roots(tower, x) or (not isinstance(x, int) and R.nterms(x) > _MAX_SIGN_TERMS) for x in (q, orient)):
             return None
-        signs[root] = q, _signed_factors(orient, params, known)
-        s = _rational_root(q, params)
-        ss = None if s is None else _signed_factors(sympy.expand(s), params, known)
-        if ss and signs[root][1]:
-            t = sympy.expand(t.xreplace({root.symbol: signs[root][1] * ss * s}))  # r = sign(r)·|s|
+        signs[root] = sympy.expand(R.to_expr(q)), _signed_factors(sympy.expand(R.to_expr(orient)), params, known)
+        found = _named_value(R, _Factored.of(R, q), _Factored.of(R, orient), params, known)
+        if found is not None:
+            lam, _, sign = found
+            t = sympy.expand(t.xreplace({root.symbol: sign * R.to_expr(lam.value(R))}))  # r = σλ
     left = [r for r in present if t.has(r.symbol)]
     if any(t.has(r.symbol) for r in roots if r not in left):
         return None  # a root whose branch the statement leaves open
@@ -1162,8 +1178,9 @@ def _component_proof(claim: Claim, tower: _Tower, values: dict[Node, Any], pair:
     def reduced(x: Any) -> sympy.Expr:
         return sympy.expand(R.to_expr(tower.reduce(x)))
 
-    d1, d2 = reduced(one.square(values)), reduced(two.square(values))
-    lam = None if d1.has(e1, e2) or d2.has(e1, e2) else _rational_root(sympy.expand(d1 * d2), params)
+    q1, q2 = tower.reduce(one.square(values)), tower.reduce(two.square(values))
+    d1, d2 = reduced(q1), reduced(q2)
+    lam = None if d1.has(e1, e2) or d2.has(e1, e2) else _rational_root(R, q1 * q2)
     if lam is None:
         return "the two roots' squares do not multiply to a square: no component to select"
 
@@ -1269,10 +1286,6 @@ def _selected_branch_proof(claim: Claim, deadline: Any, backend: str | None
     def reduced(x: Any) -> sympy.Expr:  # modulo the defining equations (the other roots' too), as an expression
         return sympy.expand(R.to_expr(tower.reduce(x)))
 
-    def small(x: Any) -> sympy.Expr | None:  # reduced, when small enough to factor
-        y = tower.reduce(x)
-        return None if not isinstance(y, int) and R.nterms(y) > _MAX_SIGN_TERMS else sympy.expand(R.to_expr(y))
-
     delta = tower.reduce(root.square(values))
     at = [i for i, x in enumerate(R.symbols) if x in others]
 
@@ -1309,7 +1322,7 @@ def _selected_branch_proof(claim: Claim, deadline: Any, backend: str | None
                 if len(sympy.Add.make_args(rest)) > _MAX_SIGN_TERMS:
                     continue  # its sign involves the named roots, and it is too large to split by them
                 sc = _signed_factors(content, params, known)
-                s = sc and _sign_over_named_root(rest, params, known, roots, values, small)
+                s = sc and _sign_over_named_root(rest, params, known, roots, values, tower)
                 s = None if s is None else sc * s
             else:
                 s = _signed_factors(reduced(t), params, known)
