@@ -91,6 +91,8 @@ AlphaGeometry's problems (a name line, then the problem line):
 Where AlphaGeometry takes a random common point and the goal holds at one of
 the two only, the translation states the point by an order condition ('where')
 that selects it in every random figure, and the verdict is about that point.
+Where the goal holds in some random figures only, the translation adds order
+conditions that keep only such figures; the verdict is about those they keep.
 """
 
 

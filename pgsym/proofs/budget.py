@@ -246,7 +246,7 @@ def alarm(seconds: float | None):  # type: ignore[no-untyped-def]
         return
 
     def handler(signum, frame):  # type: ignore[no-untyped-def]
-        raise Timeout("interrupted")
+        raise Timeout("computing")  # read as "timed out after N s while computing"
 
     old = signal.signal(signal.SIGALRM, handler)
     signal.setitimer(signal.ITIMER_REAL, seconds + 0.05, ALARM_REPEAT)
