@@ -7,7 +7,9 @@ point without saying which. :func:`selecting_conditions` looks for order conditi
 the random points, the choices the conditions keep are not empty and the goal holds at each of them. The
 conditions are then hypotheses of the statement, which the engine proves on the branch they select
 (:func:`pgsym.proofs.algebraic.prove_ordered`) — a condition that only happened to separate the sampled
-figures gives no proof there, never a wrong one.
+figures gives no proof there, never a wrong one. :func:`restricting_conditions` does the same for a goal that
+holds in some figures only (AlphaGeometry draws its figure until it holds): conditions that keep only figures
+where it holds.
 
 >>> figure = {(0,): ({"A": 0j, "B": 2 + 0j, "X": 1 + 0j}, True), (1,): ({"A": 0j, "B": 2 + 0j, "X": 3 + 0j}, False)}
 >>> selecting_conditions([figure], ["X"], ["A", "B", "X"])
@@ -167,8 +169,8 @@ def selecting_conditions(figures: Sequence[Figure], either: Sequence[str], point
 def restricting_conditions(figures: Sequence[Figure], points: Sequence[str]) -> list[Condition] | None:
     """One or two order conditions that keep only figures (and choices) where the goal holds, and some in at least
     half of the figures where it holds somewhere: the figure AlphaGeometry means when its goal holds in some random
-    figures only (a point on the other side of a vertex, say); the one that keeps most, simple words and early
-    points first. None when none is found.
+    figures only (a point on the other side of a vertex, say); the one that keeps most, and among those the one on
+    the earliest points. None when none is found.
 
     >>> inside = {(): ({"A": 0j, "B": 2 + 0j, "F": 1 + 0j}, True)}
     >>> outside = {(): ({"A": 0j, "B": 2 + 0j, "F": 3 + 0j}, False)}
@@ -187,9 +189,8 @@ def restricting_conditions(figures: Sequence[Figure], points: Sequence[str]) -> 
         if len(ranked) > MAX_CANDIDATES:
             break
         for c in _candidates(x, points):
-            key = (c[0], c[1])
-            if key not in seen:
-                seen.add(key)
+            if c not in seen:
+                seen.add(c)
                 ranked.append(((max(points.index(a) for a in c[1]),), c))
             if len(ranked) > MAX_CANDIDATES:
                 break
