@@ -277,12 +277,23 @@ def test_title_expect_comments_and_blank_lines():
     ("conics K\npoints A\npoint X on conic K\nprove on X K\n", StatementSyntaxError, 3, 12),
     ("point P = (0, 0, 0)\nprove on P P\n", StatementKindError, 1, 11),                 # the zero vector
     ("point P = (s, 1)\nprove on P P\n", StatementNameError, 1, 12),                    # s is no parameter
+    # a construction with square roots inside an expression: it has a line of its own
+    ("points A B C\npoint H = meet (anglebisector B A C) (join A B)\nprove on H H\n", StatementSyntaxError, 2, 17),
+    ("points A B C\npoint H = meet intersection (join A B)\nprove on H H\n", StatementSyntaxError, 2, 16),
 ])
 def test_errors_name_line_and_column(text, error, line, col):
     with pytest.raises(error) as info:
         parse_statement(text)
     assert (info.value.line, info.value.column) == (line, col), str(info.value)
     assert isinstance(info.value, PgsymError) and str(info.value).startswith(f"{line}:{col}: ")
+
+
+def test_a_square_root_construction_inside_an_expression_says_how_to_write_it():
+    with pytest.raises(StatementSyntaxError, match=r"define it on a line of its own \(line NAME = anglebisector …\)"):
+        parse_statement("points A B C\npoint H = meet (anglebisector B A C) (join A B)\nprove on H H\n")
+    with pytest.raises(StatementSyntaxError, match=r"\(points NAME1 NAME2 = intersections …\)"):
+        parse_statement("points A B\npoint H = meet (intersections (join A B) (circle A B)) (join A B)\n"
+                        "prove on H H\n")
 
 
 def test_hostile_inputs_get_named_errors(tmp_path):

@@ -281,6 +281,7 @@ def _parse_arg(cur: _Line, depth: int) -> Any:
         if tok.text in _OPERATIONS:
             raise StatementSyntaxError(f"the operation {tok.text!r} inside an argument needs parentheses: "
                                        f"({tok.text} …)", tok.line, tok.col)
+        _not_inline(tok)
         return tok
     if tok.text != "(":
         raise StatementSyntaxError(f"expected a name or '(', found {_show(tok)}", tok.line, tok.col)
@@ -295,6 +296,7 @@ def _parse_arg(cur: _Line, depth: int) -> Any:
         call = _parse_expr(cur, depth + 1)
         cur.expect(")")
         return call
+    _not_inline(first)
     if first.kind == "name" and cur.toks[cur.i + 1].text == ")":
         cur.next()
         cur.next()
@@ -316,6 +318,17 @@ def _parse_arg(cur: _Line, depth: int) -> Any:
         if sep.text != ",":
             raise StatementSyntaxError(f"expected ',' or ')' in coordinates, found {_show(sep)}", sep.line, sep.col)
     return _Tuple(coords, tok)
+
+
+def _not_inline(tok: _Token) -> None:
+    """A construction with square roots (``anglebisector``, ``intersection`` …) has a line of its own: named
+    there, it names its branch in the verdict; inside another expression it would have no name."""
+    if tok.kind == "name" and tok.text in _ALGEBRAIC_FORMS:
+        kind, count = _ALGEBRAIC_FORMS[tok.text]
+        names = "NAME" if count == 1 else "NAME1 NAME2"
+        raise StatementSyntaxError(f"{tok.text!r} is a construction with square roots and cannot be an argument: "
+                                   f"define it on a line of its own ({kind}{'s' if count > 1 else ''} {names} = "
+                                   f"{tok.text} …) and use the name here", tok.line, tok.col)
 
 
 def _parse_expr(cur: _Line, depth: int = 0) -> Any:
