@@ -324,3 +324,28 @@ def test_a_named_bisector_is_proved_on_the_figures_a_condition_without_roots_sel
                                   BISECTOR_SIDE.format(where="between b a f"), "named branch")
     assert "order conditions fix" in proved.certificate.method
     assert any("some by the order conditions" in line for line in proved.certificate.steps)
+
+
+# f on the line ab: the internal bisector of ∠cbf is that of ∠cba (through the incentre h: b, g, h collinear) when
+# f is on the ray from b through a, and the external one at b (bg ⟂ bh) when b is between a and f. Each condition
+# below keeps f on one of the two rays from b, or on both (onray f a b: between a and b, and beyond b)
+SIDES = [  # (condition, the ray from b it keeps f on: "a" towards a, "beyond" past b, "both")
+    ("onray f b a", "a"), ("sameside f a c b", "a"), ("onray f b (midpoint a b)", "a"), ("between f a b", "a"),
+    ("between a f b", "a"), ("between b a f", "beyond"), ("oppositeside f a c b", "beyond"), ("onray f a b", "both"),
+]
+
+
+@pytest.mark.parametrize(("condition", "ray"), SIDES)
+@pytest.mark.parametrize("internal", [True, False])
+def test_a_named_bisector_under_conditions_on_a_free_point_agrees_with_its_side(condition, ray, internal) -> None:
+    goal = "collinear b g h" if internal else "perpendicular (join b g) (join b h)"
+    text = BISECTOR_SIDE.format(where=condition).replace("prove collinear b g h", f"prove {goal}")
+    verdict = prove(parse_statement(text), timeout=30)
+    if ray != ("a" if internal else "beyond"):  # false on the figures the condition keeps (some of them)
+        assert str(verdict.status) == "false" and verdict.counterexample.recheck(), (condition, goal)
+    elif condition == "between a f b":
+        # true; with f = (a + t·b)/(1 + t) the condition is −t(t + 1) > 0, two factors of unknown sign (−1 < t < 0),
+        # which the engine does not split: it may leave the claim unknown, never refute it
+        assert str(verdict.status) in ("proved", "unknown"), (condition, goal)
+    else:
+        assert str(verdict.status) == "proved", (condition, goal)

@@ -252,9 +252,16 @@ def _check_branch(claim: Claim, R: PolynomialRing, values: dict[Node, Any], reqs
     return ("fails", residuals) if residuals else ("holds", [])
 
 
-def _instance(claim: Claim, rng: random.Random, bound: int, deadline: Any):
+def _instance(claim: Claim, rng: random.Random, bound: int, deadline: Any, denominators: Sequence[int] = (1,)):
+    """Random parameters (integers up to ``bound``, or fractions with one of ``denominators``), and the claim's
+    values there."""
     params = [p for p in claim.parameters if p not in {r.symbol for r in roots_of(claim)}]
-    point = {p: sympy.Integer(rng.randint(-bound, bound)) for p in params}
+
+    def draw() -> sympy.Rational:
+        d = rng.choice(denominators) if len(denominators) > 1 else 1
+        return sympy.Rational(rng.randint(-bound * d, bound * d), d)
+
+    point = {p: draw() for p in params}
     tower = _Tower(claim, [])
     R = tower.R
     values = _evaluate(claim, lambda e: R(sympy.sympify(e).xreplace(point)), tower, deadline)
@@ -696,7 +703,7 @@ class _Factored:
                 x = sympy.expand(R.to_expr(f))
                 s = _evident_sign(x, gens)
                 if s is None and known:
-                    s = _known_sign(x, known)
+                    s = _known_sign(x, known, gens)
                 if s is None:
                     return None
                 total *= s
@@ -1030,8 +1037,8 @@ def _signed_factors(expr: sympy.Expr, gens: Sequence[sympy.Symbol], known: dict[
         if k % 2 == 0:
             continue
         s = _evident_sign(f, gens)
-        if s is None:
-            s = _known_sign(sympy.expand(f), known)
+        if s is None and known:
+            s = _known_sign(sympy.expand(f), known, gens)
         if s is None:
             s = plane_sign(f, gens)  # one or two variables: decided by a cylindrical decomposition
         if s is None and (moved := _depressed(f, gens)) is not None:
@@ -1042,9 +1049,28 @@ def _signed_factors(expr: sympy.Expr, gens: Sequence[sympy.Symbol], known: dict[
     return total
 
 
-def _known_sign(f: sympy.Expr, known: dict[sympy.Expr, int]) -> int | None:
-    """The sign an order condition fixes for the expanded factor f or for −f (see :func:`_known_signs`), or None."""
-    return known.get(f, -known[-f] if -f in known else None)
+def _known_sign(f: sympy.Expr, known: dict[sympy.Expr, int], gens: Sequence[sympy.Symbol]) -> int | None:
+    """The sign an order condition fixes for the expanded factor f (see :func:`_known_signs`), or None: f or −f is a
+    known factor, or f = c·k + r with k of known sign, c a number and r evidently of the sign of c·k (t + 1 > 0
+    once t > 0).
+
+    >>> t = sympy.Symbol("t")
+    >>> _known_sign(t + 1, {t: 1}, [t]), _known_sign(-t - 1, {t: 1}, [t]), _known_sign(t - 1, {t: 1}, [t])
+    (1, -1, None)
+    """
+    s = known.get(f, -known[-f] if -f in known else None)
+    if s is not None or not gens:
+        return s
+    lead = sympy.Poly(f, *gens).LC()
+    for k, sk in known.items():
+        c = lead / sympy.Poly(k, *gens).LC()
+        if not c.is_Rational:
+            continue
+        sign = sk if c > 0 else -sk  # the sign of c·k
+        rest = sympy.expand(f - c * k)
+        if rest == 0 or _evident_sign(rest, gens) == sign:
+            return sign
+    return None
 
 
 def _evident_sign(f: sympy.Expr, gens: Sequence[sympy.Symbol]) -> int | None:
@@ -1427,7 +1453,10 @@ def _ordered_instances(claim: Claim, rng: random.Random, deadline: Any, tries: i
     select."""
     for attempt in range(tries):
         deadline.check("looking for instances where the order conditions hold")
-        point, tower, values = _instance(claim, rng, 3 + attempt // 4, deadline)
+        # integers first; then fractions too, since a condition may need a parameter strictly between two integers
+        # (F = (A + tB)/(1 + t) lies beyond A only for −1 < t < 0)
+        fractions = (1,) if attempt < tries // 2 else (1, 2, 3)
+        point, tower, values = _instance(claim, rng, 3 + attempt // 4, deadline, fractions)
         try:
             chosen = [b for b in _branches(claim, tower, values, point)
                       if b.named and _selected(claim, tower, values, b)]
