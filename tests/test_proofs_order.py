@@ -341,11 +341,9 @@ def test_a_named_bisector_under_conditions_on_a_free_point_agrees_with_its_side(
     goal = "collinear b g h" if internal else "perpendicular (join b g) (join b h)"
     text = BISECTOR_SIDE.format(where=condition).replace("prove collinear b g h", f"prove {goal}")
     verdict = prove(parse_statement(text), timeout=30)
+    # (between a f b: with f = (a + t·b)/(1 + t) the condition is −t(t + 1) > 0, so −1 < t < 0: it fixes the sign
+    # of both factors, and only fractions satisfy it)
     if ray != ("a" if internal else "beyond"):  # false on the figures the condition keeps (some of them)
         assert str(verdict.status) == "false" and verdict.counterexample.recheck(), (condition, goal)
-    elif condition == "between a f b":
-        # true; with f = (a + t·b)/(1 + t) the condition is −t(t + 1) > 0, two factors of unknown sign (−1 < t < 0),
-        # which the engine does not split: it may leave the claim unknown, never refute it
-        assert str(verdict.status) in ("proved", "unknown"), (condition, goal)
     else:
         assert str(verdict.status) == "proved", (condition, goal)

@@ -1083,20 +1083,34 @@ def _evident_sign(f: sympy.Expr, gens: Sequence[sympy.Symbol]) -> int | None:
 
 def _known_signs(conditions: list[tuple[str, sympy.Expr]], gens: Sequence[sympy.Symbol]) -> dict[sympy.Expr, int]:
     """The signs that the root-free order conditions give to single factors: p > 0 with one factor f of odd
-    multiplicity whose sign is not evident fixes the sign of f."""
+    multiplicity whose sign is not evident fixes the sign of f; with two, f and g, it fixes their product's sign,
+    and both signs when one of the two ways to have it contradicts itself (−t(t + 1) > 0: t > 0 would make t + 1
+    positive too, so t < 0 < t + 1).
+
+    >>> t = sympy.Symbol("t")
+    >>> _known_signs([("t > 0", t), ("−t(t + 1) > 0", -t**2 - t)], [t]) == {t: -1, t + 1: 1}
+    True
+    """
     known: dict[sympy.Expr, int] = {}
     for _text, p in conditions:
         if p == 0 or not gens:
             continue
         coeff, factors = sympy.factor_list(p, *gens)
-        odd = [f for f, k in factors if k % 2 and _evident_sign(f, gens) is None]
-        if len(odd) != 1:
+        odd = [sympy.expand(f) for f, k in factors if k % 2 and _evident_sign(f, gens) is None]
+        if len(odd) not in (1, 2):
             continue
-        rest = 1 if coeff > 0 else -1
+        rest = 1 if coeff > 0 else -1  # the sign of the product of the odd factors, where p > 0
         for f, k in factors:
-            if k % 2 and f is not odd[0]:
+            if k % 2 and sympy.expand(f) not in odd:
                 rest *= _evident_sign(f, gens) or 1
-        known[sympy.expand(odd[0])] = rest
+        if len(odd) == 1:
+            known[odd[0]] = rest
+            continue
+        f, g = odd
+        ways = [(sf, rest * sf) for sf in (1, -1)
+                if _known_sign(g, {f: sf}, gens) != -rest * sf and _known_sign(f, {g: rest * sf}, gens) != -sf]
+        if len(ways) == 1:
+            known[f], known[g] = ways[0]
     return known
 
 
@@ -1454,9 +1468,11 @@ def _ordered_instances(claim: Claim, rng: random.Random, deadline: Any, tries: i
     for attempt in range(tries):
         deadline.check("looking for instances where the order conditions hold")
         # integers first; then fractions too, since a condition may need a parameter strictly between two integers
-        # (F = (A + tB)/(1 + t) lies beyond A only for −1 < t < 0)
-        fractions = (1,) if attempt < tries // 2 else (1, 2, 3)
-        point, tower, values = _instance(claim, rng, 3 + attempt // 4, deadline, fractions)
+        # (F = (A + tB)/(1 + t) lies beyond A only for −1 < t < 0), every other time between −1 and 1
+        bound, fractions = 3 + attempt // 4, (1,)
+        if attempt >= tries // 2:
+            bound, fractions = (1, (2, 3, 4)) if attempt % 2 else (bound, (1, 2, 3))
+        point, tower, values = _instance(claim, rng, bound, deadline, fractions)
         try:
             chosen = [b for b in _branches(claim, tower, values, point)
                       if b.named and _selected(claim, tower, values, b)]
