@@ -700,10 +700,7 @@ class _Factored:
         total = 1 if self.coeff > 0 else -1 if self.coeff < 0 else 0
         for f, k in self.factors.values():
             if k % 2:
-                x = sympy.expand(R.to_expr(f))
-                s = _evident_sign(x, gens)
-                if s is None and known:
-                    s = _known_sign(x, known, gens)
+                s = _form_or_known_sign(sympy.expand(R.to_expr(f)), gens, known)
                 if s is None:
                     return None
                 total *= s
@@ -1036,9 +1033,7 @@ def _signed_factors(expr: sympy.Expr, gens: Sequence[sympy.Symbol], known: dict[
     for f, k in factors:
         if k % 2 == 0:
             continue
-        s = _evident_sign(f, gens)
-        if s is None and known:
-            s = _known_sign(sympy.expand(f), known, gens)
+        s = _form_or_known_sign(f, gens, known)
         if s is None:
             s = plane_sign(f, gens)  # one or two variables: decided by a cylindrical decomposition
         if s is None and (moved := _depressed(f, gens)) is not None:
@@ -1047,6 +1042,13 @@ def _signed_factors(expr: sympy.Expr, gens: Sequence[sympy.Symbol], known: dict[
             return None
         total *= s
     return total
+
+
+def _form_or_known_sign(f: sympy.Expr, gens: Sequence[sympy.Symbol], known: dict[sympy.Expr, int] | None
+                        ) -> int | None:
+    """A factor's sign as its form shows it (:func:`_evident_sign`), else as a root-free order condition fixes it."""
+    s = _evident_sign(f, gens)
+    return _known_sign(sympy.expand(f), known, gens) if s is None and known else s
 
 
 def _known_sign(f: sympy.Expr, known: dict[sympy.Expr, int], gens: Sequence[sympy.Symbol]) -> int | None:
